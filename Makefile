@@ -1,0 +1,68 @@
+# trinormal: `make lab` opens the notebooks, `make test` checks everything.
+# Each target sets up what it needs. uv is used from PATH, or bootstrapped into .tools/.
+
+PYTHON ?= python3
+export UV_PYTHON_DOWNLOADS := never
+export UV_COMPILE_BYTECODE := 1
+export NO_MKDOCS_2_WARNING := 1
+
+SYSTEM_UV := $(shell command -v uv 2>/dev/null)
+ifeq ($(SYSTEM_UV),)
+UV := .tools/bin/uv
+UV_DEP := .tools/bin/uv
+else
+UV := $(SYSTEM_UV)
+UV_DEP :=
+endif
+RUN := $(UV) run --locked --no-sync
+
+.PHONY: env lab test lint types unit notebooks nbval docs docs-build browser bench clean
+
+.tools/bin/uv:
+	$(PYTHON) -m venv .tools
+	.tools/bin/pip install --quiet --disable-pip-version-check uv
+
+## env: create or refresh .venv/ (package editable, every group)
+env: $(UV_DEP)
+	$(UV) sync --locked --all-groups --python "$$(command -v $(PYTHON))"
+
+## lab: open JupyterLab on the notebooks (the main job)
+lab: env
+	$(RUN) jupyter lab notebooks
+
+## test: lint, types, unit/property/doctests, notebooks (nbval), the site and its browser tests
+test: env lint types unit nbval docs-build browser
+
+lint: env
+	$(RUN) ruff check trinormal tests benchmarks docs
+	$(RUN) ruff format --check trinormal tests benchmarks docs
+
+types: env
+	$(RUN) mypy
+
+unit: env
+	$(RUN) pytest tests trinormal --ignore=tests/browser -q
+
+nbval: env
+	$(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg -p no:doctest notebooks -q
+
+## notebooks: re-execute every notebook top to bottom from a clean kernel, storing outputs
+notebooks: env
+	$(RUN) jupyter nbconvert --to notebook --execute --inplace notebooks/*.ipynb
+
+## docs: build the site and serve it on 127.0.0.1:8000
+docs: env
+	$(RUN) mkdocs serve -a 127.0.0.1:8000
+
+docs-build: env
+	$(RUN) mkdocs build --strict
+
+browser: env docs-build
+	$(RUN) pytest tests/browser -q
+
+## bench: the performance figures, each against a peer measured in the same run
+bench: env
+	for f in benchmarks/bench_*.py; do $(RUN) python $$f || exit 1; done
+
+clean:
+	rm -rf .venv .tools site .cache .pytest_cache .mypy_cache .ruff_cache

@@ -1,0 +1,876 @@
+"""The exact core: the normal of one triangle, computed without rounding.
+
+Every coordinate is read as an exact rational number (a float is its exact
+binary value, the string ``"0.1"`` is exactly 1/10). All nine are brought to a
+common denominator ``D`` so the cross product runs on plain Python integers;
+each reported float is then one correctly rounded division. Square roots use
+:func:`math.isqrt` on integers scaled by a power of two, so results stay
+accurate at any scale, from 1e-300 to 1e300, with nothing overflowing on the
+way.
+
+The standard library is all this module needs.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import struct
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from decimal import Decimal
+from enum import Enum
+from fractions import Fraction
+from functools import cached_property
+from numbers import Integral, Real
+from typing import Any, Literal, NamedTuple
+
+from trinormal.display import format_surd, join_vector, plane_equation
+from trinormal.tolerances import DEFAULT_TOL
+
+__all__ = [
+    "ARITHMETICS",
+    "Exact",
+    "Plane",
+    "TriangleNormal",
+    "Winding",
+    "parse_coordinate",
+    "triangle_normal",
+]
+
+Vec3 = tuple[float, float, float]
+Arithmetic = Literal["exact", "float64", "float32"]
+ARITHMETICS: tuple[str, ...] = ("exact", "float64", "float32")
+VERTICES = "ABC"
+AXES = "xyz"
+
+#: Largest decimal exponent accepted in a string, so "1e999999999" is an error, not a hang.
+MAX_DECIMAL_EXPONENT = 9999
+
+
+class Winding(str, Enum):
+    """Vertex order: which way round the triangle is traversed.
+
+    ``ABC`` uses U = B − A and V = C − A; ``ACB`` swaps the two edges, which
+    flips the normal.
+
+    Examples
+    --------
+    >>> Winding("ACB") is Winding.ACB
+    True
+    >>> Winding.ABC == "ABC"
+    True
+    """
+
+    ABC = "ABC"
+    ACB = "ACB"
+
+    @property
+    def label(self) -> str:
+        """The order with arrows, as shown on buttons: ``A→B→C``."""
+        return "→".join(self.value)
+
+    def __str__(self) -> str:
+        return self.value
+
+
+class Plane(NamedTuple):
+    """The plane ``normal · x = offset`` through the triangle (``normal`` is unit length)."""
+
+    normal: Vec3
+    offset: float
+
+
+@dataclass(frozen=True)
+class Exact:
+    """Exact rational values behind a result (:class:`fractions.Fraction`).
+
+    ``magnitude_squared`` is |N|² (|N| itself is usually irrational); ``area``
+    squared is ``magnitude_squared / 4``.
+    """
+
+    a: tuple[Fraction, Fraction, Fraction]
+    b: tuple[Fraction, Fraction, Fraction]
+    c: tuple[Fraction, Fraction, Fraction]
+    u: tuple[Fraction, Fraction, Fraction]
+    v: tuple[Fraction, Fraction, Fraction]
+    normal: tuple[Fraction, Fraction, Fraction]
+    magnitude_squared: Fraction
+
+
+# --------------------------------------------------------------------------- parsing
+
+_DECIMAL_RE = re.compile(r"([+-]?)(\d+(?:\.\d*)?|\.\d+)(?:[eE]([+-]?\d+))?")
+_FRACTION_RE = re.compile(r"([+-]?\d+)\s*/\s*([+-]?\d+)")
+_NAN_WORDS = {"nan", "+nan", "-nan"}
+_INF_WORDS = {"inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"}
+
+
+def _parse_string(text: str, name: str) -> tuple[int, int]:
+    s = text.strip()
+    if not s:
+        raise ValueError(f"{name} is empty")
+    low = s.lower()
+    if low in _NAN_WORDS:
+        raise ValueError(f"{name} is NaN")
+    if low in _INF_WORDS:
+        raise ValueError(f"{name} is infinite")
+    m = _DECIMAL_RE.fullmatch(s)
+    if m:
+        sign, digits, exp = m.groups()
+        e = int(exp) if exp else 0
+        if "." in digits:
+            whole, frac = digits.split(".")
+            e -= len(frac)
+            digits = whole + frac
+        if abs(e) > MAX_DECIMAL_EXPONENT or len(digits) > 4000:
+            raise ValueError(f"{name} = {s!r} is too large a number to read exactly")
+        n = int(digits) * (-1 if sign == "-" else 1)
+        return (n * 10**e, 1) if e >= 0 else (n, 10**-e)
+    m = _FRACTION_RE.fullmatch(s)
+    if m:
+        if len(s) > 4000:
+            raise ValueError(f"{name} = {s!r} is too large a number to read exactly")
+        n, d = int(m.group(1)), int(m.group(2))
+        if d == 0:
+            raise ValueError(f"{name} = {s!r} divides by zero")
+        return (n, d) if d > 0 else (-n, -d)
+    raise ValueError(f"{name} = {s!r} is not a number (use a decimal like 0.1 or a fraction like 1/3)")
+
+
+def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
+    """Read one coordinate as an exact ratio ``(numerator, denominator)``, denominator > 0.
+
+    Parameters
+    ----------
+    x : int, float, Fraction, Decimal, numpy real scalar or str
+        The coordinate. A string holds a decimal (``"0.1"``, ``"-2.5e3"``) or a
+        fraction (``"1/3"``) and is read exactly.
+    name : str
+        How to name the value in an error message, such as ``"B.y"``.
+
+    Returns
+    -------
+    tuple of int
+        ``(n, d)`` with the value equal to ``n / d``.
+
+    Raises
+    ------
+    ValueError
+        NaN, an infinity, an empty or unreadable string, or a zero denominator.
+    TypeError
+        ``None``, ``bool``, complex numbers and other non-real types.
+
+    Examples
+    --------
+    >>> parse_coordinate("0.1")
+    (1, 10)
+    >>> parse_coordinate("-2.5e3")
+    (-2500, 1)
+    >>> parse_coordinate(" 1/3 ")
+    (1, 3)
+    >>> parse_coordinate(0.5)
+    (1, 2)
+    >>> parse_coordinate(float("nan"), "B.y")
+    Traceback (most recent call last):
+    ...
+    ValueError: B.y is NaN
+    """
+    if type(x) is float:  # the common case first
+        if x != x:
+            raise ValueError(f"{name} is NaN")
+        if x in (math.inf, -math.inf):
+            raise ValueError(f"{name} is infinite")
+        return x.as_integer_ratio()
+    if type(x) is int:
+        return x, 1
+    if isinstance(x, str):
+        return _parse_string(x, name)
+    if x is None or isinstance(x, bool) or type(x).__name__ == "bool_":
+        raise TypeError(f"{name} is {x!r}, expected a real number")
+    if isinstance(x, Integral):
+        return int(x), 1
+    if isinstance(x, Fraction):
+        return x.numerator, x.denominator
+    if isinstance(x, Decimal):
+        if x.is_nan():
+            raise ValueError(f"{name} is NaN")
+        if x.is_infinite():
+            raise ValueError(f"{name} is infinite")
+        return x.as_integer_ratio()
+    if isinstance(x, Real) and hasattr(x, "as_integer_ratio"):  # numpy floating scalars
+        if x != x:
+            raise ValueError(f"{name} is NaN")
+        try:
+            n, d = x.as_integer_ratio()
+        except (OverflowError, ValueError):
+            raise ValueError(f"{name} is infinite") from None
+        return int(n), int(d)
+    raise TypeError(f"{name} is {type(x).__name__}, expected a real number")
+
+
+def _parse_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
+    if isinstance(p, str | bytes) or p is None:
+        raise TypeError(f"{vertex} must be 3 coordinates (x, y, z), got {type(p).__name__}")
+    try:
+        coords = list(p)  # type: ignore[call-overload]
+    except TypeError:
+        raise TypeError(f"{vertex} must be 3 coordinates (x, y, z), got {type(p).__name__}") from None
+    if len(coords) != 3:
+        raise ValueError(f"{vertex} has {len(coords)} coordinates, expected 3")
+    return [parse_coordinate(x, f"{vertex}.{axis}") for x, axis in zip(coords, AXES, strict=True)]
+
+
+_PLAIN = frozenset((float, int))
+
+
+def _fast_ratios(a: object, b: object, c: object) -> tuple[list[tuple[int, int]], Any] | None:
+    """Exact ratios and float values of three tuples/lists of finite floats or ints, else None.
+
+    None sends the input through the careful path, which explains what is wrong.
+    """
+    if type(a) not in (tuple, list) or type(b) not in (tuple, list) or type(c) not in (tuple, list):
+        return None
+    if len(a) != 3 or len(b) != 3 or len(c) != 3:  # type: ignore[arg-type]
+        return None
+    vals = (*a, *b, *c)  # type: ignore[misc]
+    if not _PLAIN.issuperset(map(type, vals)):
+        return None
+    try:
+        ratios = [x.as_integer_ratio() for x in vals]
+        floats = [float(x) for x in vals]
+    except (ValueError, OverflowError):  # NaN, an infinity, or an int beyond the float range
+        return None
+    return ratios, floats
+
+
+_WINDINGS = {"ABC": Winding.ABC, "ACB": Winding.ACB}
+
+
+def _check_winding(winding: object) -> Winding:
+    try:
+        return Winding(winding)
+    except ValueError:
+        raise ValueError(f"winding must be 'ABC' or 'ACB' (or a Winding), got {winding!r}") from None
+
+
+def _check_tol(tol: object) -> tuple[int, int]:
+    n, d = parse_coordinate(tol, "tol")
+    if n < 0:
+        raise ValueError(f"tol must be >= 0, got {tol!r}")
+    return n, d
+
+
+# --------------------------------------------------------------------------- float formats
+
+_F32_MAX = struct.unpack("f", b"\xff\xff\x7f\x7f")[0]
+
+
+def _f32(x: float) -> float:
+    """Round a float64 to the nearest float32 (ties to even), as a Python float.
+
+    For +, −, ×, ÷ and √ of float32 operands, computing in float64 and rounding
+    once to float32 gives the correctly rounded float32 result (53 ≥ 2·24 + 2),
+    so float32 arithmetic needs no numpy here; the tests compare it with
+    ``numpy.float32`` step by step.
+    """
+    try:
+        return float(struct.unpack("f", struct.pack("f", x))[0])
+    except OverflowError:
+        return math.copysign(math.inf, x)
+
+
+def _ratio_to_f32(n: int, d: int) -> float:
+    """Correctly round the rational n/d to float32 (one rounding, no double rounding)."""
+    if n == 0:
+        return 0.0
+    sign = -1.0 if n < 0 else 1.0
+    n = abs(n)
+    # exponent e with 2**e <= n/d < 2**(e+1)
+    e = n.bit_length() - d.bit_length()
+    if (n << -e if e < 0 else n) < (d << e if e > 0 else d):
+        e -= 1
+    if e > 127:
+        return sign * math.inf
+    q = max(e, -126) - 23  # quantum: ulp of float32 at this exponent (subnormals below 2**-126)
+    num, den = (n, d << q) if q >= 0 else (n << -q, d)
+    m, r = divmod(num, den)
+    if 2 * r > den or (2 * r == den and m & 1):
+        m += 1
+    value = math.ldexp(float(m), q)
+    return sign * (math.inf if value > _F32_MAX else value)
+
+
+# --------------------------------------------------------------------------- the result
+
+
+class _State(NamedTuple):
+    """Integers behind a result: coordinates times ``D``, N times ``D**2``."""
+
+    ints: tuple[int, ...]  # ax ay az bx by bz cx cy cz, each times D
+    D: int
+    u: tuple[int, int, int]
+    v: tuple[int, int, int]
+    n: tuple[int, int, int]
+    S: int  # |N|^2 times D**4
+
+
+@dataclass(frozen=True)
+class TriangleNormal:
+    """The normal of a triangle and everything derived from it.
+
+    Attributes
+    ----------
+    a, b, c : tuple of float
+        The vertices, correctly rounded to float (the exact values are in
+        :attr:`exact`).
+    winding : Winding
+        ``ABC``: U = B − A, V = C − A. ``ACB``: U = C − A, V = B − A.
+    u, v : tuple of float
+        The edge vectors.
+    normal : tuple of float
+        N = U × V, correctly rounded from the exact value (``±inf`` or ``0.0``
+        where the exact value is outside the float range).
+    magnitude : float
+        |N|, twice the area.
+    area : float
+        |N| / 2.
+    unit_normal : tuple of float or None
+        N / |N|; ``None`` when the triangle is degenerate.
+    degenerate : bool
+        True when ``|N| <= tol · |U| · |V|``: the sine of the angle between the
+        edges is at most ``tol``. Coincident and collinear points are degenerate.
+    plane : Plane or None
+        ``(n, d)``: the plane ``n · x = d`` with ``n`` the unit normal and
+        ``d = n · A``; ``None`` when degenerate.
+    reason : str
+        One sentence saying why the triangle is degenerate, or ``""``.
+    arithmetic : str
+        ``"exact"``, ``"float64"`` or ``"float32"``.
+    tol : float
+        The sine threshold used for :attr:`degenerate`.
+    """
+
+    a: Vec3
+    b: Vec3
+    c: Vec3
+    winding: Winding
+    u: Vec3
+    v: Vec3
+    normal: Vec3
+    magnitude: float
+    area: float
+    unit_normal: Vec3 | None
+    degenerate: bool
+    plane: Plane | None
+    reason: str = ""
+    arithmetic: str = "exact"
+    tol: float = DEFAULT_TOL
+    _state: _State = field(default=None, repr=False, compare=False)  # type: ignore[assignment]
+
+    @cached_property
+    def exact(self) -> Exact:
+        """Exact rational values of the vertices, edges, N and |N|² for these inputs.
+
+        In ``float64``/``float32`` arithmetic this is still the exact answer for
+        the inputs as given, so the rounding error of that format can be measured.
+
+        Examples
+        --------
+        >>> r = triangle_normal(("0", "0", "0"), ("0.1", "0", "0"), ("0", "1/3", "0"))
+        >>> r.exact.normal
+        (Fraction(0, 1), Fraction(0, 1), Fraction(1, 30))
+        """
+        s = self._state
+        D, D2 = s.D, s.D * s.D
+
+        def fr(xs: Iterable[int], den: int) -> tuple[Fraction, Fraction, Fraction]:
+            x, y, z = (Fraction(i, den) for i in xs)
+            return x, y, z
+
+        return Exact(
+            a=fr(s.ints[0:3], D),
+            b=fr(s.ints[3:6], D),
+            c=fr(s.ints[6:9], D),
+            u=fr(s.u, D),
+            v=fr(s.v, D),
+            normal=fr(s.n, D2),
+            magnitude_squared=Fraction(s.S, D2 * D2),
+        )
+
+    @property
+    def sine(self) -> float:
+        """Sine of the angle between U and V, |N| / (|U| |V|), exact for the input (0.0 if an edge is zero).
+
+        Examples
+        --------
+        >>> round(triangle_normal((0, 0, 0), (1, 0, 0), (1, 1, 0)).sine, 12)
+        0.707106781187
+        """
+        s = self._state
+        uu = sum(i * i for i in s.u)
+        vv = sum(i * i for i in s.v)
+        if uu == 0 or vv == 0:
+            return 0.0
+        return _sqrt_ratio(s.S, uu * vv)
+
+    def format(self, precision: int = 4, trim: bool = False) -> dict[str, str]:
+        """Display strings for every quantity, from the exact values.
+
+        Parameters
+        ----------
+        precision : int, default 4
+            Decimal places, 0 to 15 (see :func:`trinormal.format_number`).
+        trim : bool, default False
+            Drop trailing zeros, as the guide's table does.
+
+        Returns
+        -------
+        dict of str
+            Keys ``u``, ``v``, ``normal``, ``magnitude``, ``area``,
+            ``unit_normal``, ``plane`` and ``status`` (one sentence).
+
+        Examples
+        --------
+        >>> r = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
+        >>> f = r.format(4)
+        >>> f["normal"], f["magnitude"], f["unit_normal"]
+        ('(0.0000, -1.0000, 1.0000)', '1.4142', '(0.0000, -0.7071, 0.7071)')
+        >>> f["plane"]
+        '0.0000x - 0.7071y + 0.7071z = 0.0000'
+        >>> r.format(4, trim=True)["unit_normal"]
+        '(0, -0.7071, 0.7071)'
+        >>> triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["unit_normal"]
+        'undefined'
+        """
+        def surd(neg: bool, num: int, den: int) -> str:
+            return format_surd(neg, num, den, precision, trim)
+
+        def rat(n: int, d: int) -> str:
+            return surd(n < 0, n * n, d * d)
+
+        if self.arithmetic == "exact":
+            s = self._state
+            D, D2 = s.D, s.D * s.D
+            u = [rat(i, D) for i in s.u]
+            v = [rat(i, D) for i in s.v]
+            n = [rat(i, D2) for i in s.n]
+            magnitude = surd(False, s.S, D2 * D2)
+            area = surd(False, s.S, 4 * D2 * D2)
+            if not self.degenerate:
+                unit = [surd(i < 0, i * i, s.S) for i in s.n]
+                dot = sum(i * j for i, j in zip(s.n, s.ints[0:3], strict=True))
+                offset = surd(dot < 0, dot * dot, s.S * D2)
+        else:
+            u = [rat(*x.as_integer_ratio()) for x in self.u]
+            v = [rat(*x.as_integer_ratio()) for x in self.v]
+            n = [rat(*x.as_integer_ratio()) for x in self.normal]
+            magnitude = rat(*self.magnitude.as_integer_ratio())
+            area = rat(*self.area.as_integer_ratio())
+            if self.plane is not None:
+                unit = [rat(*x.as_integer_ratio()) for x in self.plane.normal]
+                offset = rat(*self.plane.offset.as_integer_ratio())
+        out = {
+            "u": join_vector(u),
+            "v": join_vector(v),
+            "normal": join_vector(n),
+            "magnitude": magnitude,
+            "area": area,
+        }
+        if self.degenerate:
+            out["unit_normal"] = "undefined"
+            out["plane"] = "undefined"
+            out["status"] = f"Degenerate: {self.reason} No unit normal exists."
+        else:
+            out["unit_normal"] = join_vector(unit)
+            out["plane"] = plane_equation((unit[0], unit[1], unit[2]), offset)
+            out["status"] = "A proper triangle: the unit normal is defined."
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        """Every field as JSON-ready values: floats (non-finite as strings) and exact strings."""
+
+        def num(x: float) -> float | str:
+            return x if math.isfinite(x) else str(x)
+
+        def vec(xs: Iterable[float]) -> list[float | str]:
+            return [num(x) for x in xs]
+
+        def exact_vec(xs: Iterable[Fraction]) -> list[str]:
+            return [str(x) for x in xs]
+
+        e = self.exact
+        return {
+            "a": vec(self.a),
+            "b": vec(self.b),
+            "c": vec(self.c),
+            "winding": self.winding.value,
+            "arithmetic": self.arithmetic,
+            "tol": self.tol,
+            "u": vec(self.u),
+            "v": vec(self.v),
+            "normal": vec(self.normal),
+            "magnitude": num(self.magnitude),
+            "area": num(self.area),
+            "unit_normal": None if self.unit_normal is None else vec(self.unit_normal),
+            "plane": None
+            if self.plane is None
+            else {"normal": vec(self.plane.normal), "offset": num(self.plane.offset)},
+            "degenerate": self.degenerate,
+            "reason": self.reason,
+            "exact": {
+                "a": exact_vec(e.a),
+                "b": exact_vec(e.b),
+                "c": exact_vec(e.c),
+                "u": exact_vec(e.u),
+                "v": exact_vec(e.v),
+                "normal": exact_vec(e.normal),
+                "magnitude_squared": str(e.magnitude_squared),
+                "area_squared": str(e.magnitude_squared / 4),
+            },
+        }
+
+
+# --------------------------------------------------------------------------- arithmetic
+
+
+def _div(n: int, d: int) -> float:
+    """Correctly rounded n / d, with ±inf beyond the float range."""
+    try:
+        return n / d
+    except OverflowError:
+        return math.inf if (n < 0) == (d < 0) else -math.inf
+
+
+def _divide(nums: tuple[int, ...], d: int) -> Any:
+    """Correctly rounded ``n / d`` for each n, with ±inf beyond the float range."""
+    try:
+        return tuple([i / d for i in nums])
+    except OverflowError:
+        return tuple([_div(i, d) for i in nums])
+
+
+def _sqrt_ratio(num: int, den: int) -> float:
+    """sqrt(num / den) within 1 ulp, for non-negative integers (den > 0), at any scale."""
+    if num == 0:
+        return 0.0
+    # scale by 4**k so the integer square root carries at least 66 bits
+    k = max(0, (2 * 66 - num.bit_length() + den.bit_length()) // 2 + 1)
+    r = math.isqrt((num << (2 * k)) // den)
+    return _div(r, 1 << k)
+
+
+def _common(coords: list[tuple[int, int]]) -> tuple[tuple[int, ...], int]:
+    """Bring exact ratios to one denominator D; return the integer numerators and D."""
+    D = 1
+    pow2 = True
+    for _, d in coords:
+        if d & (d - 1):
+            pow2 = False
+        if d > D:
+            D = d
+    if pow2:  # every float input: shift instead of multiplying
+        top = D.bit_length()
+        return tuple([n << (top - d.bit_length()) for n, d in coords]), D
+    D = math.lcm(*(d for _, d in coords))
+    return tuple([n * (D // d) for n, d in coords]), D
+
+
+def _exact_state(coords: list[tuple[int, int]], winding: Winding) -> _State:
+    ints, D = _common(coords)
+    return _state_from_ints(ints, D, winding)
+
+
+def _state_from_ints(ints: tuple[int, ...], D: int, winding: Winding) -> _State:
+    ax, ay, az, bx, by, bz, cx, cy, cz = ints
+    if winding is Winding.ABC:
+        ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
+    else:
+        ux, uy, uz, vx, vy, vz = cx - ax, cy - ay, cz - az, bx - ax, by - ay, bz - az
+    nx = uy * vz - uz * vy
+    ny = uz * vx - ux * vz
+    nz = ux * vy - uy * vx
+    return _State(ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), nx * nx + ny * ny + nz * nz)
+
+
+def _reason(ints: tuple[int, ...], zero_normal: bool, fmt: str = "exact") -> str:
+    """One sentence saying why a triangle is degenerate."""
+    a, b, c = ints[0:3], ints[3:6], ints[6:9]
+    if a == b == c:
+        return "A, B and C are the same point."
+    for p, q, names in ((a, b, "A and B"), (a, c, "A and C"), (b, c, "B and C")):
+        if p == q:
+            return f"{names} coincide, so the triangle has no area."
+    if zero_normal:
+        where = "" if fmt == "exact" else f" in {fmt} arithmetic"
+        return f"A, B and C are collinear{where} (they lie on one line), so the area is zero."
+    return (
+        "the angle between the edges is too small to trust: "
+        "the sine of it is at most the tolerance."
+    )
+
+
+def triangle_normal(
+    a: Iterable[Any],
+    b: Iterable[Any],
+    c: Iterable[Any],
+    winding: Winding | str = "ABC",
+    tol: float | int | Fraction | Decimal | str = DEFAULT_TOL,
+    arithmetic: Arithmetic | str = "exact",
+) -> TriangleNormal:
+    """Compute the normal of the triangle ABC.
+
+    Parameters
+    ----------
+    a, b, c : sequence of 3 real numbers
+        The vertices (list, tuple or numpy array). Each coordinate may be an
+        int, float, Fraction, Decimal, numpy real scalar, or a string holding a
+        decimal (``"0.1"``) or a fraction (``"1/3"``), read exactly.
+    winding : {"ABC", "ACB"} or Winding, default "ABC"
+        ``"ABC"``: U = B − A, V = C − A. ``"ACB"``: U = C − A, V = B − A.
+        N = U × V, so the two orders give opposite normals.
+    tol : real, default 1e-12
+        Degeneracy threshold on the sine of the angle between U and V (see
+        :mod:`trinormal.tolerances`). ``0`` flags only exactly collinear or
+        coincident points.
+    arithmetic : {"exact", "float64", "float32"}, default "exact"
+        ``"exact"`` computes with rationals and rounds once at the end.
+        ``"float64"``/``"float32"`` evaluate the textbook formula step by step in
+        that IEEE format, to show what rounding does.
+
+    Returns
+    -------
+    TriangleNormal
+        The edges, N, |N|, area, unit normal, plane and degeneracy verdict.
+
+    Raises
+    ------
+    ValueError
+        NaN or infinite coordinates, a vertex without exactly 3 coordinates, an
+        unreadable string, an unknown winding or arithmetic, a negative tol.
+    TypeError
+        ``None``, ``bool``, complex or other non-real coordinates.
+
+    Examples
+    --------
+    The guide's worked example:
+
+    >>> r = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0))
+    >>> r.u, r.v, r.normal
+    ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+    >>> r.magnitude, r.area, r.unit_normal
+    (1.0, 0.5, (0.0, 0.0, 1.0))
+
+    Reversing the order flips the normal:
+
+    >>> triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0), winding="ACB").normal
+    (0.0, 0.0, -1.0)
+
+    The guide's comparison table, row by row:
+
+    >>> triangle_normal((0, 0, 0), (2, 0, 0), (0, 3, 0)).format(4, trim=True)["normal"]
+    '(0, 0, 6)'
+    >>> r = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    >>> r.normal, round(r.magnitude, 4), round(r.area, 4)
+    ((0.0, -1.0, 1.0), 1.4142, 0.7071)
+    >>> r = triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2))
+    >>> r.degenerate, r.unit_normal, r.magnitude
+    (True, None, 0.0)
+
+    Decimal strings are exact, so these points are exactly collinear:
+
+    >>> triangle_normal(("0", "0", "0"), ("0.1", "0.2", "0.3"), ("0.3", "0.6", "0.9"), tol=0).degenerate
+    True
+
+    Bad input names the vertex and the axis:
+
+    >>> triangle_normal((0, 0, 0), (1, float("nan"), 0), (0, 1, 0))
+    Traceback (most recent call last):
+    ...
+    ValueError: B.y is NaN
+    """
+    fast = _fast_ratios(a, b, c)
+    if fast is None:
+        coords = _parse_vertex(a, "A") + _parse_vertex(b, "B") + _parse_vertex(c, "C")
+        floats = None
+    else:
+        coords, floats = fast
+    try:
+        w = _WINDINGS[winding]
+    except (KeyError, TypeError):
+        w = _check_winding(winding)
+    tn, td = _DEFAULT_TOL_RATIO if tol is DEFAULT_TOL else _check_tol(tol)
+    if arithmetic == "exact":
+        return _exact(coords, w, tn, td, floats)
+    if arithmetic in ("float64", "float32"):
+        return _floating(coords, w, tn, td, arithmetic)
+    raise ValueError(f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {arithmetic!r}")
+
+
+def _exact(
+    coords: list[tuple[int, int]], w: Winding, tn: int, td: int, floats: list[float] | None = None
+) -> TriangleNormal:
+    s = _exact_state(coords, w)
+    ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S = s
+    D2 = D * D
+    # degenerate <=> |N| <= tol |U||V| <=> S td² <= tn² |U|²|V|²  (all exact integers)
+    degenerate = S * td * td <= tn * tn * (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz)
+    if floats is None:
+        floats = list(_divide(ints, D))
+    try:  # int / int is correctly rounded; it raises only beyond the float range
+        u = (ux / D, uy / D, uz / D)
+        v = (vx / D, vy / D, vz / D)
+        normal = (nx / D2, ny / D2, nz / D2)
+    except OverflowError:
+        u, v, normal = _divide(s.u, D), _divide(s.v, D), _divide(s.n, D2)
+    unit = plane = None
+    reason = ""
+    if S == 0:
+        magnitude = area = 0.0
+    else:
+        # r ≈ sqrt(S)·2**k with at least 66 correct bits, so each division below
+        # is within 1 ulp of the exact value, at any scale
+        k = max(0, 67 - (S.bit_length() >> 1))
+        r = math.isqrt(S << (k << 1))
+        scale = D2 << k
+        try:
+            magnitude = r / scale
+            area = r / (scale << 1)
+        except OverflowError:
+            magnitude, area = _div(r, scale), _div(r, scale << 1)
+    if degenerate:
+        reason = _reason(ints, S == 0)
+    else:
+        unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)  # |unit| <= 1: no overflow
+        plane = Plane(unit, _div((nx * ints[0] + ny * ints[1] + nz * ints[2]) << k, r * D))
+    return _make(
+        (floats[0], floats[1], floats[2]),
+        (floats[3], floats[4], floats[5]),
+        (floats[6], floats[7], floats[8]),
+        w,
+        u,
+        v,
+        normal,
+        magnitude,
+        area,
+        unit,
+        degenerate,
+        plane,
+        reason,
+        "exact",
+        _tol_float(tn, td),
+        s,
+    )
+
+
+_FIELDS = (
+    "a b c winding u v normal magnitude area unit_normal degenerate plane reason arithmetic tol _state"
+).split()
+
+
+def _make(*values: Any) -> TriangleNormal:
+    """Build a result without the frozen dataclass's field-by-field ``__init__`` (same fields)."""
+    r = object.__new__(TriangleNormal)
+    object.__setattr__(r, "__dict__", dict(zip(_FIELDS, values, strict=True)))
+    return r
+
+
+def _tol_float(tn: int, td: int) -> float:
+    return DEFAULT_TOL if (tn, td) == _DEFAULT_TOL_RATIO else tn / td
+
+
+_DEFAULT_TOL_RATIO = DEFAULT_TOL.as_integer_ratio()
+
+
+def _floating(coords: list[tuple[int, int]], w: Winding, tn: int, td: int, fmt: str) -> TriangleNormal:
+    """The textbook formula, every operation rounded in float64 or float32."""
+    if fmt == "float32":
+        rnd = _f32
+        vals = [_ratio_to_f32(n, d) for n, d in coords]
+        limit = "±3.4e38"
+    else:
+
+        def rnd(x: float) -> float:
+            return x
+
+        vals = [_div(n, d) for n, d in coords]
+        limit = "±1.8e308"
+    for x, i in zip(vals, range(9), strict=True):
+        if math.isinf(x):
+            raise OverflowError(
+                f"{VERTICES[i // 3]}.{AXES[i % 3]} is outside the {fmt} range ({limit}); "
+                "use arithmetic='exact'"
+            )
+    A, B, C = vals[0:3], vals[3:6], vals[6:9]
+    P, Q = (B, C) if w is Winding.ABC else (C, B)
+    u = (rnd(P[0] - A[0]), rnd(P[1] - A[1]), rnd(P[2] - A[2]))
+    v = (rnd(Q[0] - A[0]), rnd(Q[1] - A[1]), rnd(Q[2] - A[2]))
+    n = (
+        rnd(rnd(u[1] * v[2]) - rnd(u[2] * v[1])),
+        rnd(rnd(u[2] * v[0]) - rnd(u[0] * v[2])),
+        rnd(rnd(u[0] * v[1]) - rnd(u[1] * v[0])),
+    )
+    for q, name in ((u, "U"), (v, "V"), (n, "N")):
+        if not all(math.isfinite(x) for x in q):
+            raise OverflowError(
+                f"{name} overflows the {fmt} range ({limit}) for these points; use arithmetic='exact'"
+            )
+    degenerate = _degenerate_floats(u, v, n, tn, td)
+    # |N| in this format, scaled by a power of two so squares neither overflow nor underflow
+    m = max(abs(x) for x in n)
+    unit = plane = None
+    reason = ""
+    if m == 0.0:
+        magnitude = 0.0
+    else:
+        e = math.frexp(m)[1]
+        sx, sy, sz = (rnd(math.ldexp(x, -e)) for x in n)
+        ss = rnd(rnd(rnd(sx * sx) + rnd(sy * sy)) + rnd(sz * sz))
+        root = rnd(math.sqrt(ss))
+        magnitude = rnd(_ldexp(root, e))
+    area = rnd(magnitude / 2)
+    if degenerate:
+        ints = _common([x.as_integer_ratio() for x in vals])[0]
+        nr = [x.as_integer_ratio() for x in n]
+        reason = _reason(ints, all(p == 0 for p, _ in nr), fmt)
+    else:
+        unit = (rnd(sx / root), rnd(sy / root), rnd(sz / root))
+        d = rnd(rnd(rnd(unit[0] * A[0]) + rnd(unit[1] * A[1])) + rnd(unit[2] * A[2]))
+        plane = Plane(unit, d)
+    exact_state = _exact_state(coords, w)
+    return TriangleNormal(
+        (A[0], A[1], A[2]),
+        (B[0], B[1], B[2]),
+        (C[0], C[1], C[2]),
+        w,
+        u,
+        v,
+        n,
+        magnitude,
+        area,
+        unit,
+        degenerate,
+        plane,
+        reason,
+        fmt,
+        _tol_float(tn, td),
+        exact_state,
+    )
+
+
+def _ldexp(x: float, e: int) -> float:
+    try:
+        return math.ldexp(x, e)
+    except OverflowError:
+        return math.copysign(math.inf, x)
+
+
+def _degenerate_floats(u: Vec3, v: Vec3, n: Vec3, tn: int, td: int) -> bool:
+    """The sine test on float-computed U, V and N, evaluated exactly."""
+    uv, D = _common([x.as_integer_ratio() for x in (*u, *v)])
+    ni, Dn = _common([x.as_integer_ratio() for x in n])
+    uu = sum(i * i for i in uv[0:3])
+    vv = sum(i * i for i in uv[3:6])
+    Sn = sum(i * i for i in ni)
+    # |N| <= tol |U||V|  with N = ni / Dn and U, V = uv / D
+    return Sn * td * td * D**4 <= tn * tn * uu * vv * Dn * Dn

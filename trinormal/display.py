@@ -1,0 +1,208 @@
+"""Display formatting: the one formatter behind notebooks, the CLI, widgets and the site.
+
+Rules (the site's JavaScript calculator follows the same ones):
+
+* ``precision`` is the number of decimal places, 0 to 15.
+* Rounding is half away from zero, applied to the *exact* value, so an area of
+  exactly 0.125 shows ``0.13`` at precision 2. Square roots are rounded from an
+  exact integer evaluation, so they are correctly rounded too.
+* A nonzero value never prints as zero: below ``10**-precision``, or at ``1e15``
+  and above, the number switches to scientific notation with ``precision``
+  digits after the point (``2.7756e-17``). Exponents have at least two digits,
+  as in Python's ``format(x, ".4e")``.
+* Zero never carries a minus sign.
+* ``trim=True`` drops trailing zeros and a bare point (``0.5``, ``1.4142``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from decimal import Decimal
+from fractions import Fraction
+from numbers import Integral, Real
+
+__all__ = ["format_number", "format_vector"]
+
+MAX_PRECISION = 15
+_SCI_ABOVE_LOG10 = 15  # values >= 1e15 print in scientific notation
+
+
+def _check_precision(precision: int) -> int:
+    if isinstance(precision, bool) or not isinstance(precision, Integral):
+        raise TypeError(f"precision must be an integer from 0 to 15, got {precision!r}")
+    p = int(precision)
+    if not 0 <= p <= MAX_PRECISION:
+        raise ValueError(f"precision must be from 0 to {MAX_PRECISION}, got {p}")
+    return p
+
+
+def _round_sqrt(num: int, den: int, k: int) -> int:
+    """Round ``sqrt(num / den) * 10**k`` half away from zero to an integer."""
+    if k >= 0:
+        n2, d2 = num * 10 ** (2 * k), den
+    else:
+        n2, d2 = num, den * 10 ** (-2 * k)
+    m = math.isqrt(n2 // d2)
+    # sqrt(n2/d2) >= m + 1/2  <=>  4 n2 >= (2m + 1)^2 d2
+    if 4 * n2 >= (2 * m + 1) ** 2 * d2:
+        m += 1
+    return m
+
+
+def _decimal_exponent(num: int, den: int) -> int:
+    """Return ``e`` with ``10**e <= sqrt(num/den) < 10**(e+1)`` (``num, den > 0``)."""
+    e = math.floor((num.bit_length() - den.bit_length()) * math.log10(2) / 2)
+
+    def at_least(e: int) -> bool:  # sqrt(num/den) >= 10**e  <=>  num >= den * 100**e
+        return num >= den * 100**e if e >= 0 else num * 100 ** (-e) >= den
+
+    while not at_least(e):
+        e -= 1
+    while at_least(e + 1):
+        e += 1
+    return e
+
+
+def _trim(digits: str) -> str:
+    if "." in digits:
+        digits = digits.rstrip("0").rstrip(".")
+    return digits
+
+
+def format_surd(negative: bool, num: int, den: int, precision: int, trim: bool = False) -> str:
+    """Format ``±sqrt(num / den)`` for exact non-negative integers ``num`` and ``den > 0``.
+
+    Every displayed number goes through here: a rational ``p/q`` is the surd
+    ``p**2 / q**2``, and ``|N| = sqrt(S) / D**2`` is exact without being rational.
+
+    Examples
+    --------
+    >>> format_surd(False, 2, 1, 4)             # sqrt(2)
+    '1.4142'
+    >>> format_surd(True, 1, 2, 4)              # -sqrt(1/2)
+    '-0.7071'
+    >>> format_surd(False, 1, 64, 2)            # 0.125 rounds half away from zero
+    '0.13'
+    """
+    p = _check_precision(precision)
+    if num == 0:
+        return "0" if (trim or p == 0) else "0." + "0" * p
+    # Scientific below 10**-p or at 1e15 and above: sqrt(num/den) < 10**-p <=> num*100**p < den
+    small = num * 100**p < den
+    large = num >= den * 100**_SCI_ABOVE_LOG10
+    sign = "-" if negative else ""
+    if not (small or large):
+        m = _round_sqrt(num, den, p)
+        s = str(m).rjust(p + 1, "0")
+        body = s if p == 0 else f"{s[:-p]}.{s[-p:]}"
+        return sign + (_trim(body) if trim else body)
+    e = _decimal_exponent(num, den)
+    m = _round_sqrt(num, den, p - e)
+    if m >= 10 ** (p + 1):  # rounding carried into a new digit: 9.99995 -> 10.0000
+        e += 1
+        m = _round_sqrt(num, den, p - e)
+    s = str(m)
+    mantissa = s if p == 0 else f"{s[0]}.{s[1:]}"
+    if trim:
+        mantissa = _trim(mantissa)
+    return f"{sign}{mantissa}e{'-' if e < 0 else '+'}{abs(e):02d}"
+
+
+def exact_ratio(x: object) -> tuple[int, int]:
+    """Return ``(numerator, denominator)`` of a finite real number, exactly.
+
+    Examples
+    --------
+    >>> exact_ratio(0.5), exact_ratio(Fraction(1, 3)), exact_ratio(Decimal("0.1"))
+    ((1, 2), (1, 3), (1, 10))
+    """
+    if isinstance(x, bool) or not isinstance(x, Real | Decimal):
+        raise TypeError(f"expected a real number, got {type(x).__name__}")
+    if isinstance(x, Integral):
+        return int(x), 1
+    try:
+        n, d = x.as_integer_ratio()  # type: ignore[union-attr]
+    except (OverflowError, ValueError):
+        raise ValueError(f"cannot format {x!r}: it is not a finite number") from None
+    return int(n), int(d)
+
+
+def format_number(x: float | int | Fraction | Decimal, precision: int = 4, trim: bool = False) -> str:
+    """Format one real number for display, from its exact value.
+
+    Parameters
+    ----------
+    x : int, float, Fraction or Decimal
+        A finite real number. A float is formatted from its exact binary value.
+    precision : int, default 4
+        Decimal places, 0 to 15.
+    trim : bool, default False
+        Drop trailing zeros and a bare decimal point.
+
+    Returns
+    -------
+    str
+        Fixed-point text, or scientific notation for a nonzero value below
+        ``10**-precision`` or at ``1e15`` and above.
+
+    Raises
+    ------
+    ValueError
+        For NaN, infinities, or a precision outside 0 to 15.
+
+    Examples
+    --------
+    >>> format_number(0.125, 2)
+    '0.13'
+    >>> format_number(0.25, 1)
+    '0.3'
+    >>> format_number(-0.0)
+    '0.0000'
+    >>> format_number(2.7755575615628914e-17)
+    '2.7756e-17'
+    >>> format_number(Fraction(1, 2), 4, trim=True)
+    '0.5'
+    >>> format_number(10**600 // 13)
+    '7.6923e+598'
+    """
+    n, d = exact_ratio(x)
+    return format_surd(n < 0, n * n, d * d, precision, trim)
+
+
+def format_vector(xs: Iterable[float | int | Fraction | Decimal], precision: int = 4, trim: bool = False) -> str:
+    """Format a vector as ``(x, y, z)`` with :func:`format_number`.
+
+    Examples
+    --------
+    >>> format_vector((0.0, -0.5, 0.5), 4)
+    '(0.0000, -0.5000, 0.5000)'
+    >>> format_vector((0, -1, 1), 4, trim=True)
+    '(0, -1, 1)'
+    """
+    return "(" + ", ".join(format_number(x, precision, trim) for x in xs) + ")"
+
+
+def join_vector(parts: Iterable[str]) -> str:
+    """Join already formatted components as ``(x, y, z)``."""
+    return "(" + ", ".join(parts) + ")"
+
+
+def plane_equation(parts: tuple[str, str, str], offset: str) -> str:
+    """Write the plane ``n · x = d`` as ``ax + by + cz = d`` from formatted numbers.
+
+    The sign between terms is taken from each formatted coefficient, so a
+    coefficient that rounds to zero reads ``+ 0.0000y``.
+
+    Examples
+    --------
+    >>> plane_equation(("0.0000", "-0.7071", "0.7071"), "0.0000")
+    '0.0000x - 0.7071y + 0.7071z = 0.0000'
+    """
+    out = parts[0] + "x"
+    for text, axis in zip(parts[1:], "yz", strict=True):
+        if text.startswith("-"):
+            out += f" - {text[1:]}{axis}"
+        else:
+            out += f" + {text}{axis}"
+    return f"{out} = {offset}"
