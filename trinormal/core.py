@@ -135,7 +135,9 @@ def _parse_string(text: str, name: str) -> tuple[int, int]:
         if d == 0:
             raise ValueError(f"{name} = {s!r} divides by zero")
         return (n, d) if d > 0 else (-n, -d)
-    raise ValueError(f"{name} = {s!r} is not a number (use a decimal like 0.1 or a fraction like 1/3)")
+    raise ValueError(
+        f"{name} = {s!r} is not a number (use a decimal like 0.1 or a fraction like 1/3)"
+    )
 
 
 def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
@@ -215,7 +217,9 @@ def _parse_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
     try:
         coords = list(p)  # type: ignore[call-overload]
     except TypeError:
-        raise TypeError(f"{vertex} must be 3 coordinates (x, y, z), got {type(p).__name__}") from None
+        raise TypeError(
+            f"{vertex} must be 3 coordinates (x, y, z), got {type(p).__name__}"
+        ) from None
     if len(coords) != 3:
         raise ValueError(f"{vertex} has {len(coords)} coordinates, expected 3")
     return [parse_coordinate(x, f"{vertex}.{axis}") for x, axis in zip(coords, AXES, strict=True)]
@@ -251,7 +255,9 @@ def _check_winding(winding: object) -> Winding:
     try:
         return Winding(winding)
     except ValueError:
-        raise ValueError(f"winding must be 'ABC' or 'ACB' (or a Winding), got {winding!r}") from None
+        raise ValueError(
+            f"winding must be 'ABC' or 'ACB' (or a Winding), got {winding!r}"
+        ) from None
 
 
 def _check_tol(tol: object) -> tuple[int, int]:
@@ -443,6 +449,7 @@ class TriangleNormal:
         >>> triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["unit_normal"]
         'undefined'
         """
+
         def surd(neg: bool, num: int, den: int) -> str:
             return format_surd(neg, num, den, precision, trim)
 
@@ -714,7 +721,9 @@ def _exact(
     ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S = s
     D2 = D * D
     # degenerate <=> |N| <= tol |U||V| <=> S td² <= tn² |U|²|V|²  (all exact integers)
-    degenerate = S * td * td <= tn * tn * (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz)
+    degenerate = S * td * td <= tn * tn * (ux * ux + uy * uy + uz * uz) * (
+        vx * vx + vy * vy + vz * vz
+    )
     if floats is None:
         floats = list(_divide(ints, D))
     try:  # int / int is correctly rounded; it raises only beyond the float range
@@ -782,7 +791,9 @@ def _tol_float(tn: int, td: int) -> float:
 _DEFAULT_TOL_RATIO = DEFAULT_TOL.as_integer_ratio()
 
 
-def _floating(coords: list[tuple[int, int]], w: Winding, tn: int, td: int, fmt: str) -> TriangleNormal:
+def _floating(
+    coords: list[tuple[int, int]], w: Winding, tn: int, td: int, fmt: str
+) -> TriangleNormal:
     """The textbook formula, every operation rounded in float64 or float32."""
     if fmt == "float32":
         rnd = _f32

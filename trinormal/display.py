@@ -128,7 +128,9 @@ def exact_ratio(x: object) -> tuple[int, int]:
     return int(n), int(d)
 
 
-def format_number(x: float | int | Fraction | Decimal, precision: int = 4, trim: bool = False) -> str:
+def format_number(
+    x: float | int | Fraction | Decimal, precision: int = 4, trim: bool = False
+) -> str:
     """Format one real number for display, from its exact value.
 
     Parameters
@@ -170,7 +172,9 @@ def format_number(x: float | int | Fraction | Decimal, precision: int = 4, trim:
     return format_surd(n < 0, n * n, d * d, precision, trim)
 
 
-def format_vector(xs: Iterable[float | int | Fraction | Decimal], precision: int = 4, trim: bool = False) -> str:
+def format_vector(
+    xs: Iterable[float | int | Fraction | Decimal], precision: int = 4, trim: bool = False
+) -> str:
     """Format a vector as ``(x, y, z)`` with :func:`format_number`.
 
     Examples

@@ -8,7 +8,13 @@ in ``fig.alt_text``.
 
 from __future__ import annotations
 
-__all__ = ["AXIS_COLORS", "FACECOLOR", "PALETTE"]
+import io
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = ["AXIS_COLORS", "FACECOLOR", "PALETTE", "show"]
 
 #: Okabe–Ito colour-blind-safe palette.
 PALETTE: dict[str, str] = {
@@ -27,3 +33,29 @@ AXIS_COLORS: tuple[str, str, str] = (PALETTE["vermillion"], PALETTE["green"], PA
 
 #: Figure background: opaque white, never transparent.
 FACECOLOR = "white"
+
+
+def show(fig: Figure, alt: str | None = None) -> None:
+    """Display ``fig`` in a notebook as a PNG with a text alternative, then close it.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure to show.
+    alt : str, optional
+        The text alternative; defaults to ``fig.alt_text`` when a helper set it.
+
+    Notes
+    -----
+    Displaying explicitly (instead of ending a cell with ``fig``) shows the image
+    once, stores no ``<Figure size ...>`` text, and gives screen readers and the
+    rendered site an ``alt`` attribute.
+    """
+    import matplotlib.pyplot as plt
+    from IPython.display import Image, display
+
+    text = alt if alt is not None else getattr(fig, "alt_text", "")
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100, facecolor=fig.get_facecolor())
+    plt.close(fig)
+    display(Image(data=buf.getvalue(), format="png", alt=text))
