@@ -16,7 +16,7 @@ Examples
 (-x1 + x2)*(-y1 + y3) - (-x1 + x3)*(-y1 + y2)
 >>> normal_components("edges")
 NormalComponents(x=Uy*Vz - Uz*Vy, y=-Ux*Vz + Uz*Vx, z=Ux*Vy - Uy*Vx)
->>> for label, tex in steps((0, 0, 0), (1, 0, 0), (0, 1, 0))[-3:]:
+>>> for label, tex in steps((0, 0, 0), (1, 0, 0), (0, 1, 0))[-4:-1]:
 ...     print(label, "|", tex)
 |N| | |\mathbf{N}| = \sqrt{0^{2} + 0^{2} + 1^{2}} = 1
 Area | \text{Area} = \frac{|\mathbf{N}|}{2} = \frac{1}{2}
@@ -41,12 +41,14 @@ __all__ = [
     "POINT_SYMBOLS",
     "Identity",
     "NormalComponents",
+    "Solution",
     "Step",
     "cross",
     "edge_vectors",
     "guide_formulas",
     "identities",
     "normal_components",
+    "solution",
     "steps",
     "steps_latex",
 ]
@@ -322,6 +324,9 @@ def _factor(x: sp.Expr) -> str:
     return f"\\left({t}\\right)" if x < 0 else t
 
 
+_HAT = r"\hat{\mathbf{n}}"
+
+
 def _base(x: sp.Expr) -> str:
     """LaTeX of a number raised to a power: negatives and fractions in parentheses."""
     t = _tex(x)
@@ -330,6 +335,72 @@ def _base(x: sp.Expr) -> str:
 
 def _tuple(xs: Iterable[sp.Expr]) -> str:
     return r"\left(" + ", ".join(_tex(x) for x in xs) + r"\right)"
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Exact values for one triangle, as sympy numbers.
+
+    ``unit_normal`` and ``offset`` (the plane is ``n̂ · X = offset``) are
+    ``None`` when the triangle is degenerate; ``reason`` then says why.
+    """
+
+    a: tuple[sp.Expr, sp.Expr, sp.Expr]
+    b: tuple[sp.Expr, sp.Expr, sp.Expr]
+    c: tuple[sp.Expr, sp.Expr, sp.Expr]
+    winding: Winding
+    u: tuple[sp.Expr, sp.Expr, sp.Expr]
+    v: tuple[sp.Expr, sp.Expr, sp.Expr]
+    normal: tuple[sp.Expr, sp.Expr, sp.Expr]
+    magnitude: sp.Expr
+    area: sp.Expr
+    unit_normal: tuple[sp.Expr, sp.Expr, sp.Expr] | None
+    offset: sp.Expr | None
+    degenerate: bool
+    reason: str
+
+
+def _three(xs: Iterable[sp.Expr]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    x, y, z = xs
+    return x, y, z
+
+
+def solution(
+    a: Iterable[Any],
+    b: Iterable[Any],
+    c: Iterable[Any],
+    winding: Winding | str = "ABC",
+    tol: float | int | Fraction | str = DEFAULT_TOL,
+) -> Solution:
+    """Compute every value of the worked solution exactly, with sympy.
+
+    The coordinates are read exactly by :func:`trinormal.triangle_normal`
+    (whose verdict on degeneracy is used), and N comes from substituting the
+    edges into the formulas :func:`normal_components` derived.
+
+    Examples
+    --------
+    >>> s = solution((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    >>> s.normal, s.magnitude, s.area, s.unit_normal
+    ((0, -1, 1), sqrt(2), sqrt(2)/2, (0, -sqrt(2)/2, sqrt(2)/2))
+    >>> solution(("0.1", 0, 0), (0, "1/3", 0), (0, 0, 0)).normal
+    (0, 0, 1/30)
+    """
+    r = triangle_normal(a, b, c, winding=winding, tol=tol)
+    e = r.exact
+    A, B, C = _exact_vertex(e.a), _exact_vertex(e.b), _exact_vertex(e.c)
+    P, Q = (C, B) if r.winding is Winding.ACB else (B, C)
+    u = _three(P[i] - A[i] for i in range(3))
+    v = _three(Q[i] - A[i] for i in range(3))
+    (ux, uy, uz), (vx, vy, vz) = EDGE_SYMBOLS
+    values = {ux: u[0], uy: u[1], uz: u[2], vx: v[0], vy: v[1], vz: v[2]}
+    n = _three(sp.Rational(f.subs(values)) for f in normal_components("edges"))
+    mag = sp.sqrt(sum(x**2 for x in n))
+    unit = offset = None
+    if not r.degenerate:
+        unit = _three(sp.radsimp(x / mag) for x in n)
+        offset = sp.radsimp(sum(n[i] * A[i] for i in range(3)) / mag)
+    return Solution(A, B, C, r.winding, u, v, n, mag, mag / 2, unit, offset, r.degenerate, r.reason)
 
 
 def steps(
@@ -359,31 +430,22 @@ def steps(
     -------
     list of Step
         ``(label, latex)`` pairs: the points, U, V, N's three components, N,
-        |N|, the area, then the unit normal or the degenerate verdict.
+        |N|, the area, then the unit normal and the plane, or the degenerate
+        verdict. The values behind them are :func:`solution`'s.
 
     Examples
     --------
     >>> s = steps((1, 1, 1), (2, 1, 1), (1, 2, 2))
-    >>> print(s[-1].latex.split(" = ")[-1])
+    >>> print(s[-2].latex.split(" = ")[-1])
     \left(0, - \frac{\sqrt{2}}{2}, \frac{\sqrt{2}}{2}\right)
     >>> print(steps(("0", "0", "0"), ("0.1", "0", "0"), ("0", "1/3", "0"))[5].latex)
     N_z = U_x V_y - U_y V_x = \frac{1}{10} \cdot \frac{1}{3} - 0 \cdot 0 = \frac{1}{30}
     >>> steps((0, 0, 0), (1, 1, 1), (2, 2, 2))[-1].label
     'Degenerate'
     """
-    r = triangle_normal(a, b, c, winding=winding, tol=tol)
-    e = r.exact
-    A, B, C = _exact_vertex(e.a), _exact_vertex(e.b), _exact_vertex(e.c)
-    acb = r.winding is Winding.ACB
-    first, second = ("C", "B") if acb else ("B", "C")
-    P, Q = (C, B) if acb else (B, C)
-    u = [P[i] - A[i] for i in range(3)]
-    v = [Q[i] - A[i] for i in range(3)]
-    (ux, uy, uz), (vx, vy, vz) = EDGE_SYMBOLS
-    formulas = normal_components("edges")
-    values = {ux: u[0], uy: u[1], uz: u[2], vx: v[0], vy: v[1], vz: v[2]}
-    n = [sp.Rational(f.subs(values)) for f in formulas]
-
+    s = solution(a, b, c, winding=winding, tol=tol)
+    A, B, C, u, v, n = s.a, s.b, s.c, s.u, s.v, s.normal
+    first, second = ("C", "B") if s.winding is Winding.ACB else ("B", "C")
     out = [
         Step(
             "Points",
@@ -410,19 +472,23 @@ def steps(
         out.append(Step(f"N_{axes[k]}", f"N_{axes[k]} = {term} = {_tex(n[k])}"))
     out.append(Step("N", rf"\mathbf{{N}} = \mathbf{{U}} \times \mathbf{{V}} = {_tuple(n)}"))
     squares = " + ".join(f"{_base(x)}^{{2}}" for x in n)
-    mag = sp.sqrt(sum(x**2 for x in n))
-    out.append(Step("|N|", rf"|\mathbf{{N}}| = \sqrt{{{squares}}} = {_tex(mag)}"))
-    out.append(Step("Area", rf"\text{{Area}} = \frac{{|\mathbf{{N}}|}}{{2}} = {_tex(mag / 2)}"))
-    if r.degenerate:
-        out.append(Step("Degenerate", rf"\text{{No unit normal: {r.reason}}}"))
-    else:
-        unit = [sp.radsimp(x / mag) for x in n]
-        out.append(
-            Step(
-                "Unit normal",
-                rf"\hat{{\mathbf{{n}}}} = \frac{{\mathbf{{N}}}}{{|\mathbf{{N}}|}} = {_tuple(unit)}",
-            )
+    out.append(Step("|N|", rf"|\mathbf{{N}}| = \sqrt{{{squares}}} = {_tex(s.magnitude)}"))
+    out.append(Step("Area", rf"\text{{Area}} = \frac{{|\mathbf{{N}}|}}{{2}} = {_tex(s.area)}"))
+    if s.unit_normal is None or s.offset is None:
+        out.append(Step("Degenerate", rf"\text{{No unit normal: {s.reason}}}"))
+        return out
+    out.append(
+        Step(
+            "Unit normal",
+            rf"{_HAT} = \frac{{\mathbf{{N}}}}{{|\mathbf{{N}}|}} = {_tuple(s.unit_normal)}",
         )
+    )
+    out.append(
+        Step(
+            "Plane",
+            rf"{_HAT} \cdot X = d,\quad d = {_HAT} \cdot A = {_tex(s.offset)}",
+        )
+    )
     return out
 
 
