@@ -1,0 +1,863 @@
+"""Normals of whole triangle meshes, vectorized with numpy.
+
+A mesh is two arrays: ``vertices`` of shape (V, 3), one point per row, and
+``faces`` of shape (F, 3), three row indices into ``vertices`` per triangle.
+Face ``(i, j, k)`` has the normal ``N = (v[j] - v[i]) × (v[k] - v[i])``, the
+same formula and the same winding as :func:`trinormal.triangle_normal`.
+
+The promises, for every function here:
+
+* No NaN and no ``RuntimeWarning``, whatever the input. A degenerate face (the
+  sine of the angle between its edges is at most ``tol``, the scale-invariant
+  test of :mod:`trinormal.tolerances`) gets a zero normal; a vertex that
+  touches only degenerate faces gets a zero vertex normal.
+* Coordinates near 1e-200 or 1e200 still give correct unit normals: rows that
+  would underflow or overflow are redone with their edges scaled by powers of
+  two, which is exact.
+* float32 vertices are computed in float64 (the product of two float32 numbers
+  is exact in float64) and the result comes back as float32. Any other real
+  input is computed and returned in float64.
+* Bad input raises a :class:`ValueError` that names the first bad row.
+
+Speed comes from plain numpy: the coordinates are split into three contiguous
+arrays, faces are processed in blocks of a few thousand so that every
+temporary stays in the CPU cache, and every operation writes in place. There
+is no Python loop over faces (only over blocks of them).
+
+The small meshes :func:`cube`, :func:`icosphere`, :func:`torus` and
+:func:`terrain` are generated in code, outward-facing and consistently wound.
+
+Examples
+--------
+>>> from trinormal import mesh
+>>> v, f = mesh.cube()
+>>> v.shape, f.shape
+((8, 3), (12, 3))
+>>> mesh.face_normals(v, f)[:2]
+array([[ 0.,  0., -1.],
+       [ 0.,  0., -1.]])
+>>> bool(mesh.consistent_winding(f))
+True
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Literal
+
+import numpy as np
+import numpy.typing as npt
+
+from trinormal.tolerances import DEFAULT_TOL
+
+__all__ = [
+    "WEIGHTINGS",
+    "consistent_winding",
+    "cube",
+    "degenerate_faces",
+    "face_areas",
+    "face_normals",
+    "icosphere",
+    "inconsistent_edges",
+    "terrain",
+    "torus",
+    "vertex_normals",
+]
+
+FloatArray = npt.NDArray[np.floating[Any]]
+IntArray = npt.NDArray[np.intp]
+BoolArray = npt.NDArray[np.bool_]
+Weighting = Literal["angle", "area", "uniform"]
+
+#: The vertex-normal weightings :func:`vertex_normals` accepts.
+WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
+
+#: Faces per block: small enough that the block's temporaries stay in cache.
+_BLOCK = 8192
+
+# A row goes to the careful path unless |U|²|V|² < 2**900 (no product can
+# overflow) and |N|² > 2**-900 (|N| and the unit normal are full precision).
+_HI = 2.0**900
+_LO = 2.0**-900
+
+
+# --------------------------------------------------------------------------- validation
+
+
+def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]:
+    """Return the vertices as float64 (V, 3) and the dtype results come back in."""
+    arr = np.asarray(vertices)
+    if arr.dtype == np.float32:
+        out_dtype: np.dtype[Any] = np.dtype(np.float32)
+    elif arr.dtype.kind in "fiu":
+        out_dtype = np.dtype(np.float64)
+    elif arr.dtype == object:
+        try:
+            arr = arr.astype(np.float64)
+        except (TypeError, ValueError):
+            raise ValueError("vertices must be real numbers") from None
+        out_dtype = np.dtype(np.float64)
+    else:
+        raise ValueError(f"vertices must be real numbers, got dtype {arr.dtype}")
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise ValueError(f"vertices must have shape (V, 3), got shape {arr.shape}")
+    arr64 = arr.astype(np.float64, copy=False)
+    finite = np.isfinite(arr64)
+    if not finite.all():
+        row = int(np.flatnonzero(~finite.all(axis=1))[0])
+        axis = "xyz"[int(np.flatnonzero(~finite[row])[0])]
+        what = "NaN" if np.isnan(arr64[row]).any() else "infinite"
+        raise ValueError(
+            f"vertices row {row} is {what} ({axis} = {arr64[row, 'xyz'.index(axis)]!r}); "
+            "every coordinate must be a finite number"
+        )
+    return arr64, out_dtype
+
+
+def _check_faces(faces: npt.ArrayLike, n_vertices: int | None) -> IntArray:
+    """Return the faces as an intp (F, 3) array, every index checked against ``n_vertices``."""
+    arr = np.asarray(faces)
+    if arr.size == 0:
+        if arr.ndim == 2 and arr.shape[1] != 3:
+            raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
+        return np.empty((0, 3), dtype=np.intp)
+    if arr.dtype.kind not in "iu":
+        raise ValueError(f"faces must hold integer vertex indices, got dtype {arr.dtype}")
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
+    lo, hi = int(arr.min()), int(arr.max())
+    limit = n_vertices if n_vertices is not None else hi + 1
+    if lo < 0 or hi >= limit:
+        bad = (arr < 0) | (arr >= limit)
+        row = int(np.flatnonzero(bad.any(axis=1))[0])
+        index = int(arr[row][bad[row]][0])
+        raise ValueError(
+            f"faces row {row} refers to vertex {index}, but the valid indices are "
+            f"0 to {limit - 1} ({limit} vertices)"
+        )
+    return np.ascontiguousarray(arr, dtype=np.intp)
+
+
+def _check_tol(tol: float) -> float:
+    try:
+        t = float(tol)
+    except (TypeError, ValueError):
+        raise ValueError(f"tol must be a real number >= 0, got {tol!r}") from None
+    if not (t >= 0.0 and math.isfinite(t)):
+        raise ValueError(f"tol must be a finite number >= 0, got {tol!r}")
+    return t
+
+
+def _prepare(
+    vertices: npt.ArrayLike, faces: npt.ArrayLike
+) -> tuple[FloatArray, FloatArray, FloatArray, IntArray, np.dtype[Any]]:
+    v, dtype = _check_vertices(vertices)
+    f = _check_faces(faces, v.shape[0])
+    x, y, z = (np.ascontiguousarray(v[:, k]) for k in range(3))
+    return x, y, z, f, dtype
+
+
+# --------------------------------------------------------------------------- the kernel
+
+
+class _Block:
+    """Scratch arrays for one block of faces, reused block after block."""
+
+    def __init__(self, n: int) -> None:
+        e = np.empty
+        self.ax, self.ay, self.az = e(n), e(n), e(n)
+        self.ux, self.uy, self.uz = e(n), e(n), e(n)
+        self.vx, self.vy, self.vz = e(n), e(n), e(n)
+        self.nx, self.ny, self.nz = e(n), e(n), e(n)
+        self.ss, self.t = e(n), e(n)
+        self.b1, self.b2 = e(n, dtype=bool), e(n, dtype=bool)
+
+    def view(self, n: int) -> _Block:
+        """Return the first ``n`` entries of every scratch array (for the last, shorter block)."""
+        out = object.__new__(_Block)
+        for name, arr in self.__dict__.items():
+            setattr(out, name, arr[:n])
+        return out
+
+
+class _Rows:
+    """Per-face results of one block: what the public functions assemble."""
+
+    def __init__(self, unit: FloatArray, deg: BoolArray, mag: FloatArray, exp: IntArray) -> None:
+        self.unit = unit  # (n, 3) unit normals, zero rows where degenerate
+        self.deg = deg  # (n,) degenerate
+        self.mag = mag  # (n,) |N| = mag * 2**exp
+        self.exp = exp
+
+
+def _careful(
+    x: FloatArray,
+    y: FloatArray,
+    z: FloatArray,
+    f: IntArray,
+    tol2: float,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray, BoolArray]:
+    """Rows at extreme scales: edges scaled by powers of two before the cross product.
+
+    Returns the scaled edges U', V' (k, 3) and |U' × V'| (k,); the normal
+    scaled once more to a largest component in [0.5, 1), N'' (k, 3), with |N''|
+    and the exponent ``e`` such that N = N'' · 2**e; and the degeneracy mask.
+    """
+    i0, i1, i2 = f[:, 0], f[:, 1], f[:, 2]
+    a = np.stack([x[i0], y[i0], z[i0]], axis=1)
+    b = np.stack([x[i1], y[i1], z[i1]], axis=1)
+    c = np.stack([x[i2], y[i2], z[i2]], axis=1)
+    with np.errstate(all="ignore"):
+        u, v = b - a, c - a
+        # differences of coordinates near the float64 limit can overflow: halve first (exact)
+        big = ~(np.isfinite(u).all(axis=1) & np.isfinite(v).all(axis=1))
+        pre = np.where(big, 2, 0)
+        if big.any():
+            u[big] = b[big] * 0.25 - a[big] * 0.25
+            v[big] = c[big] * 0.25 - a[big] * 0.25
+    eu = np.frexp(np.abs(u).max(axis=1))[1]
+    ev = np.frexp(np.abs(v).max(axis=1))[1]
+    u = np.ldexp(u, -eu[:, None])
+    v = np.ldexp(v, -ev[:, None])
+    n = np.cross(u, v)
+    nn = np.sqrt(np.einsum("ij,ij->i", n, n))
+    uu = np.einsum("ij,ij->i", u, u)
+    vv = np.einsum("ij,ij->i", v, v)
+    en = np.frexp(np.abs(n).max(axis=1))[1]
+    ns = np.ldexp(n, -en[:, None])
+    mag = np.sqrt(np.einsum("ij,ij->i", ns, ns))
+    # the sine test on the scaled edges: |N'|² <= tol² |U'|² |V'|² (exact scale invariance)
+    deg = np.einsum("ij,ij->i", n, n) <= tol2 * uu * vv
+    deg |= mag == 0.0
+    exp = (eu + ev + en + 2 * pre).astype(np.intp)
+    return u, v, nn, ns, mag, exp, deg
+
+
+def _normalize_rows(s: FloatArray) -> FloatArray:
+    """Return the unit rows of ``s`` (n, 3), scaled by a power of two first; zero rows stay zero."""
+    e = np.frexp(np.abs(s).max(axis=1))[1]
+    s = np.ldexp(s, -e[:, None])
+    r = np.sqrt(np.einsum("ij,ij->i", s, s))
+    r[r == 0.0] = 1.0
+    out: FloatArray = s / r[:, None]
+    return out
+
+
+def _blocks(n: int) -> range:
+    return range(0, n, _BLOCK)
+
+
+def _face_rows(
+    x: FloatArray,
+    y: FloatArray,
+    z: FloatArray,
+    f: IntArray,
+    tol: float,
+    unit_out: FloatArray | None = None,
+    deg_out: BoolArray | None = None,
+    mag_out: FloatArray | None = None,
+    angles_out: FloatArray | None = None,
+) -> IntArray | None:
+    """Fill the requested per-face outputs; return the magnitude exponents if any are nonzero.
+
+    ``unit_out`` (F, 3) unit normals (zero rows where degenerate), ``deg_out``
+    (F,) degeneracy, ``mag_out`` (F,) |N| as a mantissa (times ``2**exp``),
+    ``angles_out`` (F, 3) the interior angle at each corner.
+    """
+    nf = f.shape[0]
+    tol2 = tol * tol
+    exps: IntArray | None = None
+    full = _Block(min(_BLOCK, max(nf, 1)))
+    take, mul, sub, add = np.take, np.multiply, np.subtract, np.add
+    with np.errstate(all="ignore"):
+        for s in _blocks(nf):
+            e = min(s + _BLOCK, nf)
+            w = full if e - s == _BLOCK else full.view(e - s)
+            i0, i1, i2 = f[s:e, 0], f[s:e, 1], f[s:e, 2]
+            take(x, i0, out=w.ax)
+            take(y, i0, out=w.ay)
+            take(z, i0, out=w.az)
+            take(x, i1, out=w.ux)
+            take(y, i1, out=w.uy)
+            take(z, i1, out=w.uz)
+            take(x, i2, out=w.vx)
+            take(y, i2, out=w.vy)
+            take(z, i2, out=w.vz)
+            sub(w.ux, w.ax, out=w.ux)
+            sub(w.uy, w.ay, out=w.uy)
+            sub(w.uz, w.az, out=w.uz)
+            sub(w.vx, w.ax, out=w.vx)
+            sub(w.vy, w.ay, out=w.vy)
+            sub(w.vz, w.az, out=w.vz)
+            # N = U × V
+            mul(w.uy, w.vz, out=w.nx)
+            mul(w.uz, w.vy, out=w.t)
+            sub(w.nx, w.t, out=w.nx)
+            mul(w.uz, w.vx, out=w.ny)
+            mul(w.ux, w.vz, out=w.t)
+            sub(w.ny, w.t, out=w.ny)
+            mul(w.ux, w.vy, out=w.nz)
+            mul(w.uy, w.vx, out=w.t)
+            sub(w.nz, w.t, out=w.nz)
+            # |N|², |U|² (in ax), |V|² (in ay)
+            mul(w.nx, w.nx, out=w.ss)
+            mul(w.ny, w.ny, out=w.t)
+            add(w.ss, w.t, out=w.ss)
+            mul(w.nz, w.nz, out=w.t)
+            add(w.ss, w.t, out=w.ss)
+            mul(w.ux, w.ux, out=w.ax)
+            mul(w.uy, w.uy, out=w.t)
+            add(w.ax, w.t, out=w.ax)
+            mul(w.uz, w.uz, out=w.t)
+            add(w.ax, w.t, out=w.ax)
+            mul(w.vx, w.vx, out=w.ay)
+            mul(w.vy, w.vy, out=w.t)
+            add(w.ay, w.t, out=w.ay)
+            mul(w.vz, w.vz, out=w.t)
+            add(w.ay, w.t, out=w.ay)
+            if angles_out is not None:
+                # U·V (in az), kept for the corner angles
+                mul(w.ux, w.vx, out=w.az)
+                mul(w.uy, w.vy, out=w.t)
+                add(w.az, w.t, out=w.az)
+                mul(w.uz, w.vz, out=w.t)
+                add(w.az, w.t, out=w.az)
+            # |U|²|V|² (in t); rows outside the safe range go to the careful path
+            mul(w.ax, w.ay, out=w.t)
+            np.less(w.t, _HI, out=w.b1)
+            np.greater(w.ss, _LO, out=w.b2)
+            np.logical_and(w.b1, w.b2, out=w.b1)
+            # degenerate: |N|² <= tol² |U|²|V|²
+            mul(w.t, tol2, out=w.t)
+            np.less_equal(w.ss, w.t, out=w.b2)
+            if deg_out is not None:
+                deg_out[s:e] = w.b2
+            np.sqrt(w.ss, out=w.ss)  # |N|
+            if mag_out is not None:
+                mag_out[s:e] = w.ss
+            if angles_out is not None:
+                # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
+                np.arctan2(w.ss, w.az, out=angles_out[s:e, 0])
+                sub(w.ax, w.az, out=w.ax)
+                np.arctan2(w.ss, w.ax, out=angles_out[s:e, 1])
+                add(angles_out[s:e, 0], angles_out[s:e, 1], out=w.t)
+                sub(math.pi, w.t, out=angles_out[s:e, 2])
+            if unit_out is not None:
+                np.divide(1.0, w.ss, out=w.t)
+                if w.b2.any():
+                    w.t[w.b2] = 0.0
+                mul(w.nx, w.t, out=unit_out[s:e, 0])
+                mul(w.ny, w.t, out=unit_out[s:e, 1])
+                mul(w.nz, w.t, out=unit_out[s:e, 2])
+            if not w.b1.all():
+                rows = np.flatnonzero(~w.b1)
+                u, v, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
+                at = s + rows
+                if deg_out is not None:
+                    deg_out[at] = deg
+                if mag_out is not None:
+                    if exps is None:
+                        exps = np.zeros(nf, dtype=np.intp)
+                    mag_out[at] = mag
+                    exps[at] = exp
+                if unit_out is not None:
+                    safe = np.where(mag == 0.0, 1.0, mag)
+                    unit_out[at] = np.where(deg[:, None], 0.0, ns / safe[:, None])
+                if angles_out is not None:
+                    uv = np.einsum("ij,ij->i", u, v)
+                    uu = np.einsum("ij,ij->i", u, u)
+                    ang_a = np.arctan2(nn, uv)
+                    ang_b = np.arctan2(nn, uu - uv)
+                    angles_out[at, 0] = ang_a
+                    angles_out[at, 1] = ang_b
+                    angles_out[at, 2] = math.pi - (ang_a + ang_b)
+    return exps
+
+
+# --------------------------------------------------------------------------- public functions
+
+
+def face_normals(
+    vertices: npt.ArrayLike,
+    faces: npt.ArrayLike,
+    unit: bool = True,
+    tol: float = DEFAULT_TOL,
+) -> FloatArray:
+    """Compute the normal of every face: N = (B − A) × (C − A) for face ``(A, B, C)``.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Vertex coordinates, float32 or float64 (integers are read as float64).
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle, in winding order.
+    unit : bool, default True
+        True: unit normals N / |N|. False: the raw N, whose length is twice the
+        face's area (the weight the guide recommends keeping for averaging).
+    tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
+        Degeneracy threshold on the sine of the angle between the two edges.
+
+    Returns
+    -------
+    ndarray, shape (F, 3)
+        One normal per face, in the vertices' dtype (float32 stays float32).
+        Degenerate faces get a zero row in both modes. With ``unit=False`` a
+        component whose exact value is beyond the float range is ``±inf``
+        (the unit normal is still right).
+
+    Raises
+    ------
+    ValueError
+        Wrong shapes, non-integer faces, an index out of range, NaN or
+        infinite coordinates, a negative tol. The message names the first bad row.
+
+    Examples
+    --------
+    The guide's worked example, and the same triangle wound the other way:
+
+    >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+    >>> face_normals(v, [[0, 1, 2], [0, 2, 1]])
+    array([[ 0.,  0.,  1.],
+           [ 0.,  0., -1.]])
+
+    The raw normal keeps the area (|N| = 2 · area):
+
+    >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2]], unit=False)
+    array([[0., 0., 6.]])
+
+    A collinear face gets a zero row, never NaN:
+
+    >>> face_normals([[0, 0, 0], [1, 1, 1], [2, 2, 2]], [[0, 1, 2]])
+    array([[0., 0., 0.]])
+
+    Tiny and huge coordinates still give unit normals:
+
+    >>> face_normals(np.array(v) * 1e-200, [[0, 1, 2]])
+    array([[0., 0., 1.]])
+    """
+    t = _check_tol(tol)
+    x, y, z, f, dtype = _prepare(vertices, faces)
+    nf = f.shape[0]
+    if unit:
+        out = np.empty((nf, 3), dtype=dtype)
+        _face_rows(x, y, z, f, t, unit_out=out)
+        return out
+    unit_n = np.empty((nf, 3))
+    mag = np.empty(nf)
+    exps = _face_rows(x, y, z, f, t, unit_out=unit_n, mag_out=mag)
+    with np.errstate(over="ignore"):
+        scale = mag if exps is None else np.ldexp(mag, exps)
+        return (unit_n * scale[:, None]).astype(dtype, copy=False)
+
+
+def degenerate_faces(
+    vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TOL
+) -> BoolArray:
+    """Which faces are degenerate: the sine of the angle between their edges is at most ``tol``.
+
+    The test ``|N| <= tol · |U| · |V|`` is the one :func:`trinormal.triangle_normal`
+    uses; it does not depend on the mesh's scale or position's units.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+    tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
+        Sine threshold; ``0`` flags only faces whose computed N is exactly zero.
+
+    Returns
+    -------
+    ndarray of bool, shape (F,)
+        True where the face has no trustworthy normal.
+
+    Examples
+    --------
+    >>> v = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [2, 0, 0]]
+    >>> degenerate_faces(v, [[0, 1, 2], [0, 1, 3], [0, 0, 2]])
+    array([False,  True,  True])
+
+    The verdict does not change with the scale:
+
+    >>> degenerate_faces(np.array(v) * 1e-150, [[0, 1, 2], [0, 1, 3]])
+    array([False,  True])
+    """
+    t = _check_tol(tol)
+    x, y, z, f, _ = _prepare(vertices, faces)
+    out = np.empty(f.shape[0], dtype=bool)
+    _face_rows(x, y, z, f, t, deg_out=out)
+    return out
+
+
+def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
+    """Area of every face, |N| / 2.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    ndarray, shape (F,)
+        Areas in the vertices' dtype; ``inf`` only where the exact area is
+        beyond the float range. Degenerate faces keep their (tiny) area.
+
+    Examples
+    --------
+    >>> face_areas([[0, 0, 0], [1, 0, 0], [0, 1, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2], [0, 3, 4]])
+    array([0.5, 3. ])
+    >>> v, f = cube()
+    >>> float(face_areas(v, f).sum())  # a cube of side 2
+    24.0
+    """
+    x, y, z, f, dtype = _prepare(vertices, faces)
+    mag = np.empty(f.shape[0])
+    exps = _face_rows(x, y, z, f, DEFAULT_TOL, mag_out=mag)
+    with np.errstate(over="ignore"):
+        area = np.ldexp(mag, (exps if exps is not None else 0) - 1)
+    return area.astype(dtype, copy=False)
+
+
+def vertex_normals(
+    vertices: npt.ArrayLike,
+    faces: npt.ArrayLike,
+    weighting: Weighting | str = "angle",
+    tol: float = DEFAULT_TOL,
+) -> FloatArray:
+    """Compute the unit normal at every vertex, a weighted sum of its faces' normals.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+    weighting : {"angle", "area", "uniform"}, default "angle"
+        How much each face counts at a vertex: its interior angle there
+        (Thürmer and Wüthrich; independent of how the surface is
+        triangulated), its area, or the same for every face.
+    tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
+        Degenerate faces (sine test) contribute nothing.
+
+    Returns
+    -------
+    ndarray, shape (V, 3)
+        Unit vertex normals in the vertices' dtype. A vertex that touches no
+        face, or only degenerate ones, or whose contributions cancel exactly,
+        gets a zero row.
+
+    Examples
+    --------
+    At a corner of a cube, angle weighting gives the exact diagonal
+    (1, 1, 1)/√3; area weighting leans toward the face split into two
+    triangles at that corner:
+
+    >>> v, f = cube()
+    >>> np.round(vertex_normals(v, f, "angle")[7], 6)
+    array([0.57735, 0.57735, 0.57735])
+    >>> np.round(vertex_normals(v, f, "area")[7], 6)
+    array([0.408248, 0.408248, 0.816497])
+    """
+    if weighting not in WEIGHTINGS:
+        raise ValueError(f"weighting must be one of {', '.join(WEIGHTINGS)}; got {weighting!r}")
+    t = _check_tol(tol)
+    x, y, z, f, dtype = _prepare(vertices, faces)
+    nv, nf = x.shape[0], f.shape[0]
+    unit = np.empty((nf, 3))
+    if weighting == "angle":
+        w = np.empty((nf, 3))
+        _face_rows(x, y, z, f, t, unit_out=unit, angles_out=w)
+    elif weighting == "area":
+        mag = np.empty(nf)
+        exps = _face_rows(x, y, z, f, t, unit_out=unit, mag_out=mag)
+        if exps is not None:  # bring |N| to one scale, the largest face's exponent
+            top = int(exps.max())
+            mag = np.ldexp(mag, exps - top)
+        w = np.repeat(mag[:, None], 3, axis=1)
+    else:
+        _face_rows(x, y, z, f, t, unit_out=unit)
+        w = np.ones((nf, 3))
+    idx = f.ravel()
+    acc = np.empty((nv, 3))
+    wc = np.empty((nf, 3))
+    for k in range(3):
+        np.multiply(w, unit[:, k, None], out=wc)
+        acc[:, k] = np.bincount(idx, weights=wc.ravel(), minlength=nv)
+    return _normalize_rows(acc).astype(dtype, copy=False)
+
+
+def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:
+    """Directed edges that appear in two faces running the same way.
+
+    In a consistently wound mesh every interior edge is walked once in each
+    direction, by the two faces that share it. An edge walked the same way
+    twice means one of those faces is flipped.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    ndarray of int, shape (E, 2)
+        Each offending directed edge ``(i, j)`` once, sorted.
+
+    Examples
+    --------
+    >>> inconsistent_edges([[0, 1, 2], [0, 2, 3]])
+    array([], shape=(0, 2), dtype=int64)
+    >>> inconsistent_edges([[0, 1, 2], [0, 3, 2]])
+    array([[2, 0]])
+    """
+    f = _check_faces(faces, None)
+    if f.shape[0] == 0:
+        return np.empty((0, 2), dtype=np.intp)
+    nv = int(f.max()) + 1
+    start = f.ravel()
+    end = f[:, [1, 2, 0]].ravel()
+    key = np.sort(start.astype(np.int64) * nv + end)
+    dup = np.unique(key[1:][key[1:] == key[:-1]])
+    return np.stack([dup // nv, dup % nv], axis=1).astype(np.intp)
+
+
+def consistent_winding(faces: npt.ArrayLike) -> bool:
+    """Whether every edge shared by two faces runs opposite ways in them.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    bool
+        True when no directed edge appears twice (see :func:`inconsistent_edges`).
+
+    Examples
+    --------
+    Two triangles sharing the edge 0–2, wound the same way round, then one flipped:
+
+    >>> consistent_winding([[0, 1, 2], [0, 2, 3]])
+    True
+    >>> consistent_winding([[0, 1, 2], [0, 3, 2]])
+    False
+    """
+    return bool(inconsistent_edges(faces).shape[0] == 0)
+
+
+# --------------------------------------------------------------------------- built-in meshes
+
+
+def cube(size: float = 2.0) -> tuple[FloatArray, IntArray]:
+    """Make a cube centred on the origin: 8 vertices and 12 outward-facing triangles.
+
+    Vertex ``i`` has coordinates ``±size/2`` with the sign of x, y, z taken from
+    bits 0, 1, 2 of ``i``, so vertex 7 is the corner (1, 1, 1) of the default
+    cube. Each square face is split along one diagonal; at vertex 7 only the
+    top face (+z) is split through the corner, which is what makes area and
+    angle weighting disagree there.
+
+    Parameters
+    ----------
+    size : float, default 2.0
+        Edge length.
+
+    Returns
+    -------
+    vertices : ndarray, shape (8, 3)
+    faces : ndarray of int, shape (12, 3)
+
+    Examples
+    --------
+    >>> v, f = cube()
+    >>> v[7], f[-2:]
+    (array([1., 1., 1.]), array([[4, 5, 7],
+           [4, 7, 6]]))
+    """
+    i = np.arange(8)
+    v = (np.stack([i & 1, (i >> 1) & 1, (i >> 2) & 1], axis=1) - 0.5) * float(size)
+    f = np.array(
+        [
+            [0, 2, 3], [0, 3, 1],  # -z  (bottom)
+            [0, 1, 5], [0, 5, 4],  # -y
+            [0, 4, 6], [0, 6, 2],  # -x
+            [1, 3, 5], [3, 7, 5],  # +x
+            [2, 6, 3], [3, 6, 7],  # +y
+            [4, 5, 7], [4, 7, 6],  # +z  (top)
+        ],
+        dtype=np.intp,
+    )  # fmt: skip
+    return v, f
+
+
+def icosphere(subdivisions: int = 2, radius: float = 1.0) -> tuple[FloatArray, IntArray]:
+    """Make a sphere of triangles: an icosahedron whose faces are split in four, repeatedly.
+
+    Parameters
+    ----------
+    subdivisions : int, default 2
+        How many times every triangle is split into four (0 is the icosahedron).
+    radius : float, default 1.0
+        Every vertex lies at this distance from the origin.
+
+    Returns
+    -------
+    vertices : ndarray, shape (10 · 4**s + 2, 3)
+    faces : ndarray of int, shape (20 · 4**s, 3)
+        Outward-facing, consistently wound.
+
+    Examples
+    --------
+    >>> v, f = icosphere(1)
+    >>> v.shape, f.shape
+    ((42, 3), (80, 3))
+    >>> bool(np.allclose(np.linalg.norm(v, axis=1), 1.0))
+    True
+    """
+    if subdivisions < 0:
+        raise ValueError(f"subdivisions must be >= 0, got {subdivisions}")
+    p = (1.0 + math.sqrt(5.0)) / 2.0
+    v = np.array(
+        [
+            [-1, p, 0], [1, p, 0], [-1, -p, 0], [1, -p, 0],
+            [0, -1, p], [0, 1, p], [0, -1, -p], [0, 1, -p],
+            [p, 0, -1], [p, 0, 1], [-p, 0, -1], [-p, 0, 1],
+        ],
+        dtype=np.float64,
+    )  # fmt: skip
+    f = np.array(
+        [
+            [0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11],
+            [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6], [7, 1, 8],
+            [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9],
+            [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1],
+        ],
+        dtype=np.intp,
+    )  # fmt: skip
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    for _ in range(subdivisions):
+        # one new vertex per edge, shared by the two faces on either side
+        edges = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
+        key = np.sort(edges, axis=1)
+        uniq, inverse = np.unique(key, axis=0, return_inverse=True)
+        mid = v[uniq[:, 0]] + v[uniq[:, 1]]
+        mid /= np.linalg.norm(mid, axis=1, keepdims=True)
+        m = inverse.reshape(3, -1) + v.shape[0]  # midpoints of edges 01, 12, 20 of each face
+        v = np.concatenate([v, mid])
+        a, b, c = f[:, 0], f[:, 1], f[:, 2]
+        ab, bc, ca = m[0], m[1], m[2]
+        f = np.concatenate(
+            [
+                np.stack([a, ab, ca], axis=1),
+                np.stack([b, bc, ab], axis=1),
+                np.stack([c, ca, bc], axis=1),
+                np.stack([ab, bc, ca], axis=1),
+            ]
+        )
+    return v * float(radius), f.astype(np.intp)
+
+
+def torus(
+    major: float = 1.0, minor: float = 0.35, n_major: int = 32, n_minor: int = 16
+) -> tuple[FloatArray, IntArray]:
+    """Make a ring around the z axis: a circle of radius ``minor`` swept along radius ``major``.
+
+    Parameters
+    ----------
+    major, minor : float
+        Radius of the ring's centre line and of its tube (``0 < minor < major``).
+    n_major, n_minor : int
+        Vertices around the ring and around the tube (at least 3 each).
+
+    Returns
+    -------
+    vertices : ndarray, shape (n_major · n_minor, 3)
+    faces : ndarray of int, shape (2 · n_major · n_minor, 3)
+        Outward-facing, consistently wound, closed (no boundary).
+
+    Examples
+    --------
+    >>> v, f = torus(n_major=8, n_minor=4)
+    >>> v.shape, f.shape
+    ((32, 3), (64, 3))
+    """
+    if not 0 < minor < major:
+        raise ValueError(f"need 0 < minor < major, got minor={minor}, major={major}")
+    if n_major < 3 or n_minor < 3:
+        raise ValueError(f"n_major and n_minor must be >= 3, got {n_major}, {n_minor}")
+    th = np.linspace(0.0, 2.0 * np.pi, n_major, endpoint=False)[:, None]
+    ph = np.linspace(0.0, 2.0 * np.pi, n_minor, endpoint=False)[None, :]
+    r = major + minor * np.cos(ph)
+    v = np.stack(
+        [
+            (r * np.cos(th)).ravel(),
+            (r * np.sin(th)).ravel(),
+            np.broadcast_to(minor * np.sin(ph), (n_major, n_minor)).ravel(),
+        ],
+        axis=1,
+    )
+    i = np.arange(n_major)[:, None]
+    j = np.arange(n_minor)[None, :]
+    p00 = (i * n_minor + j).ravel()
+    p10 = (((i + 1) % n_major) * n_minor + j).ravel()
+    p01 = (i * n_minor + (j + 1) % n_minor).ravel()
+    p11 = (((i + 1) % n_major) * n_minor + (j + 1) % n_minor).ravel()
+    f = np.concatenate([np.stack([p00, p10, p11], 1), np.stack([p00, p11, p01], 1)])
+    return v, f.astype(np.intp)
+
+
+def terrain(
+    nx: int = 32, ny: int = 32, size: float = 1.0, height: float = 0.15, seed: int = 0
+) -> tuple[FloatArray, IntArray]:
+    """Make a height-field grid: ``nx`` by ``ny`` points over a square, z a smooth landscape.
+
+    Faces are listed row by row, two triangles per grid cell, all facing up
+    (+z side), so neighbouring faces share neighbouring vertices: the natural
+    order a mesh file usually has.
+
+    Parameters
+    ----------
+    nx, ny : int
+        Grid points along x and y (at least 2 each).
+    size : float, default 1.0
+        Side of the square, centred on the origin.
+    height : float, default 0.15
+        Largest height of the landscape.
+    seed : int, default 0
+        Seed of the random hills (same seed, same terrain).
+
+    Returns
+    -------
+    vertices : ndarray, shape (nx · ny, 3)
+    faces : ndarray of int, shape (2 (nx − 1)(ny − 1), 3)
+
+    Examples
+    --------
+    >>> v, f = terrain(3, 4)
+    >>> v.shape, f.shape
+    ((12, 3), (12, 3))
+    >>> bool((face_normals(v, f)[:, 2] > 0).all())
+    True
+    """
+    if nx < 2 or ny < 2:
+        raise ValueError(f"nx and ny must be >= 2, got {nx}, {ny}")
+    rng = np.random.default_rng(seed)
+    xs = np.linspace(-size / 2, size / 2, nx)
+    ys = np.linspace(-size / 2, size / 2, ny)
+    gx, gy = np.meshgrid(xs, ys, indexing="xy")  # shape (ny, nx): row j, column i
+    k = rng.uniform(1.0, 4.0, size=(4, 2)) * (2 * np.pi / size)
+    phase = rng.uniform(0, 2 * np.pi, size=4)
+    amp = rng.uniform(0.3, 1.0, size=4)
+    z = sum(a * np.sin(kx * gx + ky * gy + p) for (kx, ky), p, a in zip(k, phase, amp, strict=True))
+    z = z * (height / amp.sum())
+    v = np.stack([gx.ravel(), gy.ravel(), np.asarray(z).ravel()], axis=1)
+    j, i = np.meshgrid(np.arange(ny - 1), np.arange(nx - 1), indexing="ij")
+    p00 = (j * nx + i).ravel()
+    p10, p01, p11 = p00 + 1, p00 + nx, p00 + nx + 1
+    f = np.stack([p00, p10, p11, p00, p11, p01], axis=1).reshape(-1, 3)
+    return v, f.astype(np.intp)
