@@ -1,0 +1,395 @@
+r"""The guide's inputs and published numbers, and the same numbers rebuilt by trinormal.
+
+The guide that trinormal teaches prints a worked example, a four-row comparison
+table and a table of floating-point precisions. This module keeps what the
+guide *publishes* (as data, exactly as printed) next to functions that
+*recompute* every value from :func:`trinormal.triangle_normal`, so a test can
+check one against the other and the documentation site can show numbers
+generated at build time instead of typed in.
+
+Examples
+--------
+>>> print(comparison_table_markdown())
+| Triangle vertices | Raw normal N | |N| | Area | Unit normal |
+|---|---|---|---|---|
+| (0,0,0), (1,0,0), (0,1,0) | (0, 0, 1) | 1 | 0.5 | (0, 0, 1) |
+| (0,0,0), (2,0,0), (0,3,0) | (0, 0, 6) | 6 | 3 | (0, 0, 1) |
+| (1,1,1), (2,1,1), (1,2,2) | (0, -1, 1) | 1.4142 | 0.7071 | (0, -0.7071, 0.7071) |
+| (0,0,0), (1,1,1), (2,2,2) | (0, 0, 0) | 0 | 0 | Undefined |
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from trinormal.core import TriangleNormal, triangle_normal
+from trinormal.display import format_number, format_vector
+
+__all__ = [
+    "COMPARISON_HEADERS",
+    "COMPARISON_ROWS",
+    "COMPARISON_TABLE_PRECISION",
+    "MISTAKES",
+    "PRECISION_FORMATS",
+    "WORKED_EXAMPLE",
+    "ComparisonRow",
+    "FloatFormat",
+    "comparison_table_cells",
+    "comparison_table_markdown",
+    "parse_markdown_table",
+    "precision_table_markdown",
+    "worked_example",
+    "worked_example_markdown",
+]
+
+Point = tuple[int, int, int]
+
+# --------------------------------------------------------------------------- the worked example
+
+
+@dataclass(frozen=True)
+class WorkedExample:
+    """The guide's worked example: its inputs and the values it prints (as printed)."""
+
+    a: Point
+    b: Point
+    c: Point
+    u: str
+    v: str
+    normal: str
+    magnitude: str
+    area: str
+    unit_normal: str
+    reversed_normal: str
+
+
+#: The worked example as the guide states it; ``reversed_normal`` is (C − A) × (B − A).
+WORKED_EXAMPLE = WorkedExample(
+    a=(0, 0, 0),
+    b=(1, 0, 0),
+    c=(0, 1, 0),
+    u="(1, 0, 0)",
+    v="(0, 1, 0)",
+    normal="(0, 0, 1)",
+    magnitude="1",
+    area="0.5",
+    unit_normal="(0, 0, 1)",
+    reversed_normal="(0, 0, -1)",
+)
+
+
+def worked_example(precision: int = 4, trim: bool = True) -> dict[str, str]:
+    """Recompute the guide's worked example with trinormal, as display strings.
+
+    Parameters
+    ----------
+    precision : int, default 4
+        Decimal places (see :func:`trinormal.format_number`).
+    trim : bool, default True
+        Drop trailing zeros, as the guide prints its numbers.
+
+    Returns
+    -------
+    dict of str
+        ``a``, ``b``, ``c``, ``u``, ``v``, ``normal``, ``magnitude``, ``area``,
+        ``unit_normal`` and ``reversed_normal`` (the ACB winding's N).
+
+    Examples
+    --------
+    >>> w = worked_example()
+    >>> w["normal"], w["area"], w["reversed_normal"]
+    ('(0, 0, 1)', '0.5', '(0, 0, -1)')
+    """
+    ex = WORKED_EXAMPLE
+    r = triangle_normal(ex.a, ex.b, ex.c)
+    f = r.format(precision, trim=trim)
+    flipped = triangle_normal(ex.a, ex.b, ex.c, winding="ACB").format(precision, trim=trim)
+    return {
+        "a": format_vector(ex.a, precision, trim=True),
+        "b": format_vector(ex.b, precision, trim=True),
+        "c": format_vector(ex.c, precision, trim=True),
+        "u": f["u"],
+        "v": f["v"],
+        "normal": f["normal"],
+        "magnitude": f["magnitude"],
+        "area": f["area"],
+        "unit_normal": f["unit_normal"],
+        "reversed_normal": flipped["normal"],
+    }
+
+
+def worked_example_markdown() -> str:
+    """Write the worked example as a short Markdown list, every number from trinormal.
+
+    Examples
+    --------
+    >>> print(worked_example_markdown().splitlines()[0])
+    - A = (0, 0, 0), B = (1, 0, 0), C = (0, 1, 0)
+    """
+    w = worked_example()
+    return "\n".join(
+        [
+            f"- A = {w['a']}, B = {w['b']}, C = {w['c']}",
+            f"- U = B − A = {w['u']}, V = C − A = {w['v']}",
+            f"- N = U × V = {w['normal']}, |N| = {w['magnitude']}, area = {w['area']}",
+            f"- unit normal = {w['unit_normal']}",
+            f"- the order A → C → B gives N = {w['reversed_normal']}",
+        ]
+    )
+
+
+# --------------------------------------------------------------------------- the comparison table
+
+#: The table's column headers, as the guide prints them.
+COMPARISON_HEADERS: tuple[str, str, str, str, str] = (
+    "Triangle vertices",
+    "Raw normal N",
+    "|N|",
+    "Area",
+    "Unit normal",
+)
+
+#: Decimal places the guide's table uses (with trailing zeros dropped).
+COMPARISON_TABLE_PRECISION = 4
+
+
+@dataclass(frozen=True)
+class ComparisonRow:
+    """One row of the guide's comparison table: the inputs and the published cells."""
+
+    a: Point
+    b: Point
+    c: Point
+    normal: str
+    magnitude: str
+    area: str
+    unit_normal: str
+
+
+#: The four rows as the guide publishes them (the cells are strings, as printed).
+COMPARISON_ROWS: tuple[ComparisonRow, ...] = (
+    ComparisonRow((0, 0, 0), (1, 0, 0), (0, 1, 0), "(0, 0, 1)", "1", "0.5", "(0, 0, 1)"),
+    ComparisonRow((0, 0, 0), (2, 0, 0), (0, 3, 0), "(0, 0, 6)", "6", "3", "(0, 0, 1)"),
+    ComparisonRow(
+        (1, 1, 1), (2, 1, 1), (1, 2, 2), "(0, -1, 1)", "1.4142", "0.7071", "(0, -0.7071, 0.7071)"
+    ),
+    ComparisonRow((0, 0, 0), (1, 1, 1), (2, 2, 2), "(0, 0, 0)", "0", "0", "Undefined"),
+)
+
+
+def _vertices_cell(row: ComparisonRow) -> str:
+    def point(p: Sequence[int]) -> str:
+        return "(" + ",".join(format_number(x, 0, trim=True) for x in p) + ")"
+
+    return ", ".join(point(p) for p in (row.a, row.b, row.c))
+
+
+def _row_cells(row: ComparisonRow, r: TriangleNormal, precision: int) -> list[str]:
+    f = r.format(precision, trim=True)
+    unit = f["unit_normal"]
+    if r.degenerate:  # the guide capitalises the word in its table
+        unit = unit[:1].upper() + unit[1:]
+    return [_vertices_cell(row), f["normal"], f["magnitude"], f["area"], unit]
+
+
+def comparison_table_cells(
+    precision: int = COMPARISON_TABLE_PRECISION,
+) -> list[list[str]]:
+    """Recompute the guide's comparison table: a header row, then one row per triangle.
+
+    Every number is computed by :func:`trinormal.triangle_normal` from the
+    row's vertices and formatted by :meth:`TriangleNormal.format` with
+    trailing zeros trimmed; nothing is copied from the published cells.
+
+    Examples
+    --------
+    >>> comparison_table_cells()[3]
+    ['(1,1,1), (2,1,1), (1,2,2)', '(0, -1, 1)', '1.4142', '0.7071', '(0, -0.7071, 0.7071)']
+    """
+    rows = [list(COMPARISON_HEADERS)]
+    for row in COMPARISON_ROWS:
+        rows.append(_row_cells(row, triangle_normal(row.a, row.b, row.c), precision))
+    return rows
+
+
+def comparison_table_markdown(
+    precision: int = COMPARISON_TABLE_PRECISION, escape_pipes: bool = False
+) -> str:
+    r"""Rebuild the guide's comparison table as Markdown, from the package.
+
+    Parameters
+    ----------
+    precision : int, default 4
+        Decimal places (the guide uses 4).
+    escape_pipes : bool, default False
+        Write ``|`` inside a cell as ``\|``. The guide prints the header
+        ``|N|`` unescaped, which the default reproduces character for
+        character; Markdown renderers (the site, JupyterLab) need the escaped
+        form to see five columns.
+
+    Returns
+    -------
+    str
+        The header line, the ``|---|`` line and four rows, joined by newlines.
+
+    Examples
+    --------
+    >>> comparison_table_markdown(escape_pipes=True).splitlines()[0]
+    '| Triangle vertices | Raw normal N | \\|N\\| | Area | Unit normal |'
+    """
+    cells = comparison_table_cells(precision)
+
+    def line(row: Sequence[str]) -> str:
+        if escape_pipes:
+            row = [c.replace("|", "\\|") for c in row]
+        return "| " + " | ".join(row) + " |"
+
+    lines = [line(cells[0]), "|" + "---|" * len(cells[0])]
+    lines += [line(r) for r in cells[1:]]
+    return "\n".join(lines)
+
+
+def parse_markdown_table(text: str) -> list[list[str]]:
+    r"""Read the cells of a Markdown table as the guide writes it.
+
+    Cells are separated by ``" | "`` (a pipe between spaces), so a header like
+    ``|N|`` stays one cell; ``\|`` is read as a literal pipe. The ``|---|``
+    line is skipped, as are lines that do not start with ``|``.
+
+    Examples
+    --------
+    >>> parse_markdown_table("| a | |N| |\n|---|---|\n| 1 | 2 |")
+    [['a', '|N|'], ['1', '2']]
+    """
+    rows = []
+    for raw in text.splitlines():
+        s = raw.strip().replace("\\|", "\x00")
+        if not s.startswith("|"):
+            continue
+        body = s[1:-1] if s.endswith("|") else s[1:]
+        if set(body) <= set("-|: "):
+            continue
+        rows.append([c.strip().replace("\x00", "|") for c in f" {body} ".split(" | ")])
+    return rows
+
+
+# --------------------------------------------------------------------------- precision
+
+
+@dataclass(frozen=True)
+class FloatFormat:
+    """One IEEE binary format as the guide's precision table describes it."""
+
+    name: str
+    bits: int
+    significand_bits: int
+    typical_use: str
+    implication: str
+
+    @property
+    def decimal_digits(self) -> float:
+        """Decimal digits carried by the significand: ``significand_bits · log10(2)``."""
+        return self.significand_bits * math.log10(2)
+
+    @property
+    def decimal_digits_text(self) -> str:
+        """The decimal digits in words: ``about 7`` for 7.2, ``about 15 to 16`` for 15.95.
+
+        Examples
+        --------
+        >>> [f.decimal_digits_text for f in PRECISION_FORMATS]
+        ['about 7', 'about 15 to 16']
+        """
+        x = self.decimal_digits
+        low = math.floor(x)
+        return f"about {low}" if x - low < 0.5 else f"about {low} to {low + 1}"
+
+    @property
+    def machine_epsilon(self) -> float:
+        """The gap between 1 and the next number, ``2**(1 − significand_bits)``."""
+        return 2.0 ** (1 - self.significand_bits)
+
+
+def _significand_bits(code: str) -> int:
+    """Significand precision of a ``struct`` float format, found by testing 1 + 2**-k."""
+    k = 1
+    while struct.unpack(code, struct.pack(code, 1.0 + 2.0**-k))[0] != 1.0:
+        k += 1
+    return k
+
+
+#: The two formats in the guide's precision table; the bit counts are measured, not typed.
+PRECISION_FORMATS: tuple[FloatFormat, ...] = (
+    FloatFormat(
+        "32-bit float",
+        32,
+        _significand_bits("f"),
+        "real-time graphics: games and GPU shaders",
+        "fast, but rounding error grows for small triangles far from the origin",
+    ),
+    FloatFormat(
+        "64-bit double",
+        64,
+        _significand_bits("d"),
+        "engineering: CAD, simulation and science",
+        "much steadier for tiny areas, large scenes and repeated transformations",
+    ),
+)
+
+
+def precision_table_markdown() -> str:
+    """Rebuild the guide's precision table as Markdown, the significand bits measured here.
+
+    Examples
+    --------
+    >>> precision_table_markdown().splitlines()[2].split(" | ")[:3]
+    ['| 32-bit float', '24 binary digits', 'About 7 decimal digits']
+    """
+    lines = [
+        "| Numeric format | Significand precision | Approximate decimal digits "
+        "| Machine epsilon | Typical geometry use | Practical implication for normals |",
+        "|---|---|---|---|---|---|",
+    ]
+    for f in PRECISION_FORMATS:
+        eps = format_number(f.machine_epsilon, 4)
+        digits = f.decimal_digits_text
+        lines.append(
+            f"| {f.name} | {f.significand_bits} binary digits | "
+            f"{digits[:1].upper()}{digits[1:]} decimal digits | {eps} | "
+            f"{f.typical_use[:1].upper()}{f.typical_use[1:]} | "
+            f"{f.implication[:1].upper()}{f.implication[1:]} |"
+        )
+    return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------- mistakes
+
+#: The guide's five common mistakes, in our words: (short name, what goes wrong).
+MISTAKES: tuple[tuple[str, str], ...] = (
+    (
+        "wrong subtraction order",
+        "Computing A − B instead of B − A, or swapping the edges, flips the sign of N.",
+    ),
+    (
+        "dot instead of cross",
+        "U · V is a single number about the angle between the edges, not a vector "
+        "perpendicular to them.",
+    ),
+    (
+        "normalizing a zero-area triangle",
+        "Collinear or coincident points give N = 0, and 0 / 0 has no direction.",
+    ),
+    (
+        "normalizing too early",
+        "The length of N is twice the area; dividing it away before averaging "
+        "gives tiny faces as much say as large ones.",
+    ),
+    (
+        "a 2D triangle without a third coordinate",
+        "A flat triangle needs z = 0 added before a cross product exists; its normal "
+        "then points along ±z, the sign set by the winding.",
+    ),
+)
