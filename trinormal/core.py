@@ -16,10 +16,10 @@ from __future__ import annotations
 import math
 import re
 import struct
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from decimal import Decimal
-from enum import Enum
+from enum import StrEnum
 from fractions import Fraction
 from functools import cached_property
 from numbers import Integral, Real
@@ -48,7 +48,7 @@ AXES = "xyz"
 MAX_DECIMAL_EXPONENT = 9999
 
 
-class Winding(str, Enum):
+class Winding(StrEnum):
     """Vertex order: which way round the triangle is traversed.
 
     ``ABC`` uses U = B − A and V = C − A; ``ACB`` swaps the two edges, which
@@ -253,7 +253,7 @@ _WINDINGS = {"ABC": Winding.ABC, "ACB": Winding.ACB}
 
 def _check_winding(winding: object) -> Winding:
     try:
-        return Winding(winding)
+        return Winding(str(winding)) if isinstance(winding, str) else Winding(winding)  # type: ignore[arg-type]
     except ValueError:
         raise ValueError(
             f"winding must be 'ABC' or 'ACB' (or a Winding), got {winding!r}"
@@ -406,7 +406,7 @@ class TriangleNormal:
 
     @property
     def sine(self) -> float:
-        """Sine of the angle between U and V, |N| / (|U| |V|), exact for the input (0.0 if an edge is zero).
+        """Sine of the angle between U and V: |N| / (|U| |V|), 0.0 if an edge is zero.
 
         Examples
         --------
@@ -686,8 +686,9 @@ def triangle_normal(
 
     Decimal strings are exact, so these points are exactly collinear:
 
-    >>> triangle_normal(("0", "0", "0"), ("0.1", "0.2", "0.3"), ("0.3", "0.6", "0.9"), tol=0).degenerate
-    True
+    >>> r = triangle_normal(("0", "0", "0"), ("0.1", "0.2", "0.3"), ("0.3", "0.6", "0.9"), tol=0)
+    >>> r.degenerate, r.normal
+    (True, (0.0, 0.0, 0.0))
 
     Bad input names the vertex and the axis:
 
@@ -696,6 +697,17 @@ def triangle_normal(
     ...
     ValueError: B.y is NaN
     """
+    if (
+        arithmetic == "exact"
+        and tol is DEFAULT_TOL
+        and (winding == "ABC" or winding == "ACB")
+        and type(a) in _SEQ
+        and type(b) in _SEQ
+        and type(c) in _SEQ
+    ):
+        r = _fast_exact(a, b, c, winding == "ABC")  # type: ignore[arg-type]
+        if r is not None:
+            return r
     fast = _fast_ratios(a, b, c)
     if fast is None:
         coords = _parse_vertex(a, "A") + _parse_vertex(b, "B") + _parse_vertex(c, "C")
@@ -712,6 +724,79 @@ def triangle_normal(
     if arithmetic in ("float64", "float32"):
         return _floating(coords, w, tn, td, arithmetic)
     raise ValueError(f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {arithmetic!r}")
+
+
+_SEQ = (tuple, list)
+_TN, _TD = DEFAULT_TOL.as_integer_ratio()
+_tn_sq, _td_sq = _TN * _TN, _TD * _TD
+
+
+def _fast_exact(
+    a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], abc: bool
+) -> TriangleNormal | None:
+    """Compute the exact path for plain tuples/lists of floats and ints, with the default tol.
+
+    Returns None (and the careful path takes over) for anything else: other
+    types, NaN or infinities, wrong lengths, results beyond the float range.
+    This is the same arithmetic as :func:`_exact`, written out in one function
+    because most calls look like this and Python function calls are not free.
+    """
+    if len(a) != 3 or len(b) != 3 or len(c) != 3:
+        return None
+    vals = (*a, *b, *c)
+    if not _PLAIN.issuperset(map(type, vals)):
+        return None
+    try:
+        ratios = [x.as_integer_ratio() for x in vals]
+    except (ValueError, OverflowError):  # NaN or an infinity
+        return None
+    D = max([d for _, d in ratios])
+    top = D.bit_length()
+    ints = tuple([n << (top - d.bit_length()) for n, d in ratios])
+    ax, ay, az, bx, by, bz, cx, cy, cz = ints
+    if abc:
+        ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
+    else:
+        ux, uy, uz, vx, vy, vz = cx - ax, cy - ay, cz - az, bx - ax, by - ay, bz - az
+    nx = uy * vz - uz * vy
+    ny = uz * vx - ux * vz
+    nz = ux * vy - uy * vx
+    S = nx * nx + ny * ny + nz * nz
+    uu = ux * ux + uy * uy + uz * uz
+    if S * _td_sq <= _tn_sq * uu * (vx * vx + vy * vy + vz * vz):
+        return None  # degenerate: the careful path explains why
+    D2 = D * D
+    k = max(0, 67 - (S.bit_length() >> 1))
+    r = math.isqrt(S << (k << 1))
+    scale = D2 << k
+    try:
+        unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)
+        res = object.__new__(TriangleNormal)
+        object.__setattr__(
+            res,
+            "__dict__",
+            {
+                "a": (float(a[0]), float(a[1]), float(a[2])),
+                "b": (float(b[0]), float(b[1]), float(b[2])),
+                "c": (float(c[0]), float(c[1]), float(c[2])),
+                "winding": Winding.ABC if abc else Winding.ACB,
+                "u": (ux / D, uy / D, uz / D),
+                "v": (vx / D, vy / D, vz / D),
+                "normal": (nx / D2, ny / D2, nz / D2),
+                "magnitude": r / scale,
+                "area": r / (scale << 1),
+                "unit_normal": unit,
+                "degenerate": False,
+                "plane": Plane(unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D)),
+                "reason": "",
+                "arithmetic": "exact",
+                "tol": DEFAULT_TOL,
+                "_state": _State(ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S),
+            },
+        )
+    except OverflowError:  # an int or a result beyond the float range
+        return None
+    return res
 
 
 def _exact(
@@ -773,8 +858,9 @@ def _exact(
 
 
 _FIELDS = (
-    "a b c winding u v normal magnitude area unit_normal degenerate plane reason arithmetic tol _state"
-).split()
+    *("a", "b", "c", "winding", "u", "v", "normal", "magnitude", "area", "unit_normal"),
+    *("degenerate", "plane", "reason", "arithmetic", "tol", "_state"),
+)
 
 
 def _make(*values: Any) -> TriangleNormal:
@@ -794,7 +880,7 @@ _DEFAULT_TOL_RATIO = DEFAULT_TOL.as_integer_ratio()
 def _floating(
     coords: list[tuple[int, int]], w: Winding, tn: int, td: int, fmt: str
 ) -> TriangleNormal:
-    """The textbook formula, every operation rounded in float64 or float32."""
+    """Evaluate the textbook formula with every operation rounded in float64 or float32."""
     if fmt == "float32":
         rnd = _f32
         vals = [_ratio_to_f32(n, d) for n, d in coords]
@@ -824,7 +910,8 @@ def _floating(
     for q, name in ((u, "U"), (v, "V"), (n, "N")):
         if not all(math.isfinite(x) for x in q):
             raise OverflowError(
-                f"{name} overflows the {fmt} range ({limit}) for these points; use arithmetic='exact'"
+                f"{name} overflows the {fmt} range ({limit}) for these points; "
+                "use arithmetic='exact'"
             )
     degenerate = _degenerate_floats(u, v, n, tn, td)
     # |N| in this format, scaled by a power of two so squares neither overflow nor underflow
@@ -877,7 +964,7 @@ def _ldexp(x: float, e: int) -> float:
 
 
 def _degenerate_floats(u: Vec3, v: Vec3, n: Vec3, tn: int, td: int) -> bool:
-    """The sine test on float-computed U, V and N, evaluated exactly."""
+    """Apply the sine test to float-computed U, V and N, evaluated exactly."""
     uv, D = _common([x.as_integer_ratio() for x in (*u, *v)])
     ni, Dn = _common([x.as_integer_ratio() for x in n])
     uu = sum(i * i for i in uv[0:3])

@@ -55,7 +55,7 @@ def _decimal_exponent(num: int, den: int) -> int:
     e = math.floor((num.bit_length() - den.bit_length()) * math.log10(2) / 2)
 
     def at_least(e: int) -> bool:  # sqrt(num/den) >= 10**e  <=>  num >= den * 100**e
-        return num >= den * 100**e if e >= 0 else num * 100 ** (-e) >= den
+        return bool(num >= den * 100**e if e >= 0 else num * 100 ** (-e) >= den)
 
     while not at_least(e):
         e -= 1
@@ -210,3 +210,87 @@ def plane_equation(parts: tuple[str, str, str], offset: str) -> str:
         else:
             out += f" + {text}{axis}"
     return f"{out} = {offset}"
+
+
+# --------------------------------------------------------------------------- exact text
+
+
+def exact_text(q: Fraction | int) -> str:
+    """Write an exact rational the way a person would: ``3``, ``-0.15`` or ``1/3``.
+
+    A value with a short terminating decimal expansion is written as a decimal,
+    any other as a fraction.
+
+    Examples
+    --------
+    >>> exact_text(Fraction(3, 20)), exact_text(Fraction(-1, 3)), exact_text(6)
+    ('0.15', '-1/3', '6')
+    """
+    q = Fraction(q)
+    n, d = q.numerator, q.denominator
+    if d == 1:
+        return str(n)
+    twos = (d & -d).bit_length() - 1
+    rest, fives = d >> twos, 0
+    while rest % 5 == 0:
+        rest //= 5
+        fives += 1
+    places = max(twos, fives)
+    if rest == 1 and places <= 20:
+        digits = str(abs(n) * 10**places // d).rjust(places + 1, "0")
+        return ("-" if n < 0 else "") + f"{digits[:-places]}.{digits[-places:]}"
+    return f"{n}/{d}"
+
+
+def _square_split(m: int) -> tuple[int, int]:
+    """Split ``m > 0`` as ``k*k*rest``, pulling out square factors found by trial division."""
+    k = 1
+    p = 2
+    while p * p <= m and p < 10_000:
+        while m % (p * p) == 0:
+            m //= p * p
+            k *= p
+        p += 1 if p == 2 else 2
+    r = math.isqrt(m)
+    if r * r == m:
+        return k * r, 1
+    return k, m
+
+
+def radical(q: Fraction) -> tuple[Fraction, int]:
+    """Write ``sqrt(q)`` as ``c * sqrt(m)`` with ``c`` rational and ``m`` free of small squares.
+
+    Examples
+    --------
+    >>> radical(Fraction(1, 2))
+    (Fraction(1, 2), 2)
+    >>> radical(Fraction(8))
+    (Fraction(2, 1), 2)
+    >>> radical(Fraction(9, 4))
+    (Fraction(3, 2), 1)
+    """
+    if q < 0:
+        raise ValueError("radical() takes a non-negative number")
+    if q == 0:
+        return Fraction(0), 1
+    # sqrt(p/r) = sqrt(p*r) / r
+    k, m = _square_split(q.numerator * q.denominator)
+    return Fraction(k, q.denominator), m
+
+
+def radical_text(c: Fraction, m: int) -> str:
+    """Write ``c * sqrt(m)`` as sympy prints it: ``√2/2``, ``-3√5/10``, ``1/3``.
+
+    Examples
+    --------
+    >>> radical_text(Fraction(1, 2), 2), radical_text(Fraction(-3, 10), 5)
+    ('√2/2', '-3√5/10')
+    >>> radical_text(Fraction(1, 3), 1)
+    '1/3'
+    """
+    if m == 1 or c == 0:
+        return exact_text(c)
+    n, d = c.numerator, c.denominator
+    sign = "-" if n < 0 else ""
+    coeff = "" if abs(n) == 1 else str(abs(n))
+    return f"{sign}{coeff}√{m}" + ("" if d == 1 else f"/{d}")

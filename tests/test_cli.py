@@ -1,0 +1,133 @@
+"""The command line calculator, run as a user runs it: through a subprocess."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from trinormal import triangle_normal
+from trinormal.cli import main
+
+
+def run(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "trinormal", *args], capture_output=True, text=True, timeout=60
+    )
+
+
+def test_worked_example_table():
+    p = run("0,0,0", "1,0,0", "0,1,0")
+    assert p.returncode == 0, p.stderr
+    lines = p.stdout.splitlines()
+    assert lines[0].split() == [
+        "A,",
+        "B,",
+        "C",
+        "(0,",
+        "0,",
+        "0)",
+        "(1,",
+        "0,",
+        "0)",
+        "(0,",
+        "1,",
+        "0)",
+    ]
+    assert "N = U × V      (0.0000, 0.0000, 1.0000)" in lines
+    assert "area = |N|/2   0.5000" in lines
+    assert "unit normal    (0.0000, 0.0000, 1.0000)" in lines
+    assert p.stderr == ""
+
+
+def test_negative_coordinates_need_no_double_dash():
+    p = run("-1,2,3", "0,0,0", "1,1,1", "--precision", "3")
+    assert p.returncode == 0, p.stderr
+    expected = triangle_normal(("-1", "2", "3"), (0, 0, 0), (1, 1, 1)).format(3)
+    assert f"N = U × V      {expected['normal']}" in p.stdout
+    assert f"plane          {expected['plane']}" in p.stdout
+
+
+def test_winding_flips():
+    p = run("0,0,0", "1,0,0", "0,1,0", "--winding", "ACB")
+    assert "(0.0000, 0.0000, -1.0000)" in p.stdout
+    assert "A→C→B" in p.stdout
+
+
+def test_json_has_every_field_and_exact_strings():
+    p = run("0,0,0", "0.1,0,0", "0,1/3,0", "--json")
+    assert p.returncode == 0
+    data = json.loads(p.stdout)
+    for key in ("a", "b", "c", "u", "v", "normal", "magnitude", "area", "unit_normal", "plane"):
+        assert key in data
+    assert data["exact"]["normal"] == ["0", "0", "1/30"]
+    assert data["exact"]["b"] == ["1/10", "0", "0"]
+    assert data["normal"][2] == 1 / 30
+    assert data["degenerate"] is False
+    assert data["formatted"]["area"] == "0.0167"
+
+
+def test_json_non_finite_as_strings():
+    data = json.loads(run("0,0,0", "1e300,0,0", "0,1e300,0", "--json").stdout)
+    assert data["normal"][2] == "inf" and data["magnitude"] == "inf"
+    assert data["unit_normal"] == [0.0, 0.0, 1.0]
+    assert data["formatted"]["magnitude"] == "1.0000e+600"
+
+
+def test_steps_use_the_users_numbers():
+    p = run("1,1,1", "2,1,1", "1,2,2", "--steps")
+    assert p.returncode == 0
+    assert "U = B − A = (2 − 1, 1 − 1, 1 − 1) = (1, 0, 0)" in p.stdout
+    assert "Ny = Uz·Vx − Ux·Vz = 0·0 − 1·1 = -1" in p.stdout
+    assert "|N| = √2 ≈ 1.4142" in p.stdout
+    assert "n̂ = N / |N| = (0, -√2/2, √2/2) ≈ (0.0000, -0.7071, 0.7071)" in p.stdout
+
+
+def test_degenerate_is_an_answer():
+    p = run("0,0,0", "0.1,0.2,0.3", "0.3,0.6,0.9")
+    assert p.returncode == 0
+    assert "unit normal    undefined" in p.stdout
+    assert "collinear" in p.stdout
+    p = run("0,0,0", "0.1,0.2,0.3", "0.3,0.6,0.9", "--steps")
+    assert p.returncode == 0 and "n̂ = undefined" in p.stdout
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["0,0,0", "1,nan,0", "0,1,0"], "B.y is NaN"),
+        (["0,0,0", "1,0", "0,1,0"], "B has 2 coordinates, expected 3"),
+        (["0,0,0", "1,0,0", "0,abc,0"], "C.y = 'abc' is not a number"),
+        (["0,0,0", "1,0,0", "0,1/0,0"], "C.y = '1/0' divides by zero"),
+        (["0,0,0", "1,0,0"], "expected three points"),
+        (["0,0,0", "1,0,0", "0,1,0", "--winding", "XYZ"], "invalid choice"),
+        (["0,0,0", "1,0,0", "0,1,0", "--precision", "16"], "--precision must be from 0 to 15"),
+        (["0,0,0", "1,0,0", "0,1,0", "--precision", "two"], "--precision must be a whole number"),
+        (["0,0,0", "1,0,0", "0,1,0", "--tol", "-1"], "tol must be >= 0"),
+        (["0,0,0", "1,0,0", "0,1,0", "--bogus"], "unrecognized arguments"),
+        (["0,0,0", "1e39,0,0", "0,1,0", "--arithmetic", "float32"], "outside the float32 range"),
+    ],
+)
+def test_bad_input_exits_2_with_one_line(args, message):
+    p = run(*args)
+    assert p.returncode == 2
+    assert p.stdout == ""
+    lines = p.stderr.splitlines()
+    assert len(lines) == 1, p.stderr
+    assert lines[0].startswith("trinormal: error: ")
+    assert message in lines[0]
+    assert "Traceback" not in p.stderr
+
+
+def test_console_script_and_in_process_main(capsys):
+    assert main(["0,0,0", "2,0,0", "0,3,0", "--precision", "0"]) == 0
+    out = capsys.readouterr().out
+    assert "area = |N|/2   3" in out
+    p = subprocess.run(
+        [sys.executable, "-c", "from trinormal.cli import main; raise SystemExit(main(['-h']))"],
+        capture_output=True,
+        text=True,
+    )
+    assert "usage: trinormal" in p.stdout

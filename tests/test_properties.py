@@ -1,0 +1,83 @@
+"""Properties of the cross product that must hold exactly, for random exact inputs."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from trinormal import triangle_normal
+
+coord = st.fractions(min_value=-1000, max_value=1000, max_denominator=1000)
+point = st.tuples(coord, coord, coord)
+scale = st.fractions(min_value=-50, max_value=50, max_denominator=50)
+
+
+def dot(p, q):
+    return sum((x * y for x, y in zip(p, q, strict=True)), Fraction(0))
+
+
+@given(point, point, point)
+def test_normal_is_orthogonal_to_both_edges(a, b, c):
+    e = triangle_normal(a, b, c).exact
+    assert dot(e.normal, e.u) == 0
+    assert dot(e.normal, e.v) == 0
+
+
+@given(point, point, point)
+def test_lagrange_identity(a, b, c):
+    e = triangle_normal(a, b, c).exact
+    assert e.magnitude_squared == dot(e.u, e.u) * dot(e.v, e.v) - dot(e.u, e.v) ** 2
+
+
+@given(point, point, point)
+def test_acb_flips_n(a, b, c):
+    r = triangle_normal(a, b, c)
+    f = triangle_normal(a, b, c, winding="ACB")
+    assert f.exact.normal == tuple(-x for x in r.exact.normal)
+    assert f.normal == tuple(-x for x in r.normal)
+    assert f.degenerate == r.degenerate
+
+
+@given(point, point, point, point)
+def test_translation_invariance(a, b, c, t):
+    def shift(p):
+        return tuple(x + y for x, y in zip(p, t, strict=True))
+
+    r = triangle_normal(a, b, c)
+    s = triangle_normal(shift(a), shift(b), shift(c))
+    assert s.exact.normal == r.exact.normal
+    assert s.degenerate == r.degenerate
+
+
+@given(point, point, point, scale)
+def test_scaling_scales_n_by_s_squared(a, b, c, s):
+    def mul(p):
+        return tuple(s * x for x in p)
+
+    r = triangle_normal(a, b, c)
+    m = triangle_normal(mul(a), mul(b), mul(c))
+    assert m.exact.normal == tuple(s * s * x for x in r.exact.normal)
+    if s != 0:
+        assert m.degenerate == r.degenerate  # the sine test does not depend on scale
+
+
+@settings(max_examples=300)
+@given(point, point, point)
+def test_unit_normal_has_length_one(a, b, c):
+    r = triangle_normal(a, b, c)
+    if r.degenerate:
+        assert r.unit_normal is None and r.plane is None
+        return
+    assert r.unit_normal is not None
+    length = math.fsum(x * x for x in r.unit_normal)
+    # each component within 2 ulp of exact: |n|² = 1 within a few units of 2**-52
+    assert abs(length - 1.0) <= 8 * 2.0**-52
+
+
+@given(point, point, point)
+def test_strings_read_like_fractions(a, b, c):
+    as_text = [tuple(f"{x.numerator}/{x.denominator}" for x in p) for p in (a, b, c)]
+    assert triangle_normal(*as_text).exact == triangle_normal(a, b, c).exact

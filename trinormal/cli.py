@@ -1,0 +1,283 @@
+"""The command line calculator: ``trinormal A B C``.
+
+Points are written ``x,y,z`` and read exactly (``0.1`` is one tenth, ``1/3`` a
+third). Negative coordinates need no ``--``::
+
+    trinormal -1,2,3 0,0,0 1,1,1 --precision 3
+    trinormal 0,0,0 1,0,0 0,1,0 --steps
+    trinormal 0,0,0 1,0,0 0,1,0 --json
+
+A degenerate triangle is an answer (exit status 0). Bad input prints one line
+naming the vertex and axis and exits with status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Sequence
+from fractions import Fraction
+from typing import NoReturn
+
+from trinormal.core import ARITHMETICS, TriangleNormal, Winding, triangle_normal
+from trinormal.display import MAX_PRECISION, exact_text, format_surd, radical, radical_text
+from trinormal.tolerances import DEFAULT_TOL
+
+__all__ = ["main", "steps"]
+
+_VALUE_OPTIONS = {"--winding", "--precision", "--tol", "--arithmetic"}
+
+
+class _UsageError(Exception):
+    pass
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> NoReturn:
+        raise _UsageError(message)
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = _Parser(
+        prog="trinormal",
+        description="The normal of the triangle ABC, computed exactly: edges U and V, "
+        "N = U × V, |N|, the area, the unit normal and the plane.",
+        epilog="Points are x,y,z with decimals (0.1, -2.5e3) or fractions (1/3), read exactly. "
+        "Example: trinormal 0,0,0 1,0,0 0,1,0 --steps",
+    )
+    p.add_argument("points", nargs="*", metavar="POINT", help="A, B and C, each as x,y,z")
+    p.add_argument(
+        "--winding",
+        default="ABC",
+        choices=[w.value for w in Winding],
+        help="ABC: U = B − A, V = C − A (default); ACB swaps U and V and flips N",
+    )
+    p.add_argument("--precision", default="4", help="decimal places, 0 to 15 (default 4)")
+    p.add_argument(
+        "--tol",
+        default=None,
+        help="degeneracy threshold on the sine of the angle between U and V "
+        f"(default {DEFAULT_TOL})",
+    )
+    p.add_argument(
+        "--arithmetic",
+        default="exact",
+        choices=ARITHMETICS,
+        help="exact (default), or the textbook formula in float64 or float32",
+    )
+    out = p.add_mutually_exclusive_group()
+    out.add_argument(
+        "--json", action="store_true", help="every field as JSON, exact values as strings"
+    )
+    out.add_argument("--steps", action="store_true", help="the working, with your own numbers")
+    return p
+
+
+def _split_argv(argv: Sequence[str]) -> tuple[list[str], list[str]]:
+    """Separate points (tokens with commas) from options, so ``-1,2,3`` is not an option."""
+    options: list[str] = []
+    points: list[str] = []
+    take_value = False
+    for tok in argv:
+        if take_value:
+            options.append(tok)
+            take_value = False
+        elif tok in _VALUE_OPTIONS:
+            options.append(tok)
+            take_value = True
+        elif "," in tok and not tok.startswith("--"):
+            points.append(tok)
+        else:
+            options.append(tok)
+    return options, points
+
+
+def _read_point(text: str, vertex: str) -> list[str]:
+    parts = [part.strip() for part in text.split(",")]
+    if len(parts) != 3:
+        raise ValueError(f"{vertex} has {len(parts)} coordinates, expected 3 (write it as x,y,z)")
+    return parts
+
+
+def _precision(text: str) -> int:
+    try:
+        p = int(text)
+    except ValueError:
+        raise ValueError(f"--precision must be a whole number from 0 to 15, got {text!r}") from None
+    if not 0 <= p <= MAX_PRECISION:
+        raise ValueError(f"--precision must be from 0 to {MAX_PRECISION}, got {p}")
+    return p
+
+
+# --------------------------------------------------------------------------- output
+
+
+def _vec(xs: Sequence[Fraction]) -> str:
+    return "(" + ", ".join(exact_text(x) for x in xs) + ")"
+
+
+def _term(q: Fraction) -> str:
+    """Write a number inside a formula: negative values and fractions in parentheses."""
+    text = exact_text(q)
+    return f"({text})" if q < 0 or "/" in text else text
+
+
+def steps(r: TriangleNormal, precision: int = 4) -> list[tuple[str, str]]:
+    """Write out the working for a result, step by step, with exact numbers.
+
+    Every value is exact: rationals as decimals or fractions, and |N|, the unit
+    normal and the plane offset as radicals (``√2/2``), followed by a rounded
+    decimal where the value is irrational.
+
+    Parameters
+    ----------
+    r : TriangleNormal
+        A result from :func:`trinormal.triangle_normal`.
+    precision : int, default 4
+        Decimal places for the rounded decimals.
+
+    Returns
+    -------
+    list of (str, str)
+        ``(label, working)`` pairs.
+
+    Examples
+    --------
+    >>> r = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    >>> for label, text in steps(r):
+    ...     print(f"{label} = {text}")
+    U = B − A = (2 − 1, 1 − 1, 1 − 1) = (1, 0, 0)
+    V = C − A = (1 − 1, 2 − 1, 2 − 1) = (0, 1, 1)
+    Nx = Uy·Vz − Uz·Vy = 0·1 − 0·1 = 0
+    Ny = Uz·Vx − Ux·Vz = 0·0 − 1·1 = -1
+    Nz = Ux·Vy − Uy·Vx = 1·1 − 0·0 = 1
+    N = (0, -1, 1)
+    |N|² = Nx² + Ny² + Nz² = 2
+    |N| = √2 ≈ 1.4142
+    area = |N| / 2 = √2/2 ≈ 0.7071
+    n̂ = N / |N| = (0, -√2/2, √2/2) ≈ (0.0000, -0.7071, 0.7071)
+    plane = n̂ · X = n̂ · A, so d = 0
+    """
+    e = r.exact
+    first, second = ("B", "C") if r.winding is Winding.ABC else ("C", "B")
+    p_first, p_second = (e.b, e.c) if r.winding is Winding.ABC else (e.c, e.b)
+    out: list[tuple[str, str]] = []
+    for name, vertex, p, vec in (("U", first, p_first, e.u), ("V", second, p_second, e.v)):
+        diffs = ", ".join(f"{_term(x)} − {_term(y)}" for x, y in zip(p, e.a, strict=True))
+        out.append((name, f"{vertex} − A = ({diffs}) = {_vec(vec)}"))
+    (ux, uy, uz), (vx, vy, vz) = e.u, e.v
+    t = _term
+    nx, ny, nz = (exact_text(x) for x in e.normal)
+    out.append(("Nx", f"Uy·Vz − Uz·Vy = {t(uy)}·{t(vz)} − {t(uz)}·{t(vy)} = {nx}"))
+    out.append(("Ny", f"Uz·Vx − Ux·Vz = {t(uz)}·{t(vx)} − {t(ux)}·{t(vz)} = {ny}"))
+    out.append(("Nz", f"Ux·Vy − Uy·Vx = {t(ux)}·{t(vy)} − {t(uy)}·{t(vx)} = {nz}"))
+    out.append(("N", _vec(e.normal)))
+    m2 = e.magnitude_squared
+    out.append(("|N|²", f"Nx² + Ny² + Nz² = {exact_text(m2)}"))
+
+    def approx(neg: bool, q: Fraction) -> str:
+        return format_surd(neg, q.numerator, q.denominator, precision)
+
+    c, m = radical(m2)
+    mag = radical_text(c, m)
+    suffix = "" if m == 1 else f" ≈ {approx(False, m2)}"
+    out.append(("|N|", f"{mag}{suffix}"))
+    area = radical_text(c / 2, m)
+    suffix = "" if m == 1 else f" ≈ {approx(False, m2 / 4)}"
+    out.append(("area", f"|N| / 2 = {area}{suffix}"))
+    if r.degenerate:
+        out.append(("n̂", f"undefined. Degenerate: {r.reason}"))
+        return out
+    # n_i = N_i / (c √m) = (N_i / (c m)) √m
+    unit = [radical_text(x / (c * m), m) for x in e.normal]
+    unit_text = "(" + ", ".join(unit) + ")"
+    if m != 1:
+        rounded = ", ".join(approx(x < 0, x * x / m2) for x in e.normal)
+        unit_text += f" ≈ ({rounded})"
+    out.append(("n̂", f"N / |N| = {unit_text}"))
+    dot = sum((x * y for x, y in zip(e.normal, e.a, strict=True)), Fraction(0))
+    d_text = radical_text(dot / (c * m), m)
+    if m != 1 and dot != 0:
+        d_text += f" ≈ {approx(dot < 0, dot * dot / m2)}"
+    out.append(("plane", f"n̂ · X = n̂ · A, so d = {d_text}"))
+    return out
+
+
+def _table(r: TriangleNormal, points: Sequence[str], precision: int) -> str:
+    f = r.format(precision)
+    u_label, v_label = ("B − A", "C − A") if r.winding is Winding.ABC else ("C − A", "B − A")
+    rows = [
+        ("A, B, C", "   ".join("(" + ", ".join(_read_point(p, "?")) + ")" for p in points)),
+        ("winding", r.winding.label + ("" if r.arithmetic == "exact" else f"   ({r.arithmetic})")),
+        (f"U = {u_label}", f["u"]),
+        (f"V = {v_label}", f["v"]),
+        ("N = U × V", f["normal"]),
+        ("|N|", f["magnitude"]),
+        ("area = |N|/2", f["area"]),
+        ("unit normal", f["unit_normal"]),
+        ("plane", f["plane"]),
+    ]
+    width = max(len(label) for label, _ in rows)
+    lines = [f"{label.ljust(width)}   {value}" for label, value in rows]
+    lines.append(f["status"])
+    return "\n".join(lines)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line calculator; return the exit status.
+
+    Examples
+    --------
+    >>> main(["0,0,0", "1,0,0", "0,1,0", "--precision", "2"])
+    A, B, C        (0, 0, 0)   (1, 0, 0)   (0, 1, 0)
+    winding        A→B→C
+    U = B − A      (1.00, 0.00, 0.00)
+    V = C − A      (0.00, 1.00, 0.00)
+    N = U × V      (0.00, 0.00, 1.00)
+    |N|            1.00
+    area = |N|/2   0.50
+    unit normal    (0.00, 0.00, 1.00)
+    plane          0.00x + 0.00y + 1.00z = 0.00
+    A proper triangle: the unit normal is defined.
+    0
+    """
+    args_in = list(sys.argv[1:] if argv is None else argv)
+    options, points = _split_argv(args_in)
+    try:
+        args = _parser().parse_args(options)
+        points = points + list(args.points)
+        if len(points) != 3:
+            raise ValueError(
+                f"expected three points A B C written as x,y,z (like 0,0,0 1,0,0 0,1,0), "
+                f"got {len(points)}"
+            )
+        a, b, c = (_read_point(p, v) for p, v in zip(points, "ABC", strict=True))
+        precision = _precision(args.precision)
+        tol = DEFAULT_TOL if args.tol is None else args.tol
+        r = triangle_normal(a, b, c, winding=args.winding, tol=tol, arithmetic=args.arithmetic)
+        if args.json:
+            data = r.to_dict()
+            data["precision"] = precision
+            data["formatted"] = r.format(precision)
+            text = json.dumps(data, indent=2, ensure_ascii=False)
+        elif args.steps:
+            lines = [f"A = {_vec(r.exact.a)}, B = {_vec(r.exact.b)}, C = {_vec(r.exact.c)}"]
+            lines.append(f"winding {r.winding.label}")
+            if r.arithmetic != "exact":
+                lines.append(
+                    f"(the working is exact; --arithmetic {r.arithmetic} affects the table)"
+                )
+            lines += [f"{label} = {work}" for label, work in steps(r, precision)]
+            text = "\n".join(lines)
+        else:
+            text = _table(r, points, precision)
+    except (_UsageError, ValueError, TypeError, OverflowError) as exc:
+        print(f"trinormal: error: {exc}", file=sys.stderr)
+        return 2
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
