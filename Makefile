@@ -41,7 +41,7 @@ types: env
 	$(RUN) mypy
 
 unit: env
-	$(RUN) pytest tests trinormal --ignore=tests/browser -q
+	$(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q
 
 nbval: env
 	$(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg -p no:doctest notebooks -q
