@@ -9,12 +9,20 @@ in ``fig.alt_text``.
 from __future__ import annotations
 
 import io
-from typing import TYPE_CHECKING
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["AXIS_COLORS", "FACECOLOR", "PALETTE", "show"]
+__all__ = [
+    "AXIS_COLORS",
+    "FACECOLOR",
+    "PALETTE",
+    "component_bar_chart",
+    "right_hand_rule_figure",
+    "show",
+]
 
 #: Okabe–Ito colour-blind-safe palette.
 PALETTE: dict[str, str] = {
@@ -59,3 +67,201 @@ def show(fig: Figure, alt: str | None = None) -> None:
     fig.savefig(buf, format="png", dpi=100, facecolor=fig.get_facecolor())
     plt.close(fig)
     display(Image(data=buf.getvalue(), format="png", alt=text))
+
+
+# --------------------------------------------------------------------------- right-hand rule, bars
+
+
+def _fmt_vec(xs: Any) -> str:
+    from trinormal.display import format_vector
+
+    return format_vector(xs, 4, trim=True)
+
+
+def right_hand_rule_figure(
+    a: Sequence[Any],
+    b: Sequence[Any],
+    c: Sequence[Any],
+    winding: str = "ABC",
+    *,
+    title: str | None = None,
+) -> Figure:
+    """Draw a triangle in 3D with its edges U, V and its normal N, on equal axis scales.
+
+    U and V start at A; a curved arrow turns from U towards V, the way the
+    fingers of a right hand curl, and N (drawn from the centroid, with the
+    length of the mean edge so it stays on screen) points where the thumb does.
+
+    Parameters
+    ----------
+    a, b, c : sequence of 3 numbers
+        The vertices (anything :func:`trinormal.triangle_normal` reads).
+    winding : {"ABC", "ACB"}, default "ABC"
+        Which edge is U and which is V.
+    title : str, optional
+        Figure title; by default the winding and N.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        6 × 5.5 inches, white, with ``fig.alt_text`` describing it.
+
+    Examples
+    --------
+    >>> fig = right_hand_rule_figure((0, 0, 0), (1, 0, 0), (0, 1, 0))
+    >>> fig.alt_text.split(". ")[1]
+    'The normal N = (0, 0, 1) points along +z.'
+    """
+    import math
+
+    import mpl_toolkits.mplot3d  # noqa: F401  (registers the 3d projection)
+    from matplotlib.figure import Figure
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    from trinormal.core import triangle_normal
+
+    r = triangle_normal(a, b, c, winding=winding)
+    A, B, C = r.a, r.b, r.c
+    u, v = r.u, r.v
+    first, second = ("B", "C") if r.winding.value == "ABC" else ("C", "B")
+    fig = Figure(figsize=(6, 5.5), facecolor=FACECOLOR)
+    ax = fig.add_subplot(projection="3d")
+    ax.set_facecolor(FACECOLOR)
+    ax.add_collection3d(
+        Poly3DCollection(
+            [[A, B, C]], facecolor=PALETTE["sky"], edgecolor=PALETTE["black"], alpha=0.35
+        )
+    )
+    for name, p in zip("ABC", (A, B, C), strict=True):
+        ax.text(*p, f" {name}", color=PALETTE["black"], fontsize=12, fontweight="bold")
+    colors = {"U": PALETTE["orange"], "V": PALETTE["purple"], "N": PALETTE["blue"]}
+    for name, vec in (("U", u), ("V", v)):
+        ax.quiver(*A, *vec, color=colors[name], linewidth=2.5, arrow_length_ratio=0.12)
+        mid = [A[i] + 0.6 * vec[i] for i in range(3)]
+        ax.text(*mid, f"  {name}", color=colors[name], fontsize=12, fontweight="bold")
+    pts: list[Sequence[float]] = [A, B, C]
+    lengths = [math.dist(p, q) for p, q in ((A, B), (A, C), (B, C))]
+    scale = sum(lengths) / 3 or 1.0
+    centroid = [sum(p[i] for p in pts) / 3 for i in range(3)]
+    direction = "is zero, so it has no direction: the triangle is degenerate"
+    unit = r.unit_normal
+    if unit is not None:
+        n = [x * scale for x in unit]
+        ax.quiver(*centroid, *n, color=colors["N"], linewidth=3, arrow_length_ratio=0.15)
+        tip = [centroid[i] + n[i] for i in range(3)]
+        ax.text(*tip, "  N", color=colors["N"], fontsize=13, fontweight="bold")
+        pts.append(tuple(tip))
+        # the curl from U towards V, a quarter of the way along each edge
+        lu = math.hypot(*u)
+        uh = [x / lu for x in u]
+        dot = sum(v[i] * uh[i] for i in range(3))
+        w = [v[i] - dot * uh[i] for i in range(3)]
+        lw = math.hypot(*w)
+        wh = [x / lw for x in w]
+        angle = math.atan2(lw, dot)
+        rho = 0.3 * min(lu, math.hypot(*v))
+        ts = [angle * k / 40 for k in range(41)]
+        arc = [
+            [A[i] + rho * (math.cos(t) * uh[i] + math.sin(t) * wh[i]) for t in ts] for i in range(3)
+        ]
+        ax.plot(*arc, color=PALETTE["black"], linewidth=1.5)
+        end = [arc[i][-1] for i in range(3)]
+        prev = [arc[i][-4] for i in range(3)]
+        ax.quiver(
+            *prev,
+            *(end[i] - prev[i] for i in range(3)),
+            color=PALETTE["black"],
+            arrow_length_ratio=1.0,
+            linewidth=1.5,
+        )
+        direction = f"has the unit direction {r.format(4, trim=True)['unit_normal']}"
+        if sorted(abs(x) for x in unit) == [0.0, 0.0, 1.0]:
+            axis = max(range(3), key=lambda i: abs(unit[i]))
+            sign = "+" if unit[axis] > 0 else "-"
+            direction = f"points along {sign}{'xyz'[axis]}"
+    # equal scales: a cube around everything drawn
+    lo = [min(p[i] for p in pts) for i in range(3)]
+    hi = [max(p[i] for p in pts) for i in range(3)]
+    half = max(h - low for h, low in zip(hi, lo, strict=True)) / 2 or 1.0
+    for i, setter in enumerate((ax.set_xlim, ax.set_ylim, ax.set_zlim)):
+        mid = (lo[i] + hi[i]) / 2
+        setter(mid - half * 1.1, mid + half * 1.1)
+    ax.set_box_aspect((1, 1, 1))
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z")
+    ax.view_init(elev=25, azim=-60)
+    normal = _fmt_vec(r.exact.normal)
+    ax.set_title(title if title is not None else f"Winding {r.winding.label}: N = {normal}")
+    fig.alt_text = (  # type: ignore[attr-defined]
+        f"3D view of the triangle A = {_fmt_vec(r.exact.a)}, B = {_fmt_vec(r.exact.b)}, "
+        f"C = {_fmt_vec(r.exact.c)} with U = {first} − A and V = {second} − A drawn from A "
+        f"and a curved arrow turning from U to V. The normal N = {normal} {direction}."
+    )
+    return fig
+
+
+def component_bar_chart(
+    vectors: Mapping[str, Sequence[Any]] | Sequence[Any],
+    *,
+    title: str = "Components",
+    ylabel: str = "value",
+) -> Figure:
+    """Draw the x, y and z components of one or more vectors as grouped bars.
+
+    Parameters
+    ----------
+    vectors : mapping of label to 3 numbers, or 3 numbers
+        The vectors, such as ``{"N (ABC)": r.normal, "N (ACB)": s.normal}``.
+    title, ylabel : str
+        Labels for the chart.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        6 × 3.5 inches, white, one colour per axis, each bar labelled with its
+        value, and ``fig.alt_text`` listing the values.
+
+    Examples
+    --------
+    >>> fig = component_bar_chart({"N": (0, -1, 1)}, title="Raw normal")
+    >>> fig.alt_text
+    'Bar chart, Raw normal. N: x = 0, y = -1, z = 1.'
+    """
+    from matplotlib.figure import Figure
+
+    from trinormal.display import format_number
+
+    groups = dict(vectors) if isinstance(vectors, Mapping) else {"": vectors}
+    fig = Figure(figsize=(6, 3.5), facecolor=FACECOLOR)
+    ax = fig.add_subplot()
+    ax.set_facecolor(FACECOLOR)
+    width = 0.8 / 3
+    described = []
+    for g, (label, vec) in enumerate(groups.items()):
+        values = [float(x) for x in vec]
+        if len(values) != 3:
+            raise ValueError(f"{label or 'the vector'} has {len(values)} components, expected 3")
+        texts = [format_number(x, 4, trim=True) for x in vec]
+        for i in range(3):
+            x = g + (i - 1) * width
+            ax.bar(x, values[i], width, color=AXIS_COLORS[i], label="xyz"[i] if g == 0 else None)
+            ax.annotate(
+                texts[i],
+                (x, values[i]),
+                ha="center",
+                va="bottom" if values[i] >= 0 else "top",
+                fontsize=9,
+                xytext=(0, 2 if values[i] >= 0 else -2),
+                textcoords="offset points",
+            )
+        parts = ", ".join(f"{'xyz'[i]} = {texts[i]}" for i in range(3))
+        described.append(f"{label}: {parts}" if label else parts)
+    ax.axhline(0, color=PALETTE["black"], linewidth=0.8)
+    ax.set_xticks(range(len(groups)), [str(k) for k in groups])
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.margins(y=0.2)
+    ax.legend(title="component", loc="best", fontsize=9)
+    fig.alt_text = f"Bar chart, {title}. " + "; ".join(described) + "."  # type: ignore[attr-defined]
+    return fig
