@@ -289,7 +289,8 @@ def _notebook_list(args: list[str], page: Page, config: MkDocsConfig) -> str:
         title = notebook_title(path)
         summary = notebook_summary(path)
         link = f"notebooks/{path.name}"
-        download = f'<a href="{path.stem}/{path.name}" download>download <code>{path.name}</code></a>'
+        href = f"{path.stem}/{path.name}"
+        download = f'<a href="{href}" download>download <code>{path.name}</code></a>'
         rows.append(
             f"- **[{title}]({link})** ({download})" + (f"  \n  {summary}" if summary else "")
         )

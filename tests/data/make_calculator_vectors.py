@@ -42,10 +42,31 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
     ("tie 0.5 at precision 0", ("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0"), "ABC", 0),
     ("tie 2.5 at precision 0", ("0", "0", "0"), ("5", "0", "0"), ("0", "1", "0"), "ABC", 0),
     ("decimals", ("0.1", "0.2", "0.3"), ("-1.5", "2.25", "0"), ("3", "-0.7", "1e-1"), "ABC", 4),
-    ("decimals, exponent forms", ("2.5e3", "-1E2", ".5"), ("7.", "+3", "-0"), ("1e0", "0", "4e-2"), "ABC", 6),
+    (
+        "decimals, exponent forms",
+        ("2.5e3", "-1E2", ".5"),
+        ("7.", "+3", "-0"),
+        ("1e0", "0", "4e-2"),
+        "ABC",
+        6,
+    ),
     ("fractions", ("1/3", "0", "0"), ("0", "2/3", "0"), ("0", "0", "-5/7"), "ABC", 4),
-    ("fractions with spaces and signs", (" 1 / 3 ", "-1/-3", "2/-6"), ("0", "1", "0"), ("1", "0", "1"), "ACB", 5),
-    ("exactly collinear decimals", ("0", "0", "0"), ("0.1", "0.2", "0.3"), ("0.3", "0.6", "0.9"), "ABC", 4),
+    (
+        "fractions with spaces and signs",
+        (" 1 / 3 ", "-1/-3", "2/-6"),
+        ("0", "1", "0"),
+        ("1", "0", "1"),
+        "ACB",
+        5,
+    ),
+    (
+        "exactly collinear decimals",
+        ("0", "0", "0"),
+        ("0.1", "0.2", "0.3"),
+        ("0.3", "0.6", "0.9"),
+        "ABC",
+        4,
+    ),
     ("coincident A and B", ("1", "2", "3"), ("1", "2", "3"), ("4", "5", "6"), "ABC", 4),
     ("coincident A and C", ("1", "2", "3"), ("4", "5", "6"), ("1", "2", "3"), "ABC", 4),
     ("coincident B and C", ("0", "0", "0"), ("4", "5", "6"), ("4", "5", "6"), "ACB", 4),
@@ -54,19 +75,68 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
     ("near-degenerate, below tol", ("0", "0", "0"), ("1", "0", "0"), ("1", "1e-13", "0"), "ABC", 4),
     # sine 1e-11 (above tol): a proper, very thin triangle
     ("near-degenerate, above tol", ("0", "0", "0"), ("1", "0", "0"), ("1", "1e-11", "0"), "ABC", 4),
-    ("near-degenerate, thin sliver", ("0", "0", "0"), ("1e6", "1", "0"), ("2e6", "2.000001", "0"), "ABC", 4),
+    (
+        "near-degenerate, thin sliver",
+        ("0", "0", "0"),
+        ("1e6", "1", "0"),
+        ("2e6", "2.000001", "0"),
+        "ABC",
+        4,
+    ),
     ("huge 1e300", ("0", "0", "0"), ("1e300", "0", "0"), ("0", "1e300", "0"), "ABC", 4),
-    ("huge 1e300 tilted", ("1e300", "2e300", "-3e300"), ("-1e300", "5e299", "0"), ("0", "0", "1e300"), "ACB", 3),
+    (
+        "huge 1e300 tilted",
+        ("1e300", "2e300", "-3e300"),
+        ("-1e300", "5e299", "0"),
+        ("0", "0", "1e300"),
+        "ACB",
+        3,
+    ),
     ("tiny 1e-300", ("0", "0", "0"), ("1e-300", "0", "0"), ("0", "1e-300", "0"), "ABC", 4),
-    ("tiny 1e-300 tilted", ("1e-300", "0", "0"), ("0", "2e-300", "0"), ("0", "0", "3e-300"), "ABC", 2),
+    (
+        "tiny 1e-300 tilted",
+        ("1e-300", "0", "0"),
+        ("0", "2e-300", "0"),
+        ("0", "0", "3e-300"),
+        "ABC",
+        2,
+    ),
     ("beyond float range", ("0", "0", "0"), ("1e400", "0", "0"), ("0", "1e-400", "1"), "ABC", 4),
-    ("scientific switch at 1e15", ("0", "0", "0"), ("31622776.6", "0", "0"), ("0", "31622776.6", "0"), "ABC", 2),
+    (
+        "scientific switch at 1e15",
+        ("0", "0", "0"),
+        ("31622776.6", "0", "0"),
+        ("0", "31622776.6", "0"),
+        "ABC",
+        2,
+    ),
     ("just below 1e15", ("0", "0", "0"), ("999999999999999", "0", "0"), ("0", "1", "0"), "ABC", 1),
-    ("rounding carries into exponent", ("0", "0", "0"), ("9.99996e-5", "0", "0"), ("0", "1", "0"), "ABC", 4),
-    ("small values, precision 2", ("0", "0", "0"), ("0.004", "0.001", "0"), ("0", "0.003", "0.002"), "ABC", 2),
+    (
+        "rounding carries into exponent",
+        ("0", "0", "0"),
+        ("9.99996e-5", "0", "0"),
+        ("0", "1", "0"),
+        "ABC",
+        4,
+    ),
+    (
+        "small values, precision 2",
+        ("0", "0", "0"),
+        ("0.004", "0.001", "0"),
+        ("0", "0.003", "0.002"),
+        "ABC",
+        2,
+    ),
     ("irrational unit normal", ("1", "2", "3"), ("4", "6", "9"), ("-2", "0", "5"), "ABC", 8),
     ("negative plane offset", ("-3", "-1", "2"), ("5", "-2", "-4"), ("0.5", "4", "-1/4"), "ACB", 4),
-    ("long decimal input", ("0.1234567890123456789", "0", "0"), ("1", "0", "0"), ("0", "1", "1"), "ABC", 10),
+    (
+        "long decimal input",
+        ("0.1234567890123456789", "0", "0"),
+        ("1", "0", "0"),
+        ("0", "1", "1"),
+        "ABC",
+        10,
+    ),
     ("precision 7 on thirds", ("0", "0", "0"), ("1/3", "1/3", "0"), ("0", "1/3", "1/3"), "ABC", 7),
     # unreadable input: the message names the field; every output shows a dash
     ("empty field", ("", "0", "0"), ("1", "0", "0"), ("0", "1", "0"), "ABC", 4),
@@ -84,7 +154,9 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
 ]
 
 
-def vector(label: str, a: Point, b: Point, c: Point, winding: str, precision: int) -> dict[str, Any]:
+def vector(
+    label: str, a: Point, b: Point, c: Point, winding: str, precision: int
+) -> dict[str, Any]:
     """What the Python package says for one set of calculator inputs."""
     entry: dict[str, Any] = {
         "label": label,

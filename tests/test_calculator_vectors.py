@@ -1,0 +1,100 @@
+"""The calculator's shared vectors: current with the package, and covering the hard cases.
+
+The browser test (tests/browser/test_calculator.py) types every vector into the live
+calculator and compares its outputs with these strings; this test makes sure the
+strings are what the Python package says today, so the two can never drift apart.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+from pathlib import Path
+from types import ModuleType
+
+from trinormal import triangle_normal
+
+DATA = Path(__file__).parent / "data"
+
+
+def _generator() -> ModuleType:
+    spec = importlib.util.spec_from_file_location(
+        "make_calculator_vectors", DATA / "make_calculator_vectors.py"
+    )
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+GEN = _generator()
+STORED = json.loads((DATA / "calculator_vectors.json").read_text(encoding="utf-8"))
+
+
+def test_stored_vectors_are_current():
+    fresh = GEN.dumps(GEN.build())
+    stored = (DATA / "calculator_vectors.json").read_text(encoding="utf-8")
+    assert stored == fresh, (
+        "tests/data/calculator_vectors.json is stale: run "
+        "`python tests/data/make_calculator_vectors.py` and commit the result"
+    )
+
+
+def test_every_vector_matches_the_package():
+    for v in STORED:
+        if v["ok"]:
+            r = triangle_normal(v["a"], v["b"], v["c"], winding=v["winding"])
+            f = r.format(v["precision"])
+            assert {k: f[k] for k in GEN.OUTPUT_KEYS} == v["expected"], v["label"]
+            assert f["status"] == v["status"], v["label"]
+            assert r.degenerate is v["degenerate"], v["label"]
+        else:
+            try:
+                triangle_normal(v["a"], v["b"], v["c"], winding=v["winding"])
+            except ValueError as err:
+                assert str(err) == v["status"], v["label"]
+                assert str(err).startswith(v["field"] + " "), v["label"]
+            else:
+                raise AssertionError(f"{v['label']}: expected a ValueError")
+            assert set(v["expected"].values()) == {"—"}
+
+
+def _by_label(label: str) -> dict:
+    return next(v for v in STORED if v["label"] == label)
+
+
+def test_vectors_cover_the_hard_cases():
+    ok = [v for v in STORED if v["ok"]]
+    assert any(v["degenerate"] for v in ok)
+    assert any(not v["degenerate"] for v in ok)
+    assert {v["winding"] for v in STORED} == {"ABC", "ACB"}
+    assert {v["precision"] for v in ok} >= {0, 2, 4, 10}
+    assert all(0 <= v["precision"] <= 10 for v in STORED)
+    # the rounding tie: an area of exactly 1/8 shows 0.13 at two decimals
+    tie = _by_label("area tie 0.125")
+    assert tie["precision"] == 2 and tie["expected"]["area"] == "0.13"
+    r = triangle_normal(tie["a"], tie["b"], tie["c"])
+    assert r.exact.magnitude_squared / 4 == 1 / 64
+    # near-degenerate on both sides of the tolerance
+    assert _by_label("near-degenerate, below tol")["degenerate"] is True
+    assert _by_label("near-degenerate, above tol")["degenerate"] is False
+    # huge and tiny coordinates, in scientific notation with long exponents
+    assert "e+600" in _by_label("huge 1e300")["expected"]["normal"]
+    assert "e-600" in _by_label("tiny 1e-300")["expected"]["normal"]
+    # decimals and fractions
+    assert any("/" in x for v in ok for x in v["a"] + v["b"] + v["c"])
+    assert any("." in x for v in ok for x in v["a"] + v["b"] + v["c"])
+    # the four kinds of bad input the issue names, each naming its field
+    bad = {v["label"]: v for v in STORED if not v["ok"]}
+    assert bad["empty field"]["status"] == "A.x is empty"
+    assert bad["not a number"]["field"] == "C.y"
+    assert "divides by zero" in bad["divides by zero"]["status"]
+    assert bad["NaN"]["status"] == "A.z is NaN"
+
+
+def test_no_output_string_is_nan_undefined_or_infinity_except_the_unit_normal():
+    for v in STORED:
+        for key, text in v["expected"].items():
+            assert "nan" not in text.lower() and "inf" not in text.lower(), v["label"]
+            if text == "undefined":
+                assert v["degenerate"] and key in ("unit_normal", "plane"), v["label"]
