@@ -55,7 +55,7 @@ import html
 import importlib
 import math
 import pkgutil
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Literal, overload
@@ -340,9 +340,12 @@ def _number(x: Any) -> Fraction | float:
 
 
 def _vector(x: Any) -> list[Fraction | float]:
-    if isinstance(x, str | bytes) or not isinstance(x, Iterable):
-        raise _BadAnswer(f"expected 3 numbers (x, y, z), got {type(x).__name__}")
-    items = list(x)
+    try:
+        if isinstance(x, str | bytes):
+            raise TypeError
+        items = list(x)
+    except TypeError:
+        raise _BadAnswer(f"expected 3 numbers (x, y, z), got {type(x).__name__}") from None
     if len(items) != 3:
         raise _BadAnswer(f"expected 3 numbers (x, y, z), got {len(items)}")
     return [_number(i) for i in items]
