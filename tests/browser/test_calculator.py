@@ -1,0 +1,206 @@
+"""The live calculator: same strings as Python, live updates, winding, precision, URL, errors."""
+
+from __future__ import annotations
+
+import json
+from urllib.parse import parse_qs, urlsplit
+
+import pytest
+from browser_support import ROOT
+
+from trinormal import triangle_normal
+
+VECTORS = json.loads((ROOT / "tests/data/calculator_vectors.json").read_text(encoding="utf-8"))
+FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
+OUTPUTS = {
+    "u": "#out-u",
+    "v": "#out-v",
+    "normal": "#out-normal",
+    "magnitude": "#out-magnitude",
+    "area": "#out-area",
+    "unit_normal": "#out-unit",
+    "plane": "#out-plane",
+}
+DASH = "—"
+
+
+def open_calculator(page, url: str) -> None:
+    """Open the calculator and wait until it is ready and the page has stopped loading."""
+    page.goto(url)
+    page.wait_for_selector("#tn-calculator[data-ready='true']")
+    page.wait_for_load_state("networkidle")
+
+
+@pytest.fixture
+def calc(page, server, traffic):
+    open_calculator(page, server + "calculator/")
+    yield page
+    assert not traffic.problems()
+
+
+def outputs(page) -> dict[str, str]:
+    return {key: page.locator(sel).inner_text() for key, sel in OUTPUTS.items()}
+
+
+def status(page) -> str:
+    return page.locator("#out-status").inner_text()
+
+
+def enter(page, a, b, c, winding="ABC", precision=4) -> None:
+    for name, value in zip(FIELDS, [*a, *b, *c], strict=True):
+        page.fill("#" + name, value)
+    page.select_option("#winding", winding)
+    page.fill("#precision", str(precision))
+
+
+def expected(a, b, c, winding="ABC", precision=4) -> dict[str, str]:
+    f = triangle_normal(a, b, c, winding=winding).format(precision)
+    return {key: f[key] for key in OUTPUTS}
+
+
+def test_the_default_page_is_the_worked_example(calc):
+    assert outputs(calc) == expected(("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0"))
+    assert status(calc) == "A proper triangle: the unit normal is defined."
+
+
+def test_every_shared_vector_matches_python(calc):
+    assert len(VECTORS) >= 40
+    mismatches = []
+    for v in VECTORS:
+        enter(calc, v["a"], v["b"], v["c"], v["winding"], v["precision"])
+        got = outputs(calc)
+        got_status = status(calc)
+        state = calc.locator("#out-status").get_attribute("data-state")
+        want_state = "error" if not v["ok"] else "degenerate" if v["degenerate"] else "ok"
+        if got != v["expected"] or got_status != v["status"] or state != want_state:
+            mismatches.append(
+                {"label": v["label"], "got": got, "status": got_status, "state": state}
+            )
+    assert not mismatches, json.dumps(mismatches, indent=1, ensure_ascii=False)
+
+
+def test_results_update_as_you_type(calc):
+    calc.locator("#bx").fill("")
+    calc.locator("#bx").press_sequentially("2")
+    assert calc.locator("#out-u").inner_text() == "(2.0000, 0.0000, 0.0000)"
+    calc.locator("#cy").press("End")
+    calc.locator("#cy").press_sequentially("5")  # "1" becomes "15"
+    assert calc.locator("#out-v").inner_text() == "(0.0000, 15.0000, 0.0000)"
+    assert calc.locator("#out-area").inner_text() == "15.0000"
+    # the chart follows: its label carries N's components
+    assert "Nz = 30.0000" in calc.locator("#chart").get_attribute("aria-label")
+
+
+def test_winding_flip_turns_the_normal_over(calc):
+    enter(calc, ("1", "1", "1"), ("2", "1", "1"), ("1", "2", "2"))
+    assert calc.locator("#out-normal").inner_text() == "(0.0000, -1.0000, 1.0000)"
+    calc.select_option("#winding", "ACB")
+    assert calc.locator("#out-normal").inner_text() == "(0.0000, 1.0000, -1.0000)"
+    assert calc.locator("#out-unit").inner_text() == "(0.0000, 0.7071, -0.7071)"
+    assert calc.locator("#out-area").inner_text() == "0.7071"
+    calc.click("#tn-flip")
+    assert calc.locator("#winding").input_value() == "ABC"
+    assert calc.locator("#out-normal").inner_text() == "(0.0000, -1.0000, 1.0000)"
+
+
+def test_precision_change(calc):
+    enter(calc, ("0", "0", "0"), ("0.5", "0", "0"), ("0", "0.5", "0"))
+    calc.fill("#precision", "2")
+    assert calc.locator("#out-area").inner_text() == "0.13"  # 0.125 rounds half away from zero
+    calc.fill("#precision", "0")
+    assert calc.locator("#out-area").inner_text() == "1e-01"
+    calc.fill("#precision", "10")
+    assert calc.locator("#out-area").inner_text() == "0.1250000000"
+    calc.fill("#precision", "11")
+    assert "0 to 10" in status(calc)
+    assert set(outputs(calc).values()) == {DASH}
+    calc.fill("#precision", "3")
+    assert calc.locator("#out-area").inner_text() == "0.125"
+
+
+def test_url_state_round_trip(page, server, traffic):
+    url = server + "calculator/?a=1,1,1&b=2,1,1&c=1,2,2&w=ACB&p=2"
+    open_calculator(page, url)
+    values = [page.locator("#" + f).input_value() for f in FIELDS]
+    assert values == ["1", "1", "1", "2", "1", "1", "1", "2", "2"]
+    assert page.locator("#winding").input_value() == "ACB"
+    assert page.locator("#precision").input_value() == "2"
+    assert outputs(page) == expected(("1", "1", "1"), ("2", "1", "1"), ("1", "2", "2"), "ACB", 2)
+    # editing writes the state back into the address
+    page.fill("#cz", "1/3")
+    page.select_option("#winding", "ABC")
+    page.fill("#precision", "5")
+    query = parse_qs(urlsplit(page.evaluate("location.href")).query)
+    assert query == {"a": ["1,1,1"], "b": ["2,1,1"], "c": ["1,2,1/3"], "w": ["ABC"], "p": ["5"]}
+    shared = page.evaluate("location.href")
+    # ... and opening that address elsewhere restores the same state
+    open_calculator(page, server + "calculator/")
+    open_calculator(page, shared)
+    assert page.locator("#cz").input_value() == "1/3"
+    assert outputs(page) == expected(("1", "1", "1"), ("2", "1", "1"), ("1", "2", "1/3"), "ABC", 5)
+    assert not traffic.problems()
+
+
+def test_url_with_odd_values_round_trips(page, server, traffic):
+    open_calculator(page, server + "calculator/?a=0,0,0&b=1%2C5,0,0&c=0,1,0&w=ABC&p=4")
+    assert page.locator("#bx").input_value() == "1,5"
+    assert status(page).startswith("B.x = '1,5' is not a number")
+    page.fill("#az", " 2 ")
+    page.fill("#az", "0")
+    open_calculator(page, page.evaluate("location.href"))
+    assert page.locator("#bx").input_value() == "1,5"
+    assert not traffic.problems()
+
+
+@pytest.mark.parametrize(
+    ("field", "text", "message"),
+    [
+        ("ax", "", "A.x is empty"),
+        ("by", "abc", "B.y = 'abc' is not a number"),
+        ("cz", "1/0", "C.z = '1/0' divides by zero"),
+        ("bx", "NaN", "B.x is NaN"),
+        ("cy", "Infinity", "C.y is infinite"),
+    ],
+)
+def test_bad_input_names_the_field_and_dashes_the_outputs(calc, field, text, message):
+    calc.fill("#" + field, text)
+    assert status(calc).startswith(message)
+    assert calc.locator("#out-status").get_attribute("data-state") == "error"
+    assert calc.locator("#" + field).get_attribute("aria-invalid") == "true"
+    shown = outputs(calc)
+    assert set(shown.values()) == {DASH}
+    page_text = calc.locator(".tn-results").inner_text()
+    for word in ("NaN", "undefined", "Infinity"):
+        assert word not in page_text
+    # fixing the field brings the numbers back
+    calc.fill("#" + field, "0" if field != "bx" else "1")
+    assert calc.locator("#" + field).get_attribute("aria-invalid") is None
+    assert DASH not in calc.locator("#out-normal").inner_text()
+
+
+def test_degenerate_triangle_says_undefined(calc):
+    enter(calc, ("0", "0", "0"), ("1", "1", "1"), ("2", "2", "2"))
+    assert calc.locator("#out-unit").inner_text() == "undefined"
+    assert calc.locator("#out-plane").inner_text() == "undefined"
+    assert status(calc).startswith("Degenerate: A, B and C are collinear")
+    assert "Nx = 0.0000, Ny = 0.0000, Nz = 0.0000" in calc.locator("#chart").get_attribute(
+        "aria-label"
+    )
+
+
+def test_chart_draws_signed_bars_with_labels(calc):
+    enter(calc, ("1", "2", "3"), ("4", "6", "9"), ("-2", "0", "5"))
+    chart = calc.locator("#chart")
+    assert chart.get_attribute("role") == "img"
+    label = chart.get_attribute("aria-label")
+    assert label == (
+        "Bar chart of the normal components: Nx = 20.0000, Ny = -24.0000, Nz = 6.0000."
+    )
+    widths = chart.locator("rect").evaluate_all(
+        "rs => rs.map(r => Number(r.getAttribute('width')))"
+    )
+    assert len(widths) == 3
+    assert widths[1] == max(widths)  # |Ny| is the largest component
+    assert widths[0] == pytest.approx(widths[1] * 20 / 24, rel=1e-3)
+    texts = chart.locator("text").evaluate_all("ts => ts.map(t => t.textContent)")
+    assert texts == ["Nx", "20.0000", "Ny", "-24.0000", "Nz", "6.0000"]
