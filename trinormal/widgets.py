@@ -20,6 +20,7 @@ import io
 import math
 from collections.abc import Iterable, Sequence
 from decimal import Decimal
+from fractions import Fraction
 from typing import Any
 
 import ipywidgets as widgets
@@ -30,8 +31,9 @@ from matplotlib.figure import Figure
 from matplotlib.transforms import Bbox
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
-from trinormal.core import TriangleNormal, Winding, triangle_normal
+from trinormal.core import TriangleNormal, Winding, parse_coordinate, triangle_normal
 from trinormal.display import format_number, format_vector
+from trinormal.exercises import exercise
 from trinormal.plotting import AXIS_COLORS, FACECOLOR, PALETTE
 
 __all__ = ["COORDINATES", "PRECISION_RANGE", "Explorer"]
@@ -75,6 +77,8 @@ def _step_decimals(step: float) -> int:
 def _check_in_range(name: str, value: float, low: float, high: float, hint: str) -> float:
     if value != value:
         raise ValueError(f"{name} is NaN")
+    if math.isinf(value):
+        raise ValueError(f"{name} is infinite; the slider range is {_num(low)} to {_num(high)}")
     if not low <= value <= high:
         raise ValueError(
             f"{name} = {_num(value)} is outside the slider range "
@@ -86,9 +90,8 @@ def _check_in_range(name: str, value: float, low: float, high: float, hint: str)
 class _CoordinateSlider(widgets.FloatSlider):  # type: ignore[misc]
     """A FloatSlider that refuses values outside its range instead of clamping them.
 
-    A value within rounding noise of a multiple of the step (the browser can send
-    0.30000000000000004 for a step of 0.1) is snapped to that multiple, so a
-    dragged 0.3 is the same number as a typed 0.3.
+    The value is kept exactly as set: the explorer computes with the very float
+    the slider holds.
     """
 
     def __init__(self, name: str, **kwargs: Any) -> None:
@@ -99,18 +102,8 @@ class _CoordinateSlider(widgets.FloatSlider):  # type: ignore[misc]
     def _validate_value(self, proposal: Any) -> float:
         value = float(proposal["value"])
         name = str(getattr(self, "_coordinate_name", self.description))
-        _check_in_range(
-            name,
-            value,
-            self.min,
-            self.max,
-            "create the Explorer with min= and max= to widen the range",
-        )
-        snapped = round(value, _step_decimals(self.step))
-        noise = 64 * math.ulp(max(abs(self.min), abs(self.max), abs(value), 1.0))
-        if snapped != value and abs(snapped - value) <= noise and self.min <= snapped <= self.max:
-            return snapped
-        return value
+        hint = "create the Explorer with min= and max= to widen the range"
+        return _check_in_range(name, value, self.min, self.max, hint)
 
 
 class _PrecisionSlider(widgets.IntSlider):  # type: ignore[misc]
@@ -919,3 +912,99 @@ class Explorer:
             f"Explorer(a={v(self.a)}, b={v(self.b)}, c={v(self.c)}, "
             f"winding={self.winding.value!r}, precision={self.precision})"
         )
+
+
+# --------------------------------------------------------------------------- exercises
+
+#: Two vertices given in exercise 05-collinear; the student supplies the third.
+COLLINEAR_AB: tuple[tuple[int, int, int], tuple[int, int, int]] = ((1, 2, 0), (3, 3, 1))
+
+#: The triangle doubled in exercise 05-double.
+DOUBLE_ABC: tuple[tuple[int, int, int], tuple[int, int, int], tuple[int, int, int]] = (
+    (1, 0, 2),
+    (3, 1, 0),
+    (-1, 2, 1),
+)
+
+
+def _read_points(answer: Any, count: int) -> list[tuple[float, float, float]] | str:
+    """Read ``count`` points from an answer, or say what is wrong with it."""
+    try:
+        points = [_vertex(p, f"point {i + 1}") for i, p in enumerate(answer)]
+    except (TypeError, ValueError) as error:
+        return f"Your answer could not be read: {error}."
+    if len(points) != count:
+        return f"Give {count} point{'s' if count > 1 else ''} (x, y, z), got {len(points)}."
+    return points
+
+
+@exercise(
+    "05-minus-x",
+    "Give three points (A, B, C) whose normal, in the order A→B→C, points along −x: "
+    "the unit normal must be exactly (−1, 0, 0).",
+    replace=True,
+)
+def _check_minus_x(answer: Any) -> bool | tuple[bool, str]:
+    points = _read_points(answer, 3) if answer is not None else "Give three points."
+    if isinstance(points, str):
+        return False, points
+    r = triangle_normal(points[0], points[1], points[2])
+    if r.degenerate or r.unit_normal is None:
+        return False, "These points make no triangle (zero area), so there is no normal at all."
+    if r.unit_normal == (-1.0, 0.0, 0.0):
+        return True
+    if r.unit_normal == (1.0, 0.0, 0.0):
+        return False, "Your normal points along +x: swap B and C to turn it over."
+    return False, (
+        "The normal must have no y or z part: put all three points in one plane x = constant, "
+        "then check the order with the right-hand rule."
+    )
+
+
+@exercise(
+    "05-collinear",
+    f"A = {COLLINEAR_AB[0]} and B = {COLLINEAR_AB[1]}. Give a point C, different from both, "
+    "that makes the area exactly 0.",
+    replace=True,
+)
+def _check_collinear(answer: Any) -> bool | tuple[bool, str]:
+    points = _read_points([answer], 1) if answer is not None else "Give one point."
+    if isinstance(points, str):
+        return False, points
+    c = points[0]
+    a, b = COLLINEAR_AB
+    if c in (tuple(map(float, a)), tuple(map(float, b))):
+        return False, "C must be a new point, not A or B again (that is the easy way to area 0)."
+    r = triangle_normal(a, b, c, tol=0)
+    if r.degenerate:
+        return True
+    direction = format_vector(_sub(b, a), 0, trim=True)
+    return False, f"Not on the line yet: C − A must be a multiple of B − A = {direction}."
+
+
+@exercise(
+    "05-double",
+    f"Double every coordinate of A = {DOUBLE_ABC[0]}, B = {DOUBLE_ABC[1]}, C = {DOUBLE_ABC[2]}. "
+    "By what number is N multiplied?",
+    replace=True,
+)
+def _check_double(answer: Any) -> bool | tuple[bool, str]:
+    try:
+        value = Fraction(*parse_coordinate(answer, "your answer"))
+    except (TypeError, ValueError) as error:
+        return False, f"Answer with one number: {error}."
+    factor = _doubling_factor()
+    if value == factor:
+        return True
+    if value == 2:
+        return False, "Each edge doubles, but N is a product of two edges."
+    return False, "Compare one nonzero component of N before and after doubling."
+
+
+def _doubling_factor() -> Fraction:
+    """Measure N(2A, 2B, 2C) / N(A, B, C) with the exact core."""
+    a, b, c = DOUBLE_ABC
+    n1 = triangle_normal(a, b, c).exact.normal
+    a2, b2, c2 = (tuple(2 * x for x in p) for p in DOUBLE_ABC)
+    n2 = triangle_normal(a2, b2, c2).exact.normal
+    return next(y / x for x, y in zip(n1, n2, strict=True) if x != 0)

@@ -1,0 +1,404 @@
+"""trinormal.widgets: the explorer driven from pytest, without a kernel or a display."""
+
+from __future__ import annotations
+
+import io
+import math
+
+import ipywidgets as widgets
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from PIL import Image
+
+from trinormal import Winding, triangle_normal
+from trinormal import widgets as tw
+from trinormal.exercises import check, get
+from trinormal.widgets import COORDINATES, Explorer
+
+KEYS = ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz")
+SHARED: dict[str, Explorer] = {}
+
+
+def move(ex, a, b, c):
+    """Set the nine sliders one by one, as a student dragging them would."""
+    for key, value in zip(KEYS, (*a, *b, *c), strict=True):
+        ex.controls[key].value = value
+
+
+def assert_readout_shows(ex, expected, precision):
+    text = ex.readout.value
+    for key, value in expected.format(precision).items():
+        assert value in text, (key, value)
+    assert "nan" not in text.lower()
+
+
+# --------------------------------------------------------------------------- the controls
+
+
+def test_controls_are_the_contracted_widgets():
+    ex = Explorer(a=(0, 0, 0), b=(1, 0, 0), c=(0, 1, 0), winding="ABC", precision=4)
+    assert set(ex.controls) == {*KEYS, "winding", "precision"}
+    assert COORDINATES == KEYS
+    for key in KEYS:
+        slider = ex.controls[key]
+        assert isinstance(slider, widgets.FloatSlider)
+        assert (slider.min, slider.max, slider.step) == (-5.0, 5.0, 0.1)
+    assert [ex.controls[k].value for k in KEYS] == [0, 0, 0, 1, 0, 0, 0, 1, 0]
+    toggle = ex.controls["winding"]
+    assert isinstance(toggle, widgets.ToggleButtons)
+    assert toggle.options == (("A→B→C", "ABC"), ("A→C→B", "ACB"))
+    assert toggle.value == "ABC"
+    precision = ex.controls["precision"]
+    assert isinstance(precision, widgets.IntSlider)
+    assert (precision.min, precision.max, precision.value) == (0, 10, 4)
+    assert isinstance(ex.readout, widgets.HTML)
+
+
+def test_range_and_step_are_constructor_options():
+    ex = Explorer(min=-10, max=10, step=0.5, b=(9.5, 0, 0))
+    assert {(ex.controls[k].min, ex.controls[k].max, ex.controls[k].step) for k in KEYS} == {
+        (-10.0, 10.0, 0.5)
+    }
+    assert ex.result.b == (9.5, 0.0, 0.0)
+    ex.controls["cz"].value = -10
+    assert ex.result.c == (0.0, 1.0, -10.0)
+    with pytest.raises(ValueError, match=r"C\.z = 10\.5 is outside the slider range -10 to 10"):
+        ex.controls["cz"].value = 10.5
+    small = Explorer(range=(-1, 1), b=(1, 0, 0), c=(0, 1, 0))
+    assert (small.controls["ax"].min, small.controls["ax"].max) == (-1.0, 1.0)
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [{"min": 1, "max": 1}, {"min": 2, "max": -2}, {"step": 0}, {"step": -0.1}, {"step": 20}],
+)
+def test_nonsense_range_or_step_is_refused(kwargs):
+    with pytest.raises(ValueError):
+        Explorer(a=(0, 0, 0), b=(0, 0, 0), c=(0, 0, 0), **kwargs)
+
+
+# --------------------------------------------------------------------------- recomputation
+
+CASES = [
+    ((0, 0, 0), (1, 0, 0), (0, 1, 0)),
+    ((0, 0, 0), (2, 0, 0), (0, 3, 0)),
+    ((1, 1, 1), (2, 1, 1), (1, 2, 2)),
+    ((0.3, -1.7, 2.2), (4.1, 0.5, -3.3), (-2.5, 4.9, 0.1)),
+    ((-5, -5, -5), (5, -5, 5), (-5, 5, 5)),
+]
+
+
+@pytest.mark.parametrize(("a", "b", "c"), CASES)
+@pytest.mark.parametrize("winding", ["ABC", "ACB"])
+def test_setting_sliders_recomputes_result_and_readout(a, b, c, winding):
+    ex = Explorer(winding=winding)
+    move(ex, a, b, c)
+    expected = triangle_normal(a, b, c, winding=winding)
+    assert ex.result == expected
+    assert ex.result.winding == Winding(winding)
+    assert (ex.a, ex.b, ex.c) == (expected.a, expected.b, expected.c)
+    assert_readout_shows(ex, expected, 4)
+    assert Winding(winding).label in ex.readout.value
+
+
+def test_every_single_slider_change_is_seen_immediately():
+    ex = Explorer()
+    for key in KEYS:
+        before = ex.result
+        ex.controls[key].value = 2.5
+        points = [[ex.controls[p + q].value for q in "xyz"] for p in "abc"]
+        assert ex.result == triangle_normal(*points)
+        assert ex.result != before or before == triangle_normal(*points)
+        assert_readout_shows(ex, ex.result, 4)
+
+
+def test_winding_toggle_turns_the_normal_over():
+    ex = Explorer(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2))
+    n_abc = ex.result.normal
+    ex.controls["winding"].value = "ACB"
+    assert ex.result.winding is Winding.ACB
+    assert ex.result.normal == tuple(-x for x in n_abc)
+    assert "A→C→B" in ex.readout.value
+    assert "U = C − A, V = B − A" in ex.readout.value
+    assert_readout_shows(ex, triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2), winding="ACB"), 4)
+    ex.controls["winding"].value = Winding.ABC  # the enum is accepted too
+    assert ex.result.normal == n_abc
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(st.floats(-5, 5, allow_nan=False), min_size=9, max_size=9),
+    st.sampled_from(["ABC", "ACB"]),
+    st.integers(0, 10),
+)
+def test_any_position_matches_the_core(values, winding, precision):
+    ex = SHARED.setdefault("ex", Explorer())  # one explorer, moved example after example
+    ex.controls["winding"].value = winding
+    ex.controls["precision"].value = precision
+    move(ex, values[0:3], values[3:6], values[6:9])
+    points = [[ex.controls[k].value for k in KEYS[i : i + 3]] for i in (0, 3, 6)]
+    assert all(v == w for v, w in zip(values, (x for p in points for x in p), strict=True))
+    expected = triangle_normal(*points, winding=winding)
+    assert ex.result == expected
+    assert_readout_shows(ex, expected, precision)
+
+
+# --------------------------------------------------------------------------- degenerate triangles
+
+
+@pytest.mark.parametrize(
+    ("a", "b", "c", "word"),
+    [
+        ((0, 0, 0), (1, 1, 1), (2, 2, 2), "collinear"),
+        ((1, 2, 3), (1, 2, 3), (0, 1, 0), "coincide"),
+        ((0.5, 0.5, 0.5), (0.5, 0.5, 0.5), (0.5, 0.5, 0.5), "same point"),
+        ((-1, 0, 2), (1, 1, 1), (3, 2, 0), "collinear"),
+    ],
+)
+def test_degenerate_positions_explain_instead_of_failing(a, b, c, word):
+    ex = Explorer()
+    move(ex, a, b, c)
+    expected = triangle_normal(a, b, c)
+    assert expected.degenerate
+    assert ex.result == expected and ex.result.unit_normal is None
+    assert_readout_shows(ex, expected, 4)
+    assert word in ex.readout.value
+    assert "No unit normal" in ex.readout.value
+    assert ex.readout.value.count("undefined") >= 2  # unit normal and plane
+    assert not ex._artists["arrow_N"].get_visible()
+    assert ex.to_png().startswith(b"\x89PNG")
+    move(ex, (0, 0, 0), (1, 0, 0), (0, 1, 0))  # and back to a proper triangle
+    assert not ex.result.degenerate and ex._artists["arrow_N"].get_visible()
+    assert "undefined" not in ex.readout.value
+
+
+def test_a_failure_inside_the_callback_becomes_a_message(monkeypatch):
+    ex = Explorer()
+    good = ex.result
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("something broke")
+
+    monkeypatch.setattr(tw, "triangle_normal", broken)
+    ex.controls["bx"].value = 2  # must not raise
+    assert "Could not compute the normal" in ex.readout.value
+    assert "something broke" in ex.readout.value
+    assert ex.result is good
+
+
+# --------------------------------------------------------------------------- precision
+
+
+def test_precision_changes_the_readout_only():
+    ex = Explorer(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2))
+    result = ex.result
+    for p in range(11):
+        ex.controls["precision"].value = p
+        assert ex.result == result
+        assert_readout_shows(ex, triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2)), p)
+        assert f"({p} decimal place" in ex.readout.value
+    ex.controls["precision"].value = 0
+    assert "1.4142" not in ex.readout.value
+    ex.controls["precision"].value = 4
+    assert "1.4142" in ex.readout.value
+
+
+# --------------------------------------------------------------------------- out of range
+
+
+@pytest.mark.parametrize(
+    ("key", "value", "message"),
+    [
+        ("bx", 99, r"B\.x = 99 is outside the slider range -5 to 5"),
+        ("az", -5.01, r"A\.z = -5\.01 is outside"),
+        ("cy", math.inf, r"C\.y is infinite"),
+        ("cy", math.nan, r"C\.y is NaN"),
+        ("precision", 11, r"precision must be from 0 to 10"),
+        ("precision", -1, r"precision must be from 0 to 10"),
+        ("winding", "CBA", r"winding must be 'ABC' or 'ACB'"),
+    ],
+)
+def test_out_of_range_values_are_a_value_error_not_a_clamp(key, value, message):
+    ex = Explorer(b=(2, 0, 0), c=(0, 3, 0))
+    before = (ex.controls[key].value, ex.result, ex.readout.value)
+    with pytest.raises(ValueError, match=message):
+        ex.controls[key].value = value
+    assert (ex.controls[key].value, ex.result, ex.readout.value) == before
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"b": (6, 0, 0)}, r"B\.x = 6 is outside"),
+        ({"c": (0, 0, -7)}, r"C\.z = -7 is outside"),
+        ({"a": (0, 0)}, r"A has 2 coordinates"),
+        ({"precision": 11}, r"precision"),
+        ({"precision": 2.5}, r"precision"),
+        ({"winding": "BAC"}, r"winding"),
+    ],
+)
+def test_bad_starting_values_are_refused(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        Explorer(**kwargs)
+
+
+def test_set_moves_several_controls_and_checks_them_all_first():
+    ex = Explorer()
+    ex.set(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2), winding="ACB", precision=2)
+    expected = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2), winding="ACB")
+    assert ex.result == expected
+    assert_readout_shows(ex, expected, 2)
+    with pytest.raises(ValueError, match=r"C\.x = 8"):
+        ex.set(a=(0, 0, 0), c=(8, 0, 0))
+    assert ex.result == expected and ex.a == (1.0, 1.0, 1.0)
+
+
+def test_values_are_kept_exactly_as_set():
+    ex = Explorer()
+    for value in (0.1 + 0.2, 1 / 3, 1 + 1e-15, 2.0782859294754533e-277, -5.0, 5.0):
+        ex.controls["bx"].value = value
+        assert ex.controls["bx"].value == value
+        assert ex.result.b[0] == value
+
+
+# --------------------------------------------------------------------------- the figure
+
+
+def test_figure_is_updated_in_place():
+    ex = Explorer()
+    axes = list(ex.figure.axes)
+    artists = dict(ex._artists)
+    ex.set(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2), winding="ACB")
+    assert ex.figure.axes == axes
+    assert all(ex._artists[k] is v for k, v in artists.items())
+    r = ex.result
+    heights = [bar.get_height() for bar in ex._artists["bars_n"]]
+    assert heights == list(r.normal)
+    unit = [bar.get_height() for bar in ex._artists["bars_u"]]
+    assert unit == list(r.unit_normal)
+    xs, ys, zs = ex._artists["edges"].get_data_3d()
+    assert list(zip(xs, ys, zs, strict=True)) == [r.a, r.b, r.c, r.a]
+    # the U arrow starts at A and ends at B (order A→C→B: U = C − A, so it ends at C)
+    shaft = ex._artists["arrow_U"]._segments3d[0]
+    assert tuple(shaft[0]) == r.a and tuple(shaft[1]) == r.c
+
+
+def test_three_d_view_has_equal_scales_and_labels():
+    ex = Explorer(a=(-4, 1, 0), b=(3, -2, 1), c=(0, 4, -3))
+    ax3 = ex._artists["ax3"]
+    limits = {ax3.get_xlim(), ax3.get_ylim(), ax3.get_zlim()}
+    assert len(limits) == 1
+    low, high = limits.pop()
+    assert low == -high and high >= 4
+    aspect = ax3.get_box_aspect()
+    assert aspect[0] == aspect[1] == aspect[2]
+    for name in "ABC":
+        assert ex._artists["label_" + name].get_marker() is not None
+    assert {ex._artists["tip_" + n].get_visible() for n in "UVN"} == {True}
+
+
+def test_blitted_picture_equals_a_full_redraw():
+    ex = Explorer()
+    rng = np.random.default_rng(5)
+    for i in range(8):
+        ex.controls[KEYS[i % 9]].value = float(np.round(rng.uniform(-5, 5), 1))
+        if i == 5:
+            ex.set(b=ex.a)  # degenerate: the N arrow disappears
+        ex.render()
+        blitted = np.asarray(ex._canvas.buffer_rgba()).copy()
+        ex._canvas.draw()  # the whole figure, every artist, from scratch
+        full = np.asarray(ex._canvas.buffer_rgba()).copy()
+        assert np.array_equal(blitted, full), i
+
+
+def test_each_axes_stays_inside_its_band():
+    ex = Explorer(a=(-5, -5, -5), b=(5, -5, 5), c=(-5, 5, 5))  # the widest labels
+    ex.render()
+    renderer = ex._canvas.get_renderer()
+    width, height = renderer.width, renderer.height
+    for band, key in (("3d", "ax3"), ("n", "ax_n"), ("u", "ax_u")):
+        box = ex._artists[key].get_tightbbox(renderer)
+        limits = ex._band_bbox(band, width, height)
+        assert limits.x0 <= box.x0 and box.x1 <= limits.x1, band
+        assert limits.y0 <= box.y0 and box.y1 <= limits.y1, band
+
+
+def test_png_changes_with_the_triangle():
+    ex = Explorer()
+    first = ex.to_png()
+    ex.controls["cz"].value = 2
+    second = ex.to_png()
+    assert first != second
+    image = Image.open(io.BytesIO(second))
+    assert image.format == "PNG" and image.size == (648, 288)
+
+
+def test_figure_can_be_saved_in_full_by_matplotlib():
+    ex = Explorer(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2))
+    buf = io.BytesIO()
+    ex.figure.savefig(buf, format="png", dpi=100)
+    assert buf.getvalue().startswith(b"\x89PNG")
+    assert "B = (2, 1, 1)" in ex.figure.alt_text
+    ex.controls["bx"].value = 3  # the blitting path still works after another dpi
+    ex.render()
+    blitted = np.asarray(ex._canvas.buffer_rgba()).copy()
+    ex._canvas.draw()
+    assert np.array_equal(blitted, np.asarray(ex._canvas.buffer_rgba()))
+
+
+# --------------------------------------------------------------------------- display
+
+
+def test_display_bundle_has_the_widget_and_a_plain_text_summary():
+    ex = Explorer(precision=2)
+    assert bytes(ex.image.value) == b""  # nothing rendered before it is shown
+    bundle = ex._repr_mimebundle_()
+    view = bundle["application/vnd.jupyter.widget-view+json"]
+    assert view["model_id"] == ex.widget.model_id
+    assert bundle["text/plain"] == ex.summary()
+    f = ex.result.format(2)
+    for key in ("u", "v", "normal", "magnitude", "area", "unit_normal", "plane", "status"):
+        assert f[key] in bundle["text/plain"]
+    box = ex.widget
+    assert ex.readout in box.children and ex.image in box.children
+    shown = {id(w) for row in box.children[0].children for w in row.children}
+    assert {id(c) for c in ex.controls.values()} <= shown
+    assert bytes(ex.image.value).startswith(b"\x89PNG")
+    before = bytes(ex.image.value)
+    ex.controls["az"].value = 1  # once shown, every change re-renders the image
+    after = bytes(ex.image.value)
+    assert after != before and after.startswith(b"\x89PNG")
+
+
+def test_repr_names_the_state():
+    ex = Explorer(a=(0.5, 0, 0), winding="ACB", precision=3)
+    assert (
+        repr(ex) == "Explorer(a=(0.5, 0, 0), b=(1, 0, 0), c=(0, 1, 0), winding='ACB', precision=3)"
+    )
+
+
+# --------------------------------------------------------------------------- exercises
+
+
+def test_notebook_05_exercises_are_registered_and_checkable():
+    assert check("05-minus-x", [(0, 0, 0), (0, 0, 1), (0, 1, 0)])
+    assert triangle_normal((0, 0, 0), (0, 0, 1), (0, 1, 0)).unit_normal == (-1.0, 0.0, 0.0)
+    flipped = check("05-minus-x", [(0, 0, 0), (0, 1, 0), (0, 0, 1)])
+    assert not flipped and "+x" in flipped.message
+    assert not check("05-minus-x", [(0, 0, 0), (1, 1, 1), (2, 2, 2)])
+    assert not check("05-minus-x", [(0, 0, 0), (1, 0, 0), (0, 1, 0)])
+    a, b = tw.COLLINEAR_AB
+    beyond = tuple(2 * q - p for p, q in zip(a, b, strict=True))
+    assert check("05-collinear", beyond)
+    assert not check("05-collinear", a) and not check("05-collinear", b)
+    assert not check("05-collinear", (beyond[0], beyond[1], beyond[2] + 1))
+    a, b, c = tw.DOUBLE_ABC
+    n1 = triangle_normal(a, b, c).exact.normal
+    n2 = triangle_normal(*([2 * x for x in p] for p in (a, b, c))).exact.normal
+    factor = next(y / x for x, y in zip(n1, n2, strict=True) if x != 0)
+    assert check("05-double", factor)
+    assert not check("05-double", 2)
+    assert get("05-double").prompt.startswith("Double every coordinate")
+    assert check("05-double", ...).status == "unanswered"
