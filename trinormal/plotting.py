@@ -184,8 +184,8 @@ def right_hand_rule_figure(
     hi = [max(p[i] for p in pts) for i in range(3)]
     half = max(h - low for h, low in zip(hi, lo, strict=True)) / 2 or 1.0
     for i, setter in enumerate((ax.set_xlim, ax.set_ylim, ax.set_zlim)):
-        mid = (lo[i] + hi[i]) / 2
-        setter(mid - half * 1.1, mid + half * 1.1)
+        centre = (lo[i] + hi[i]) / 2
+        setter(centre - half * 1.1, centre + half * 1.1)
     ax.set_box_aspect((1, 1, 1))
     ax.set_xlabel("x")
     ax.set_ylabel("y")
