@@ -55,7 +55,12 @@ def _assert_math_typeset(page, where: str) -> None:
     page.wait_for_selector("body[data-math='typeset']", timeout=20_000)
     count = page.locator("mjx-container").count()
     assert count > 0, f"{where}: no typeset math"
-    text = page.locator("article").inner_text()
+    # the article's prose, without code (where a dollar sign or a backslash is just code)
+    text = page.locator("article").evaluate(
+        """a => { const c = a.cloneNode(true);
+                  c.querySelectorAll('pre, code, mjx-container, script').forEach(e => e.remove());
+                  return c.textContent; }"""
+    )
     assert "$$" not in text, f"{where}: raw $$ left"
     assert "\\(" not in text and "\\[" not in text, f"{where}: raw TeX delimiters left"
     assert page.locator("mjx-merror").count() == 0, f"{where}: MathJax reported a TeX error"
@@ -69,11 +74,16 @@ def test_math_is_typeset_on_a_guide_page(page, server, traffic):
 
 
 def _notebooks_with_math() -> list[Path]:
+    """Notebooks with TeX in a Markdown cell or a text/latex output (sympy's display)."""
     out = []
     for path in NOTEBOOKS:
         nb = json.loads(path.read_text(encoding="utf-8"))
         for cell in nb["cells"]:
-            if cell["cell_type"] == "markdown" and "$" in "".join(cell["source"]):
+            markdown_math = cell["cell_type"] == "markdown" and re.search(
+                r"\$|\\\(|\\\[", "".join(cell["source"])
+            )
+            latex_output = any("text/latex" in o.get("data", {}) for o in cell.get("outputs", []))
+            if markdown_math or latex_output:
                 out.append(path)
                 break
     return out
@@ -81,11 +91,18 @@ def _notebooks_with_math() -> list[Path]:
 
 def test_math_is_typeset_on_a_notebook_page(page, server, traffic):
     with_math = _notebooks_with_math()
-    assert with_math, "no notebook in notebooks/ has math in a Markdown cell"
-    path = with_math[0]
-    page.goto(server + f"notebooks/{path.stem}/")
-    _assert_math_typeset(page, path.name)
-    assert page.locator(".jp-RenderedMarkdown mjx-container").count() > 0
+    assert with_math, "no notebook in notebooks/ has math (Markdown TeX or a text/latex output)"
+    for path in with_math:
+        page.goto(server + f"notebooks/{path.stem}/")
+        _assert_math_typeset(page, path.name)
+        rendered = page.locator(
+            ".jp-RenderedMarkdown mjx-container, .jp-RenderedLatex mjx-container"
+        ).count()
+        assert rendered > 0, path.name
+        raw = page.locator(".jp-RenderedLatex").evaluate_all(
+            "els => els.filter(e => !e.querySelector('mjx-container')).map(e => e.textContent)"
+        )
+        assert raw == [], f"{path.name}: LaTeX output left untypeset: {raw[:3]}"
     assert not traffic.problems()
 
 
