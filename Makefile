@@ -44,7 +44,7 @@ unit: env
 	$(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q
 
 nbval: env
-	$(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg -p no:doctest notebooks -q
+	$(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks -q
 
 ## notebooks: re-execute every notebook top to bottom from a clean kernel, storing outputs
 notebooks: env

@@ -357,3 +357,26 @@ def test_float_overflow_is_an_error_not_inf():
         triangle_normal((0, 0, 0), (1e20, 0, 0), (0, 1e20, 0), arithmetic="float32")
     with pytest.raises(OverflowError, match=r"B\.x is outside the float32 range"):
         triangle_normal((0, 0, 0), (1e39, 0, 0), (0, 1, 0), arithmetic="float32")
+
+
+def test_fast_path_agrees_with_the_careful_path():
+    """Plain float tuples take a shortcut; every field must match the general path."""
+    rng = random.Random(9)
+
+    def coordinate() -> float:
+        k = rng.random()
+        if k < 0.1:
+            return rng.choice([0.0, -0.0])
+        if k < 0.5:
+            return math.ldexp(rng.uniform(-1, 1), rng.randint(-1074, 1023))
+        return rng.uniform(-3, 3)
+
+    for _ in range(3000):
+        pts = [tuple(coordinate() for _ in range(3)) for _ in range(3)]
+        winding = rng.choice(["ABC", "ACB"])
+        fast = triangle_normal(*pts, winding=winding)
+        # numpy arrays never take the shortcut: the general path answers
+        careful = triangle_normal(*(np.array(p) for p in pts), winding=winding)
+        assert fast == careful
+        assert fast.exact == careful.exact
+        assert fast.format(6) == careful.format(6)

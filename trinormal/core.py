@@ -727,6 +727,9 @@ def triangle_normal(
 
 
 _SEQ = (tuple, list)
+_FLOAT_ONLY = {float}
+_TWO53 = float(1 << 53)
+_frexp = math.frexp
 _TN, _TD = DEFAULT_TOL.as_integer_ratio()
 _tn_sq, _td_sq = _TN * _TN, _TD * _TD
 
@@ -744,15 +747,30 @@ def _fast_exact(
     if len(a) != 3 or len(b) != 3 or len(c) != 3:
         return None
     vals = (*a, *b, *c)
-    if not _PLAIN.issuperset(map(type, vals)):
+    types = set(map(type, vals))
+    if types == _FLOAT_ONLY:
+        # x = m · 2**(e − 53) with m an exact 53-bit integer: one exponent for all nine
+        fe = list(map(_frexp, vals))
+        emin = min([e for _, e in fe])
+        try:
+            ints = tuple([int(f * _TWO53) << (e - emin) for f, e in fe])
+        except (ValueError, OverflowError):  # NaN or an infinity
+            return None
+        if emin <= 53:
+            D = 1 << (53 - emin)
+        else:
+            D = 1
+            ints = tuple([i << (emin - 53) for i in ints])
+    elif _PLAIN.issuperset(types):
+        try:
+            ratios = [x.as_integer_ratio() for x in vals]
+        except (ValueError, OverflowError):  # NaN or an infinity
+            return None
+        D = max([d for _, d in ratios])
+        top = D.bit_length()
+        ints = tuple([n << (top - d.bit_length()) for n, d in ratios])
+    else:
         return None
-    try:
-        ratios = [x.as_integer_ratio() for x in vals]
-    except (ValueError, OverflowError):  # NaN or an infinity
-        return None
-    D = max([d for _, d in ratios])
-    top = D.bit_length()
-    ints = tuple([n << (top - d.bit_length()) for n, d in ratios])
     ax, ay, az, bx, by, bz, cx, cy, cz = ints
     if abc:
         ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az

@@ -66,7 +66,7 @@ def show(fig: Figure, alt: str | None = None) -> None:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=100, facecolor=fig.get_facecolor())
     plt.close(fig)
-    display(Image(data=buf.getvalue(), format="png", alt=text))
+    display(Image(data=buf.getvalue(), format="png", alt=text))  # type: ignore[no-untyped-call]
 
 
 # --------------------------------------------------------------------------- right-hand rule, bars
