@@ -14,7 +14,7 @@ from PIL import Image
 
 from trinormal import Winding, triangle_normal
 from trinormal import widgets as tw
-from trinormal.exercises import check, get
+from trinormal.exercises import check, get, names
 from trinormal.widgets import COORDINATES, Explorer
 
 KEYS = ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz")
@@ -383,22 +383,30 @@ def test_repr_names_the_state():
 
 
 def test_notebook_05_exercises_are_registered_and_checkable():
-    assert check("05-minus-x", [(0, 0, 0), (0, 0, 1), (0, 1, 0)])
-    assert triangle_normal((0, 0, 0), (0, 0, 1), (0, 1, 0)).unit_normal == (-1.0, 0.0, 0.0)
-    flipped = check("05-minus-x", [(0, 0, 0), (0, 1, 0), (0, 0, 1)])
-    assert not flipped and "+x" in flipped.message
-    assert not check("05-minus-x", [(0, 0, 0), (1, 1, 1), (2, 2, 2)])
-    assert not check("05-minus-x", [(0, 0, 0), (1, 0, 0), (0, 1, 0)])
+    down = [(0, 0, 1), (1, 0, 1), (0, 1, 1)]
+    assert triangle_normal(*down, winding="ACB").unit_normal == (0.0, 0.0, -1.0)
+    assert check("05-down-acb", down)
+    up = check("05-down-acb", [down[0], down[2], down[1]])
+    assert not up and "swap B and C" in up.message
+    assert not check("05-down-acb", [(0, 0, 0), (1, 1, 1), (2, 2, 2)])
+    assert not check("05-down-acb", [(0, 0, 0), (0, 0, 1), (0, 1, 0)])
+    assert not check("05-down-acb", [(0, 0, 0), (1, 0, 0)])
     a, b = tw.COLLINEAR_AB
     beyond = tuple(2 * q - p for p, q in zip(a, b, strict=True))
     assert check("05-collinear", beyond)
     assert not check("05-collinear", a) and not check("05-collinear", b)
     assert not check("05-collinear", (beyond[0], beyond[1], beyond[2] + 1))
-    a, b, c = tw.DOUBLE_ABC
-    n1 = triangle_normal(a, b, c).exact.normal
-    n2 = triangle_normal(*([2 * x for x in p] for p in (a, b, c))).exact.normal
-    factor = next(y / x for x, y in zip(n1, n2, strict=True) if x != 0)
-    assert check("05-double", factor)
-    assert not check("05-double", 2)
-    assert get("05-double").prompt.startswith("Double every coordinate")
-    assert check("05-double", ...).status == "unanswered"
+    k = tw.SCALE_FACTOR
+    a, b, c = tw.SCALE_ABC
+    before = triangle_normal(a, b, c).area
+    after = triangle_normal(*([k * x for x in p] for p in (a, b, c))).area
+    assert check("05-scale-area", round(after / before))
+    assert abs(after / before - round(after / before)) < 1e-12
+    assert not check("05-scale-area", k)
+    assert get("05-scale-area").prompt.startswith("Multiply every coordinate")
+    assert check("05-scale-area", ...).status == "unanswered"
+    assert {n for n in names() if n.startswith("05-")} == {
+        "05-down-acb",
+        "05-collinear",
+        "05-scale-area",
+    }

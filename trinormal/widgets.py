@@ -919,12 +919,13 @@ class Explorer:
 #: Two vertices given in exercise 05-collinear; the student supplies the third.
 COLLINEAR_AB: tuple[tuple[int, int, int], tuple[int, int, int]] = ((1, 2, 0), (3, 3, 1))
 
-#: The triangle doubled in exercise 05-double.
-DOUBLE_ABC: tuple[tuple[int, int, int], tuple[int, int, int], tuple[int, int, int]] = (
+#: The triangle scaled in exercise 05-scale-area, and the factor.
+SCALE_ABC: tuple[tuple[int, int, int], tuple[int, int, int], tuple[int, int, int]] = (
     (1, 0, 2),
     (3, 1, 0),
     (-1, 2, 1),
 )
+SCALE_FACTOR = 3
 
 
 def _read_points(answer: Any, count: int) -> list[tuple[float, float, float]] | str:
@@ -939,25 +940,25 @@ def _read_points(answer: Any, count: int) -> list[tuple[float, float, float]] | 
 
 
 @exercise(
-    "05-minus-x",
-    "Give three points (A, B, C) whose normal, in the order A→B→C, points along −x: "
-    "the unit normal must be exactly (−1, 0, 0).",
+    "05-down-acb",
+    "Give three points (A, B, C) whose unit normal in the order A→C→B is exactly (0, 0, −1): "
+    "the triangle faces straight down when it is walked A→C→B.",
     replace=True,
 )
-def _check_minus_x(answer: Any) -> bool | tuple[bool, str]:
+def _check_down_acb(answer: Any) -> bool | tuple[bool, str]:
     points = _read_points(answer, 3) if answer is not None else "Give three points."
     if isinstance(points, str):
         return False, points
-    r = triangle_normal(points[0], points[1], points[2])
+    r = triangle_normal(points[0], points[1], points[2], winding="ACB")
     if r.degenerate or r.unit_normal is None:
         return False, "These points make no triangle (zero area), so there is no normal at all."
-    if r.unit_normal == (-1.0, 0.0, 0.0):
+    if r.unit_normal == (0.0, 0.0, -1.0):
         return True
-    if r.unit_normal == (1.0, 0.0, 0.0):
-        return False, "Your normal points along +x: swap B and C to turn it over."
+    if r.unit_normal == (0.0, 0.0, 1.0):
+        return False, "In the order A→C→B your normal points up (+z): swap B and C."
     return False, (
-        "The normal must have no y or z part: put all three points in one plane x = constant, "
-        "then check the order with the right-hand rule."
+        "The normal must have no x or y part: put all three points at the same height z, "
+        "then check the order A→C→B with the right-hand rule."
     )
 
 
@@ -983,28 +984,32 @@ def _check_collinear(answer: Any) -> bool | tuple[bool, str]:
 
 
 @exercise(
-    "05-double",
-    f"Double every coordinate of A = {DOUBLE_ABC[0]}, B = {DOUBLE_ABC[1]}, C = {DOUBLE_ABC[2]}. "
-    "By what number is N multiplied?",
+    "05-scale-area",
+    f"Multiply every coordinate of A = {SCALE_ABC[0]}, B = {SCALE_ABC[1]}, C = {SCALE_ABC[2]} "
+    f"by {SCALE_FACTOR}. By what number is the area multiplied?",
     replace=True,
 )
-def _check_double(answer: Any) -> bool | tuple[bool, str]:
+def _check_scale_area(answer: Any) -> bool | tuple[bool, str]:
     try:
         value = Fraction(*parse_coordinate(answer, "your answer"))
     except (TypeError, ValueError) as error:
         return False, f"Answer with one number: {error}."
-    factor = _doubling_factor()
-    if value == factor:
+    if value == _area_factor():
         return True
-    if value == 2:
-        return False, "Each edge doubles, but N is a product of two edges."
-    return False, "Compare one nonzero component of N before and after doubling."
+    if value == SCALE_FACTOR:
+        return False, "Each edge grows by that factor, but the area is a product of two edges."
+    return False, "Compare the area before and after, or think of what doubling did to N."
 
 
-def _doubling_factor() -> Fraction:
-    """Measure N(2A, 2B, 2C) / N(A, B, C) with the exact core."""
-    a, b, c = DOUBLE_ABC
-    n1 = triangle_normal(a, b, c).exact.normal
-    a2, b2, c2 = (tuple(2 * x for x in p) for p in DOUBLE_ABC)
-    n2 = triangle_normal(a2, b2, c2).exact.normal
-    return next(y / x for x, y in zip(n1, n2, strict=True) if x != 0)
+def _area_factor() -> Fraction:
+    """Measure area(kA, kB, kC) / area(A, B, C) exactly: the square root of the |N|² ratio."""
+    a, b, c = SCALE_ABC
+    k = SCALE_FACTOR
+    before = triangle_normal(a, b, c).exact.magnitude_squared
+    ka, kb, kc = (tuple(k * x for x in p) for p in SCALE_ABC)
+    after = triangle_normal(ka, kb, kc).exact.magnitude_squared
+    ratio = after / before
+    root = Fraction(math.isqrt(ratio.numerator), math.isqrt(ratio.denominator))
+    if root * root != ratio:  # pragma: no cover - scaling by an integer keeps it a square
+        raise ArithmeticError(f"the area ratio {ratio} is not a perfect square")
+    return root
