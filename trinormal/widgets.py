@@ -785,7 +785,7 @@ class Explorer:
                 middle = _add(A, vec, 0.5)
                 away = _sub(middle, centre)
                 length = _norm(away)
-                spot = _add(middle, away, 0.05 * span / length) if length > 0 else middle
+                spot = _add(middle, away, 0.09 * span / length) if length > 0 else middle
             art["tip_" + name].set_data_3d([spot[0]], [spot[1]], [spot[2]])
         visible_n = not r.degenerate
         art["arrow_N"].set_visible(visible_n)
