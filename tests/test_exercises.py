@@ -164,3 +164,18 @@ def test_modules_named_exercises_star_are_discovered(monkeypatch, tmp_path):
         import sys
 
         sys.modules.pop("trinormal.exercises_zz_test", None)
+
+
+def test_check_finds_exercises_of_every_notebook_without_imports():
+    """A fresh interpreter: check() must find the explorer's exercises by itself."""
+    import subprocess
+    import sys
+
+    code = (
+        "from trinormal.exercises import check, names\n"
+        "r = check('05-collinear', ...)\n"
+        "assert 'not answered yet' in str(r), r\n"
+        "assert any(n.startswith('05-') for n in names())\n"
+    )
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr

@@ -42,10 +42,10 @@ or ``(ok, hint)``:
 >>> check("99-demo-word", "dot")
 99-demo-word: not yet. The dot product is a number.
 
-The registering module must be imported before :func:`check` can find its
-exercises. A notebook can import it; or name the module
-``trinormal/exercises_<topic>.py``, and :func:`check` imports every such
-module by itself the first time a name is not found.
+The first time a name is not found, :func:`check` imports every
+``trinormal/exercises_<topic>.py`` module and the package modules listed in
+``_REGISTERING_MODULES`` (the explorer's and the mesh notebooks'), so a
+student never has to import anything for ``check`` to know an exercise.
 """
 
 from __future__ import annotations
@@ -251,12 +251,16 @@ def exercise(
     return decorate
 
 
+#: Package modules that register exercises for their own notebooks.
+_REGISTERING_MODULES = ("trinormal.widgets", "trinormal.mesh")
+
+
 def _discover() -> None:
-    """Import every ``trinormal.exercises_*`` module, so its exercises register."""
+    """Import every module that registers exercises, so :func:`check` finds them all."""
     import trinormal
 
     for info in pkgutil.iter_modules(trinormal.__path__):
-        if info.name.startswith("exercises_"):
+        if info.name.startswith("exercises_") or f"trinormal.{info.name}" in _REGISTERING_MODULES:
             importlib.import_module(f"trinormal.{info.name}")
 
 
