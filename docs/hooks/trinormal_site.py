@@ -84,17 +84,17 @@ def widget_note(text_plain: str) -> str:
     readout = ""
     if text_plain.strip():
         readout = (
-            '<pre class="tn-widget-readout" aria-label="The explorer\'s readout when the notebook '
-            f'was last run">{html.escape(text_plain.rstrip())}</pre>'
+            "<p>The readout when the notebook was last run:</p>"
+            f'<pre class="tn-widget-readout">{html.escape(text_plain.rstrip())}</pre>'
         )
     return (
         '<div class="admonition note tn-widget-note">'
         '<p class="admonition-title">Interactive widget</p>'
-        "<p>In JupyterLab this output is a live explorer: drag a slider, flip the vertex order "
-        "or change the decimal places, and the numbers and the figure follow. A static web page "
-        "has no Python kernel to compute with, so here you see a picture of the explorer and the "
-        "numbers it showed when the notebook was last run. For a live version in this browser, "
-        'open the <a href="../../calculator/">Calculator</a>.</p>'
+        "<p>In JupyterLab this output is interactive: drag a slider, flip the vertex order or "
+        "change the decimal places, and the numbers and the figure follow. A static web page has "
+        "no Python kernel to compute with, so here you see a picture of the explorer instead. "
+        'For a live version in this browser, open the <a href="../../calculator/">Calculator</a>.'
+        "</p>"
         f'<p><img src="../../{EXPLORER_PNG}" alt="{html.escape(explorer_alt())}" '
         'width="720" loading="lazy"></p>'
         f"{readout}</div>"
@@ -117,8 +117,8 @@ def static_notebook(path: Path) -> dict[str, Any]:
                 plain = data.get("text/plain", "")
                 if isinstance(plain, list):
                     plain = "".join(plain)
-                if re.fullmatch(r"\s*\w+\(children=.*|\s*", plain, flags=re.S):
-                    plain = ""  # ipywidgets' repr of a layout box is noise, not a readout
+                if re.fullmatch(r"\s*(?:[A-Z]\w*\(.*\))?\s*", plain, flags=re.S):
+                    plain = ""  # a widget's repr, IntSlider(value=0), is noise, not a readout
                 new.append(
                     {
                         "output_type": "display_data",
