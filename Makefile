@@ -27,8 +27,12 @@ env: $(UV_DEP)
 	$(UV) sync --locked --all-groups --python "$$(command -v $(PYTHON))"
 
 ## lab: open JupyterLab on the notebooks (the main job)
+# No news feed or update check: nothing is fetched from the internet. Root needs --allow-root.
+LAB_FLAGS := --LabApp.news_url=None --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate \
+	$(if $(filter 0,$(shell id -u)),--allow-root)
+
 lab: env
-	$(RUN) jupyter lab notebooks
+	$(RUN) jupyter lab notebooks $(LAB_FLAGS)
 
 ## test: lint, types, unit/property/doctests, notebooks (nbval), the site and its browser tests
 test: env lint types unit nbval docs-build browser
