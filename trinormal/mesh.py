@@ -80,6 +80,9 @@ _BLOCK = 8192
 _HI = 2.0**900
 _LO = 2.0**-900
 
+# One vertex row (3 float64) as a single item, so a gather moves whole rows.
+_ROW = np.dtype((np.void, 24))
+
 
 # --------------------------------------------------------------------------- validation
 
@@ -165,29 +168,20 @@ class _Block:
 
     def __init__(self, n: int) -> None:
         e = np.empty
-        self.ax, self.ay, self.az = e(n), e(n), e(n)
-        self.ux, self.uy, self.uz = e(n), e(n), e(n)
-        self.vx, self.vy, self.vz = e(n), e(n), e(n)
-        self.nx, self.ny, self.nz = e(n), e(n), e(n)
-        self.ss, self.t = e(n), e(n)
+        self.g = e((3, n, 3))  # the corners A, B, C of each face; then A, U, V
+        self.gv = self.g.view(_ROW).reshape(3, n)  # the same memory, one item per corner
+        self.n, self.sq = e((n, 3)), e((n, 3))
+        self.ss, self.d, self.q, self.t = e(n), e(n), e(n), e(n)
         self.b1, self.b2 = e(n, dtype=bool), e(n, dtype=bool)
 
     def view(self, n: int) -> _Block:
-        """Return the first ``n`` entries of every scratch array (for the last, shorter block)."""
+        """Return the first ``n`` rows of every scratch array (for the last, shorter block)."""
         out = object.__new__(_Block)
-        for name, arr in self.__dict__.items():
-            setattr(out, name, arr[:n])
+        out.g = self.g[:, :n]
+        out.gv = self.gv[:, :n]
+        for name in ("n", "sq", "ss", "d", "q", "t", "b1", "b2"):
+            setattr(out, name, getattr(self, name)[:n])
         return out
-
-
-class _Rows:
-    """Per-face results of one block: what the public functions assemble."""
-
-    def __init__(self, unit: FloatArray, deg: BoolArray, mag: FloatArray, exp: IntArray) -> None:
-        self.unit = unit  # (n, 3) unit normals, zero rows where degenerate
-        self.deg = deg  # (n,) degenerate
-        self.mag = mag  # (n,) |N| = mag * 2**exp
-        self.exp = exp
 
 
 def _careful(
@@ -199,7 +193,8 @@ def _careful(
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray, BoolArray]:
     """Rows at extreme scales: edges scaled by powers of two before the cross product.
 
-    Returns the scaled edges U', V' (k, 3) and |U' × V'| (k,); the normal
+    Returns the edges U', V' (k, 3) scaled by one common power of two and
+    |U' × V'| (k,), for the corner angles; the normal
     scaled once more to a largest component in [0.5, 1), N'' (k, 3), with |N''|
     and the exponent ``e`` such that N = N'' · 2**e; and the degeneracy mask.
     """
@@ -217,10 +212,14 @@ def _careful(
             v[big] = c[big] * 0.25 - a[big] * 0.25
     eu = np.frexp(np.abs(u).max(axis=1))[1]
     ev = np.frexp(np.abs(v).max(axis=1))[1]
+    # for the corner angles: both edges scaled alike, so their dot products compare
+    common = np.maximum(eu, ev)[:, None]
+    uc, vc = np.ldexp(u, -common), np.ldexp(v, -common)
+    nc = np.cross(uc, vc)
+    nn = np.sqrt(np.einsum("ij,ij->i", nc, nc))
     u = np.ldexp(u, -eu[:, None])
     v = np.ldexp(v, -ev[:, None])
     n = np.cross(u, v)
-    nn = np.sqrt(np.einsum("ij,ij->i", n, n))
     uu = np.einsum("ij,ij->i", u, u)
     vv = np.einsum("ij,ij->i", v, v)
     en = np.frexp(np.abs(n).max(axis=1))[1]
@@ -230,7 +229,7 @@ def _careful(
     deg = np.einsum("ij,ij->i", n, n) <= tol2 * uu * vv
     deg |= mag == 0.0
     exp = (eu + ev + en + 2 * pre).astype(np.intp)
-    return u, v, nn, ns, mag, exp, deg
+    return uc, vc, nn, ns, mag, exp, deg
 
 
 def _normalize_rows(s: FloatArray) -> FloatArray:
@@ -267,89 +266,71 @@ def _face_rows(
     nf = f.shape[0]
     tol2 = tol * tol
     exps: IntArray | None = None
+    rows_v = np.ascontiguousarray(np.stack([x, y, z], axis=1)).view(_ROW).ravel()
     full = _Block(min(_BLOCK, max(nf, 1)))
-    take, mul, sub, add = np.take, np.multiply, np.subtract, np.add
+    mul, sub, add = np.multiply, np.subtract, np.add
     with np.errstate(all="ignore"):
         for s in _blocks(nf):
             e = min(s + _BLOCK, nf)
             w = full if e - s == _BLOCK else full.view(e - s)
-            i0, i1, i2 = f[s:e, 0], f[s:e, 1], f[s:e, 2]
-            take(x, i0, out=w.ax)
-            take(y, i0, out=w.ay)
-            take(z, i0, out=w.az)
-            take(x, i1, out=w.ux)
-            take(y, i1, out=w.uy)
-            take(z, i1, out=w.uz)
-            take(x, i2, out=w.vx)
-            take(y, i2, out=w.vy)
-            take(z, i2, out=w.vz)
-            sub(w.ux, w.ax, out=w.ux)
-            sub(w.uy, w.ay, out=w.uy)
-            sub(w.uz, w.az, out=w.uz)
-            sub(w.vx, w.ax, out=w.vx)
-            sub(w.vy, w.ay, out=w.vy)
-            sub(w.vz, w.az, out=w.vz)
+            # gather whole rows: one memory access per corner, not one per coordinate
+            np.take(rows_v, f[s:e].T, out=w.gv)
+            g, n, sq, ss, d, q, t = w.g, w.n, w.sq, w.ss, w.d, w.q, w.t
+            sub(g[1], g[0], out=g[1])  # U = B - A
+            sub(g[2], g[0], out=g[2])  # V = C - A
+            ux, uy, uz = g[1, :, 0], g[1, :, 1], g[1, :, 2]
+            vx, vy, vz = g[2, :, 0], g[2, :, 1], g[2, :, 2]
             # N = U × V
-            mul(w.uy, w.vz, out=w.nx)
-            mul(w.uz, w.vy, out=w.t)
-            sub(w.nx, w.t, out=w.nx)
-            mul(w.uz, w.vx, out=w.ny)
-            mul(w.ux, w.vz, out=w.t)
-            sub(w.ny, w.t, out=w.ny)
-            mul(w.ux, w.vy, out=w.nz)
-            mul(w.uy, w.vx, out=w.t)
-            sub(w.nz, w.t, out=w.nz)
-            # |N|², |U|² (in ax), |V|² (in ay)
-            mul(w.nx, w.nx, out=w.ss)
-            mul(w.ny, w.ny, out=w.t)
-            add(w.ss, w.t, out=w.ss)
-            mul(w.nz, w.nz, out=w.t)
-            add(w.ss, w.t, out=w.ss)
-            mul(w.ux, w.ux, out=w.ax)
-            mul(w.uy, w.uy, out=w.t)
-            add(w.ax, w.t, out=w.ax)
-            mul(w.uz, w.uz, out=w.t)
-            add(w.ax, w.t, out=w.ax)
-            mul(w.vx, w.vx, out=w.ay)
-            mul(w.vy, w.vy, out=w.t)
-            add(w.ay, w.t, out=w.ay)
-            mul(w.vz, w.vz, out=w.t)
-            add(w.ay, w.t, out=w.ay)
-            if angles_out is not None:
-                # U·V (in az), kept for the corner angles
-                mul(w.ux, w.vx, out=w.az)
-                mul(w.uy, w.vy, out=w.t)
-                add(w.az, w.t, out=w.az)
-                mul(w.uz, w.vz, out=w.t)
-                add(w.az, w.t, out=w.az)
-            # |U|²|V|² (in t); rows outside the safe range go to the careful path
-            mul(w.ax, w.ay, out=w.t)
-            np.less(w.t, _HI, out=w.b1)
-            np.greater(w.ss, _LO, out=w.b2)
-            np.logical_and(w.b1, w.b2, out=w.b1)
+            mul(uy, vz, out=n[:, 0])
+            mul(uz, vy, out=t)
+            sub(n[:, 0], t, out=n[:, 0])
+            mul(uz, vx, out=n[:, 1])
+            mul(ux, vz, out=t)
+            sub(n[:, 1], t, out=n[:, 1])
+            mul(ux, vy, out=n[:, 2])
+            mul(uy, vx, out=t)
+            sub(n[:, 2], t, out=n[:, 2])
+            # |N|² and U·V
+            mul(n, n, out=sq)
+            add(sq[:, 0], sq[:, 1], out=ss)
+            add(ss, sq[:, 2], out=ss)
+            mul(g[1], g[2], out=sq)
+            add(sq[:, 0], sq[:, 1], out=d)
+            add(d, sq[:, 2], out=d)
+            # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
+            mul(d, d, out=q)
+            add(q, ss, out=q)
+            # (NaN fails every comparison, so it goes to the careful path too)
+            careful = not (q.max() < _HI and ss.min() > _LO)
+            if careful:
+                np.less(q, _HI, out=w.b1)
+                np.greater(ss, _LO, out=w.b2)
+                np.logical_and(w.b1, w.b2, out=w.b1)
             # degenerate: |N|² <= tol² |U|²|V|²
-            mul(w.t, tol2, out=w.t)
-            np.less_equal(w.ss, w.t, out=w.b2)
+            mul(q, tol2, out=q)
+            np.less_equal(ss, q, out=w.b2)
             if deg_out is not None:
                 deg_out[s:e] = w.b2
-            np.sqrt(w.ss, out=w.ss)  # |N|
+            np.sqrt(ss, out=ss)  # |N|
             if mag_out is not None:
-                mag_out[s:e] = w.ss
+                mag_out[s:e] = ss
             if angles_out is not None:
                 # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
-                np.arctan2(w.ss, w.az, out=angles_out[s:e, 0])
-                sub(w.ax, w.az, out=w.ax)
-                np.arctan2(w.ss, w.ax, out=angles_out[s:e, 1])
-                add(angles_out[s:e, 0], angles_out[s:e, 1], out=w.t)
-                sub(math.pi, w.t, out=angles_out[s:e, 2])
+                ang = angles_out[s:e]
+                np.arctan2(ss, d, out=ang[:, 0])
+                mul(g[1], g[1], out=sq)
+                add(sq[:, 0], sq[:, 1], out=q)
+                add(q, sq[:, 2], out=q)
+                sub(q, d, out=q)
+                np.arctan2(ss, q, out=ang[:, 1])
+                add(ang[:, 0], ang[:, 1], out=t)
+                sub(math.pi, t, out=ang[:, 2])
             if unit_out is not None:
-                np.divide(1.0, w.ss, out=w.t)
+                np.divide(1.0, ss, out=t)
                 if w.b2.any():
-                    w.t[w.b2] = 0.0
-                mul(w.nx, w.t, out=unit_out[s:e, 0])
-                mul(w.ny, w.t, out=unit_out[s:e, 1])
-                mul(w.nz, w.t, out=unit_out[s:e, 2])
-            if not w.b1.all():
+                    t[w.b2] = 0.0
+                mul(n, t[:, None], out=unit_out[s:e])
+            if careful:
                 rows = np.flatnonzero(~w.b1)
                 u, v, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
                 at = s + rows
@@ -445,9 +426,11 @@ def face_normals(
     unit_n = np.empty((nf, 3))
     mag = np.empty(nf)
     exps = _face_rows(x, y, z, f, t, unit_out=unit_n, mag_out=mag)
-    with np.errstate(over="ignore"):
-        scale = mag if exps is None else np.ldexp(mag, exps)
-        return (unit_n * scale[:, None]).astype(dtype, copy=False)
+    raw = unit_n * mag[:, None]
+    if exps is not None:  # rows from the careful path: |N| = mag * 2**exp, maybe out of range
+        with np.errstate(over="ignore", under="ignore"):
+            raw = np.ldexp(raw, exps[:, None])
+    return raw.astype(dtype, copy=False)
 
 
 def degenerate_faces(
