@@ -20,7 +20,9 @@ __all__ = [
     "FACECOLOR",
     "PALETTE",
     "component_bar_chart",
+    "precision_error_figure",
     "right_hand_rule_figure",
+    "shaded_mesh_figure",
     "show",
 ]
 
@@ -264,4 +266,124 @@ def component_bar_chart(
     ax.margins(y=0.2)
     ax.legend(title="component", loc="best", fontsize=9)
     fig.alt_text = f"Bar chart, {title}. " + "; ".join(described) + "."  # type: ignore[attr-defined]
+    return fig
+
+
+# ------------------------------------------------------------------ mesh notebooks (06, 07)
+
+
+def precision_error_figure(
+    sines: Mapping[str, Any],
+    errors: Mapping[str, Any],
+    *,
+    tol: float | None = None,
+    title: str = "Direction error of the unit normal",
+) -> Figure:
+    """Plot direction errors (radians) against the sine of the edge angle, log-log.
+
+    Parameters
+    ----------
+    sines, errors : mapping of label to array, shape (n,)
+        For each series (such as ``"float32"``), the exact sine of each
+        triangle and the angle between its computed and exact unit normals.
+        Zero errors are drawn at the bottom of the axis.
+    tol : float, optional
+        Draw the degeneracy threshold as a vertical line.
+    title : str
+        The figure title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The chart, with ``fig.alt_text`` set.
+    """
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    fig, ax = plt.subplots(figsize=(7, 4.2), facecolor=FACECOLOR)
+    ax.set_facecolor(FACECOLOR)
+    colors = [PALETTE["vermillion"], PALETTE["blue"], PALETTE["green"], PALETTE["purple"]]
+    floor = 1e-18
+    for (label, s), color in zip(sines.items(), colors, strict=False):
+        e = np.maximum(np.asarray(errors[label], dtype=float), floor)
+        ax.scatter(np.asarray(s, dtype=float), e, s=10, color=color, label=label, alpha=0.8)
+    if tol is not None:
+        ax.axvline(tol, color=PALETTE["black"], linestyle="--", linewidth=1, label=f"tol = {tol:g}")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("sine of the angle between the edges (1 = right angle, 0 = a line)")
+    ax.set_ylabel("direction error (radians)")
+    ax.set_title(title)
+    ax.legend(loc="upper right", fontsize=9)
+    fig.tight_layout()
+    fig.alt_text = (  # type: ignore[attr-defined]
+        f"Log-log scatter plot, {title}: the error of each precision grows as the sine "
+        "shrinks, roughly as unit roundoff divided by the sine."
+    )
+    return fig
+
+
+def shaded_mesh_figure(
+    vertices: Any,
+    faces: Any,
+    panels: Mapping[str, Any],
+    *,
+    elev: float = 25.0,
+    azim: float = -60.0,
+    title: str | None = None,
+) -> Figure:
+    """Draw one mesh several times side by side, each face filled with a brightness.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+    panels : mapping of title to array_like, shape (F,)
+        For each panel, the brightness of every face, from 0 (black) to 1 (lit);
+        NaN marks a face that is not drawn (culled).
+    elev, azim : float
+        The camera's elevation and azimuth in degrees (matplotlib's convention).
+    title : str, optional
+        A title over all the panels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The panels, with ``fig.alt_text`` set.
+    """
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from matplotlib.colors import LinearSegmentedColormap
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    v = np.asarray(vertices, dtype=float)
+    f = np.asarray(faces)
+    cmap = LinearSegmentedColormap.from_list("lit", ["#101010", PALETTE["sky"], "#ffffff"])
+    n = len(panels)
+    fig = plt.figure(figsize=(3.6 * n, 3.8), facecolor=FACECOLOR)
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    mid, half = (lo + hi) / 2, (hi - lo).max() / 2
+    described = []
+    for k, (name, values) in enumerate(panels.items()):
+        ax = fig.add_subplot(1, n, k + 1, projection="3d")
+        ax.set_facecolor(FACECOLOR)
+        b = np.asarray(values, dtype=float)
+        keep = ~np.isnan(b)
+        colors = cmap(np.clip(b[keep], 0, 1))
+        poly = Poly3DCollection(v[f[keep]], facecolors=colors, edgecolors="none")
+        ax.add_collection3d(poly)
+        for setlim, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid, strict=True):
+            setlim(m - half, m + half)
+        ax.set_box_aspect((1, 1, 1))
+        ax.view_init(elev=elev, azim=azim)
+        ax.set_axis_off()
+        ax.set_title(name, fontsize=10)
+        drawn = int(keep.sum())
+        described.append(f"{name} ({drawn} of {len(b)} faces drawn)")
+    if title:
+        fig.suptitle(title)
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=0.88 if title else 0.95, wspace=0)
+    fig.alt_text = "Shaded renderings of a mesh: " + "; ".join(described) + "."  # type: ignore[attr-defined]
     return fig
