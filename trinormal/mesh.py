@@ -844,3 +844,80 @@ def terrain(
     p10, p01, p11 = p00 + 1, p00 + nx, p00 + nx + 1
     f = np.stack([p00, p10, p11, p00, p11, p01], axis=1).reshape(-1, 3)
     return v, f.astype(np.intp)
+
+
+# --------------------------------------------------------------------------- notebook exercises
+
+
+def _register_exercises() -> None:
+    """Register the exercises of notebooks 06, 07 and 08 (see :mod:`trinormal.exercises`)."""
+    from trinormal.core import triangle_normal
+    from trinormal.exercises import exercise
+
+    def cube_corner_degrees() -> float:
+        v, f = cube()
+        a = vertex_normals(v, f, "angle")[7]
+        b = vertex_normals(v, f, "area")[7]
+        return math.degrees(math.atan2(float(np.linalg.norm(np.cross(a, b))), float(a @ b)))
+
+    def scaled_normal() -> tuple[float, ...]:
+        m = np.diag([2.0, 1.0, 1.0])
+        n = np.linalg.inv(m).T @ np.array([1.0, 1.0, 0.0])
+        return tuple(float(x) for x in n / np.linalg.norm(n))
+
+    items: list[tuple[str, str, Any, float | None, str]] = [
+        (
+            "06-float64-bits",
+            "How many significand bits does a float64 carry (numpy.finfo helps)?",
+            lambda: int(np.finfo(np.float64).nmant) + 1,
+            None,
+            "nmant counts the stored bits; one more bit is implicit.",
+        ),
+        (
+            "06-float32-digits",
+            "About how many decimal digits does float32 carry? (24 bits times log10 2)",
+            lambda: 24 * math.log10(2),
+            0.5,
+            "Each bit is worth log10(2), about 0.301 decimal digits.",
+        ),
+        (
+            "06-needle-degenerate",
+            "With the default tol, is (0,0,0), (1,0,0), (1,1e-13,0) degenerate? (True/False)",
+            lambda: triangle_normal((0, 0, 0), (1, 0, 0), (1, 1e-13, 0)).degenerate,
+            None,
+            "Compare the sine of the angle at A with DEFAULT_TOL.",
+        ),
+        (
+            "07-cube-corner-degrees",
+            "Angle in degrees between the area- and angle-weighted normals at cube vertex 7.",
+            cube_corner_degrees,
+            0.01,
+            "Compute both with mesh.vertex_normals and measure the angle between them.",
+        ),
+        (
+            "07-lambert",
+            "Lambert brightness max(0, n · l) for n = (0, 0, 1) and l = (0, 0.6, 0.8).",
+            0.8,
+            1e-9,
+            "The dot product of the two unit vectors, clipped at zero.",
+        ),
+        (
+            "08-scaled-normal",
+            "Unit normal of a plane with normal (1, 1, 0)/√2 after scaling x by 2.",
+            scaled_normal,
+            1e-4,
+            "Transform the normal by the inverse transpose, then normalise.",
+        ),
+        (
+            "08-det-cross",
+            "For M = diag(2, 3, 4), U = (1, 0, 0), V = (0, 1, 0): what is (MU) × (MV)?",
+            (0.0, 0.0, 6.0),
+            1e-9,
+            "det(M) · M^-T N with N = U × V, or just multiply it out.",
+        ),
+    ]
+    for name, prompt, expected, tol, hint in items:
+        exercise(name, prompt, expected, tol=tol, hint=hint, replace=True)
+
+
+_register_exercises()
