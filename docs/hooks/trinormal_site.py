@@ -19,6 +19,7 @@ import html
 import io
 import json
 import logging
+import os
 import re
 import shlex
 import tempfile
@@ -244,11 +245,18 @@ def _cli(args: list[str], page: Page, config: MkDocsConfig) -> str:
     from trinormal.cli import main
 
     out, err = io.StringIO(), io.StringIO()
+    columns = os.environ.get("COLUMNS")
+    os.environ["COLUMNS"] = "88"  # argparse wraps --help to the terminal: keep builds reproducible
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         try:
             status = main(args)
         except SystemExit as exc:  # argparse's --help exits
             status = exc.code if isinstance(exc.code, int) else 0
+        finally:
+            if columns is None:
+                os.environ.pop("COLUMNS", None)
+            else:
+                os.environ["COLUMNS"] = columns
     text = out.getvalue() + err.getvalue()
     lines = ["```console", "$ trinormal " + shlex.join(args), text.rstrip("\n")]
     if status:
