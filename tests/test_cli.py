@@ -131,3 +131,17 @@ def test_console_script_and_in_process_main(capsys):
         text=True,
     )
     assert "usage: trinormal" in p.stdout
+
+
+def test_output_piped_into_a_reader_that_stops_early():
+    """``trinormal ... --json | head -0``: no traceback when the pipe is already closed."""
+    p = subprocess.Popen(
+        [sys.executable, "-m", "trinormal", "0,0,0", "1,0,0", "0,1,0", "--json"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    assert p.stdout is not None and p.stderr is not None
+    p.stdout.close()  # the reader is gone before the calculator writes a byte
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=60) == 0
+    assert "Traceback" not in err and "BrokenPipeError" not in err
