@@ -329,7 +329,9 @@ def _face_rows(
                 np.divide(1.0, ss, out=t)
                 if w.b2.any():
                     t[w.b2] = 0.0
-                mul(n, t[:, None], out=unit_out[s:e])
+                out = unit_out[s:e]
+                for k in range(3):  # column by column: a broadcast over rows of 3 is slow
+                    mul(n[:, k], t, out=out[:, k])
             if careful:
                 rows = np.flatnonzero(~w.b1)
                 u, v, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
@@ -564,11 +566,11 @@ def vertex_normals(
     else:
         _face_rows(x, y, z, f, t, unit_out=unit)
         w = np.ones((nf, 3))
-    idx = f.ravel()
+    idx = f.T.ravel()  # corner by corner: all first corners, then all second, then third
     acc = np.empty((nv, 3))
-    wc = np.empty((nf, 3))
+    wc = np.empty((3, nf))
     for k in range(3):
-        np.multiply(w, unit[:, k, None], out=wc)
+        np.multiply(w.T, unit[:, k], out=wc)
         acc[:, k] = np.bincount(idx, weights=wc.ravel(), minlength=nv)
     return _normalize_rows(acc).astype(dtype, copy=False)
 
