@@ -153,11 +153,10 @@ def _check_tol(tol: float) -> float:
 
 def _prepare(
     vertices: npt.ArrayLike, faces: npt.ArrayLike
-) -> tuple[FloatArray, FloatArray, FloatArray, IntArray, np.dtype[Any]]:
+) -> tuple[FloatArray, IntArray, np.dtype[Any]]:
     v, dtype = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
-    x, y, z = (np.ascontiguousarray(v[:, k]) for k in range(3))
-    return x, y, z, f, dtype
+    return np.ascontiguousarray(v), f, dtype
 
 
 # --------------------------------------------------------------------------- the kernel
@@ -247,9 +246,7 @@ def _blocks(n: int) -> range:
 
 
 def _face_rows(
-    x: FloatArray,
-    y: FloatArray,
-    z: FloatArray,
+    vertices: FloatArray,
     f: IntArray,
     tol: float,
     unit_out: FloatArray | None = None,
@@ -266,7 +263,8 @@ def _face_rows(
     nf = f.shape[0]
     tol2 = tol * tol
     exps: IntArray | None = None
-    rows_v = np.ascontiguousarray(np.stack([x, y, z], axis=1)).view(_ROW).ravel()
+    rows_v = vertices.view(_ROW).ravel()  # (V,) items of 24 bytes, no copy
+    x, y, z = vertices[:, 0], vertices[:, 1], vertices[:, 2]
     full = _Block(min(_BLOCK, max(nf, 1)))
     mul, sub, add = np.multiply, np.subtract, np.add
     with np.errstate(all="ignore"):
@@ -334,7 +332,7 @@ def _face_rows(
                     mul(n[:, k], t, out=out[:, k])
             if careful:
                 rows = np.flatnonzero(~w.b1)
-                u, v, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
+                uc, vc, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
                 at = s + rows
                 if deg_out is not None:
                     deg_out[at] = deg
@@ -347,8 +345,8 @@ def _face_rows(
                     safe = np.where(mag == 0.0, 1.0, mag)
                     unit_out[at] = np.where(deg[:, None], 0.0, ns / safe[:, None])
                 if angles_out is not None:
-                    uv = np.einsum("ij,ij->i", u, v)
-                    uu = np.einsum("ij,ij->i", u, u)
+                    uv = np.einsum("ij,ij->i", uc, vc)
+                    uu = np.einsum("ij,ij->i", uc, uc)
                     ang_a = np.arctan2(nn, uv)
                     ang_b = np.arctan2(nn, uu - uv)
                     angles_out[at, 0] = ang_a
@@ -419,15 +417,15 @@ def face_normals(
     array([[0., 0., 1.]])
     """
     t = _check_tol(tol)
-    x, y, z, f, dtype = _prepare(vertices, faces)
+    v, f, dtype = _prepare(vertices, faces)
     nf = f.shape[0]
     if unit:
         out = np.empty((nf, 3), dtype=dtype)
-        _face_rows(x, y, z, f, t, unit_out=out)
+        _face_rows(v, f, t, unit_out=out)
         return out
     unit_n = np.empty((nf, 3))
     mag = np.empty(nf)
-    exps = _face_rows(x, y, z, f, t, unit_out=unit_n, mag_out=mag)
+    exps = _face_rows(v, f, t, unit_out=unit_n, mag_out=mag)
     raw = unit_n * mag[:, None]
     if exps is not None:  # rows from the careful path: |N| = mag * 2**exp, maybe out of range
         with np.errstate(over="ignore", under="ignore"):
@@ -469,9 +467,9 @@ def degenerate_faces(
     array([False,  True])
     """
     t = _check_tol(tol)
-    x, y, z, f, _ = _prepare(vertices, faces)
+    v, f, _ = _prepare(vertices, faces)
     out = np.empty(f.shape[0], dtype=bool)
-    _face_rows(x, y, z, f, t, deg_out=out)
+    _face_rows(v, f, t, deg_out=out)
     return out
 
 
@@ -499,9 +497,9 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
     >>> float(face_areas(v, f).sum())  # a cube of side 2
     24.0
     """
-    x, y, z, f, dtype = _prepare(vertices, faces)
+    v, f, dtype = _prepare(vertices, faces)
     mag = np.empty(f.shape[0])
-    exps = _face_rows(x, y, z, f, DEFAULT_TOL, mag_out=mag)
+    exps = _face_rows(v, f, DEFAULT_TOL, mag_out=mag)
     with np.errstate(over="ignore"):
         area = np.ldexp(mag, (exps if exps is not None else 0) - 1)
     return area.astype(dtype, copy=False)
@@ -550,21 +548,21 @@ def vertex_normals(
     if weighting not in WEIGHTINGS:
         raise ValueError(f"weighting must be one of {', '.join(WEIGHTINGS)}; got {weighting!r}")
     t = _check_tol(tol)
-    x, y, z, f, dtype = _prepare(vertices, faces)
-    nv, nf = x.shape[0], f.shape[0]
+    v, f, dtype = _prepare(vertices, faces)
+    nv, nf = v.shape[0], f.shape[0]
     unit = np.empty((nf, 3))
     if weighting == "angle":
         w = np.empty((nf, 3))
-        _face_rows(x, y, z, f, t, unit_out=unit, angles_out=w)
+        _face_rows(v, f, t, unit_out=unit, angles_out=w)
     elif weighting == "area":
         mag = np.empty(nf)
-        exps = _face_rows(x, y, z, f, t, unit_out=unit, mag_out=mag)
+        exps = _face_rows(v, f, t, unit_out=unit, mag_out=mag)
         if exps is not None:  # bring |N| to one scale, the largest face's exponent
             top = int(exps.max())
             mag = np.ldexp(mag, exps - top)
         w = np.repeat(mag[:, None], 3, axis=1)
     else:
-        _face_rows(x, y, z, f, t, unit_out=unit)
+        _face_rows(v, f, t, unit_out=unit)
         w = np.ones((nf, 3))
     idx = f.T.ravel()  # corner by corner: all first corners, then all second, then third
     acc = np.empty((nv, 3))
