@@ -105,8 +105,9 @@ def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]
     if arr.ndim != 2 or arr.shape[1] != 3:
         raise ValueError(f"vertices must have shape (V, 3), got shape {arr.shape}")
     arr64 = arr.astype(np.float64, copy=False)
-    finite = np.isfinite(arr64)
-    if not finite.all():
+    # two reductions (NaN propagates through min and max) instead of a (V, 3) mask
+    if arr64.size and not (np.isfinite(arr64.min()) and np.isfinite(arr64.max())):
+        finite = np.isfinite(arr64)
         row = int(np.flatnonzero(~finite.all(axis=1))[0])
         axis = "xyz"[int(np.flatnonzero(~finite[row])[0])]
         what = "NaN" if np.isnan(arr64[row]).any() else "infinite"
@@ -117,8 +118,14 @@ def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]
     return arr64, out_dtype
 
 
-def _check_faces(faces: npt.ArrayLike, n_vertices: int | None) -> IntArray:
-    """Return the faces as an intp (F, 3) array, every index checked against ``n_vertices``."""
+def _check_faces(
+    faces: npt.ArrayLike, n_vertices: int | None, check_range: bool = True
+) -> IntArray:
+    """Return the faces as an intp (F, 3) array, every index checked against ``n_vertices``.
+
+    With ``check_range=False`` only the dtype and shape are checked here: the
+    kernel checks the indices block by block, where they are in cache anyway.
+    """
     arr = np.asarray(faces)
     if arr.size == 0:
         if arr.ndim == 2 and arr.shape[1] != 3:
@@ -128,17 +135,25 @@ def _check_faces(faces: npt.ArrayLike, n_vertices: int | None) -> IntArray:
         raise ValueError(f"faces must hold integer vertex indices, got dtype {arr.dtype}")
     if arr.ndim != 2 or arr.shape[1] != 3:
         raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
-    lo, hi = int(arr.min()), int(arr.max())
-    limit = n_vertices if n_vertices is not None else hi + 1
-    if lo < 0 or hi >= limit:
-        bad = (arr < 0) | (arr >= limit)
-        row = int(np.flatnonzero(bad.any(axis=1))[0])
-        index = int(arr[row][bad[row]][0])
-        raise ValueError(
-            f"faces row {row} refers to vertex {index}, but the valid indices are "
-            f"0 to {limit - 1} ({limit} vertices)"
-        )
+    if check_range:
+        lo, hi = int(arr.min()), int(arr.max())
+        limit = n_vertices if n_vertices is not None else hi + 1
+        if lo < 0 or hi >= limit:
+            _raise_range_error(arr, limit)
     return np.ascontiguousarray(arr, dtype=np.intp)
+
+
+def _raise_range_error(arr: npt.NDArray[Any], limit: int) -> None:
+    """Raise the ValueError naming the first row of ``arr`` with an index outside [0, limit)."""
+    bad = (arr < 0) | (arr >= limit)
+    row = int(np.flatnonzero(bad.any(axis=1))[0])
+    index = int(arr[row][bad[row]][0])
+    valid = (
+        f"the valid indices are 0 to {limit - 1} ({limit} vertices)"
+        if limit
+        else "there are no vertices"
+    )
+    raise ValueError(f"faces row {row} refers to vertex {index}, but {valid}")
 
 
 def _check_tol(tol: float) -> float:
@@ -155,7 +170,7 @@ def _prepare(
     vertices: npt.ArrayLike, faces: npt.ArrayLike
 ) -> tuple[FloatArray, IntArray, np.dtype[Any]]:
     v, dtype = _check_vertices(vertices)
-    f = _check_faces(faces, v.shape[0])
+    f = _check_faces(faces, v.shape[0], check_range=False)
     return np.ascontiguousarray(v), f, dtype
 
 
@@ -272,7 +287,13 @@ def _face_rows(
             e = min(s + _BLOCK, nf)
             w = full if e - s == _BLOCK else full.view(e - s)
             # gather whole rows: one memory access per corner, not one per coordinate
-            np.take(rows_v, f[s:e].T, out=w.gv)
+            fb = f[s:e]
+            try:  # take checks the upper bound itself; it would wrap negative indices
+                if fb.min() < 0:
+                    raise IndexError
+                np.take(rows_v, fb.T, out=w.gv)
+            except IndexError:
+                _raise_range_error(f, rows_v.shape[0])
             g, n, sq, ss, d, q, t = w.g, w.n, w.sq, w.ss, w.d, w.q, w.t
             sub(g[1], g[0], out=g[1])  # U = B - A
             sub(g[2], g[0], out=g[2])  # V = C - A
