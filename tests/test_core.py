@@ -371,8 +371,14 @@ def test_fast_path_agrees_with_the_careful_path():
             return math.ldexp(rng.uniform(-1, 1), rng.randint(-1074, 1023))
         return rng.uniform(-3, 3)
 
-    for _ in range(3000):
-        pts = [tuple(coordinate() for _ in range(3)) for _ in range(3)]
+    def moderate() -> float:  # around the fast path's range limits 2**±400
+        if rng.random() < 0.1:
+            return 0.0
+        return math.ldexp(rng.uniform(-1, 1), rng.randint(-420, 420) if rng.random() < 0.3 else 3)
+
+    for i in range(4000):
+        make = coordinate if i % 2 else moderate
+        pts = [tuple(make() for _ in range(3)) for _ in range(3)]
         winding = rng.choice(["ABC", "ACB"])
         fast = triangle_normal(*pts, winding=winding)
         # numpy arrays never take the shortcut: the general path answers

@@ -730,6 +730,10 @@ _SEQ = (tuple, list)
 _FLOAT_ONLY = {float}
 _TWO53 = float(1 << 53)
 _frexp = math.frexp
+_pow2 = math.ldexp
+#: The fast float path handles nonzero coordinates in [2**-400, 2**400): U, V, N and
+#: |N| then stay normal floats, so power-of-two scaling of them is exact.
+_LOW, _HIGH = 2.0**-400, 2.0**400
 _TN, _TD = DEFAULT_TOL.as_integer_ratio()
 _tn_sq, _td_sq = _TN * _TN, _TD * _TD
 
@@ -740,36 +744,51 @@ def _fast_exact(
     """Compute the exact path for plain tuples/lists of floats and ints, with the default tol.
 
     Returns None (and the careful path takes over) for anything else: other
-    types, NaN or infinities, wrong lengths, results beyond the float range.
-    This is the same arithmetic as :func:`_exact`, written out in one function
-    because most calls look like this and Python function calls are not free.
+    types, NaN or infinities, wrong lengths, degenerate triangles, results
+    beyond the float range. This is the same arithmetic as :func:`_exact`,
+    written out in one function because most calls look like this and Python
+    function calls are not free.
     """
     if len(a) != 3 or len(b) != 3 or len(c) != 3:
         return None
     vals = (*a, *b, *c)
     types = set(map(type, vals))
-    if types == _FLOAT_ONLY:
-        # x = m · 2**(e − 53) with m an exact 53-bit integer: one exponent for all nine
-        fe = list(map(_frexp, vals))
-        emin = min([e for _, e in fe])
-        try:
-            ints = tuple([int(f * _TWO53) << (e - emin) for f, e in fe])
-        except (ValueError, OverflowError):  # NaN or an infinity
-            return None
-        if emin <= 53:
-            D = 1 << (53 - emin)
-        else:
-            D = 1
-            ints = tuple([i << (emin - 53) for i in ints])
-    elif _PLAIN.issuperset(types):
-        try:
+    scaled = False  # True: U, V, N convert as float(int) * 2**-s, exactly rounded
+    try:
+        if types == _FLOAT_ONLY:
+            mags = list(map(abs, vals))
+            hi = max(mags)
+            lo = min([x for x in mags if x]) if hi else 1.0
+            if lo >= _LOW and hi < _HIGH:
+                # Every nonzero coordinate is m · 2**(e − 53) with e ≥ e(lo): multiplying
+                # by 2**(53 − e(lo)) turns all nine into integers, exactly.
+                shift = 53 - _frexp(lo)[1]
+                if shift > 0:
+                    p = _pow2(1.0, shift)
+                    ints = tuple([int(x * p) for x in vals])
+                    D = 1 << shift
+                    pinv = 1.0 / p
+                else:
+                    ints = tuple([int(x) for x in vals])
+                    D, pinv = 1, 1.0
+                scaled = True
+            else:  # extreme exponents: one exponent for all nine, via frexp
+                fe = list(map(_frexp, vals))
+                emin = min([e for _, e in fe])
+                ints = tuple([int(f * _TWO53) << (e - emin) for f, e in fe])
+                if emin <= 53:
+                    D = 1 << (53 - emin)
+                else:
+                    D = 1
+                    ints = tuple([i << (emin - 53) for i in ints])
+        elif _PLAIN.issuperset(types):
             ratios = [x.as_integer_ratio() for x in vals]
-        except (ValueError, OverflowError):  # NaN or an infinity
+            D = max([d for _, d in ratios])
+            top = D.bit_length()
+            ints = tuple([n << (top - d.bit_length()) for n, d in ratios])
+        else:
             return None
-        D = max([d for _, d in ratios])
-        top = D.bit_length()
-        ints = tuple([n << (top - d.bit_length()) for n, d in ratios])
-    else:
+    except (ValueError, OverflowError):  # NaN or an infinity
         return None
     ax, ay, az, bx, by, bz, cx, cy, cz = ints
     if abc:
@@ -783,11 +802,24 @@ def _fast_exact(
     uu = ux * ux + uy * uy + uz * uz
     if S * _td_sq <= _tn_sq * uu * (vx * vx + vy * vy + vz * vz):
         return None  # degenerate: the careful path explains why
-    D2 = D * D
     k = max(0, 67 - (S.bit_length() >> 1))
     r = math.isqrt(S << (k << 1))
-    scale = D2 << k
     try:
+        if scaled:
+            # float(int) rounds correctly and a power-of-two factor is exact while the
+            # result stays a normal float, which the bounds _LOW and _HIGH guarantee.
+            f = float
+            p2 = pinv * pinv
+            u = (f(ux) * pinv, f(uy) * pinv, f(uz) * pinv)
+            v = (f(vx) * pinv, f(vy) * pinv, f(vz) * pinv)
+            normal = (f(nx) * p2, f(ny) * p2, f(nz) * p2)
+            magnitude = r / (1 << k) * p2  # r / 2**k is correctly rounded; then exact
+        else:
+            D2 = D * D
+            u = (ux / D, uy / D, uz / D)
+            v = (vx / D, vy / D, vz / D)
+            normal = (nx / D2, ny / D2, nz / D2)
+            magnitude = r / (D2 << k)
         unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)
         res = object.__new__(TriangleNormal)
         object.__setattr__(
@@ -798,11 +830,11 @@ def _fast_exact(
                 "b": (float(b[0]), float(b[1]), float(b[2])),
                 "c": (float(c[0]), float(c[1]), float(c[2])),
                 "winding": Winding.ABC if abc else Winding.ACB,
-                "u": (ux / D, uy / D, uz / D),
-                "v": (vx / D, vy / D, vz / D),
-                "normal": (nx / D2, ny / D2, nz / D2),
-                "magnitude": r / scale,
-                "area": r / (scale << 1),
+                "u": u,
+                "v": v,
+                "normal": normal,
+                "magnitude": magnitude,
+                "area": magnitude * 0.5 if scaled else r / (D * D << (k + 1)),
                 "unit_normal": unit,
                 "degenerate": False,
                 "plane": Plane(unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D)),
