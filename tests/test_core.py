@@ -386,3 +386,21 @@ def test_fast_path_agrees_with_the_careful_path():
         assert fast == careful
         assert fast.exact == careful.exact
         assert fast.format(6) == careful.format(6)
+
+
+def test_fast_path_degeneracy_verdict_at_the_tolerance():
+    """Sines from 1e-13 to 1e-11, at many scales: the fast verdict equals the exact one."""
+    rng = random.Random(12)
+    flips = 0
+    for _ in range(2000):
+        t = 10 ** rng.uniform(-13, -11)
+        s = math.ldexp(1.0, rng.randint(-300, 300))
+        a = (rng.uniform(-1, 1) * s, rng.uniform(-1, 1) * s, 0.0)
+        b = (a[0] + s, a[1], 0.0)
+        c = (a[0] + s * rng.uniform(0.5, 2), a[1] + s * t, s * t * rng.uniform(-1, 1))
+        fast = triangle_normal(a, b, c)
+        careful = triangle_normal(np.array(a), np.array(b), np.array(c))
+        assert fast.degenerate == careful.degenerate
+        assert fast == careful
+        flips += fast.degenerate
+    assert 0 < flips < 2000  # both verdicts occur

@@ -731,6 +731,7 @@ _FLOAT_ONLY = {float}
 _TWO53 = float(1 << 53)
 _frexp = math.frexp
 _pow2 = math.ldexp
+_new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 #: The fast float path handles nonzero coordinates in [2**-400, 2**400): U, V, N and
 #: |N| then stay normal floats, so power-of-two scaling of them is exact.
 _LOW, _HIGH = 2.0**-400, 2.0**400
@@ -745,14 +746,16 @@ def _fast_exact(
 
     Returns None (and the careful path takes over) for anything else: other
     types, NaN or infinities, wrong lengths, degenerate triangles, results
-    beyond the float range. This is the same arithmetic as :func:`_exact`,
-    written out in one function because most calls look like this and Python
-    function calls are not free.
+    beyond the float range. This is the same arithmetic as :func:`_exact` (and
+    repeats the cross product of :func:`_state_from_ints` on purpose), written out
+    in one function because most calls look like this and one more Python
+    function call costs about 8% of the time.
     """
     if len(a) != 3 or len(b) != 3 or len(c) != 3:
         return None
     vals = (*a, *b, *c)
     types = set(map(type, vals))
+    floats = types == _FLOAT_ONLY and type(a) is type(b) is type(c) is tuple
     scaled = False  # True: U, V, N convert as float(int) * 2**-s, exactly rounded
     try:
         if types == _FLOAT_ONLY:
@@ -800,7 +803,12 @@ def _fast_exact(
     nz = ux * vy - uy * vx
     S = nx * nx + ny * ny + nz * nz
     uu = ux * ux + uy * uy + uz * uz
-    if S * _td_sq <= _tn_sq * uu * (vx * vx + vy * vy + vz * vz):
+    vv = vx * vx + vy * vy + vz * vz
+    # sine² = S / (|U|²|V|²) > 2**(bits(S) − 1 − bits(|U|²) − bits(|V|²)) when S > 0: when
+    # that bound is far above tol² (about 2**-79.7), the exact comparison is not needed.
+    if not S or (
+        S.bit_length() - uu.bit_length() - vv.bit_length() < -75 and S * _td_sq <= _tn_sq * uu * vv
+    ):
         return None  # degenerate: the careful path explains why
     k = max(0, 67 - (S.bit_length() >> 1))
     r = math.isqrt(S << (k << 1))
@@ -826,9 +834,9 @@ def _fast_exact(
             res,
             "__dict__",
             {
-                "a": (float(a[0]), float(a[1]), float(a[2])),
-                "b": (float(b[0]), float(b[1]), float(b[2])),
-                "c": (float(c[0]), float(c[1]), float(c[2])),
+                "a": a if floats else (float(a[0]), float(a[1]), float(a[2])),
+                "b": b if floats else (float(b[0]), float(b[1]), float(b[2])),
+                "c": c if floats else (float(c[0]), float(c[1]), float(c[2])),
                 "winding": Winding.ABC if abc else Winding.ACB,
                 "u": u,
                 "v": v,
@@ -837,11 +845,13 @@ def _fast_exact(
                 "area": magnitude * 0.5 if scaled else r / (D * D << (k + 1)),
                 "unit_normal": unit,
                 "degenerate": False,
-                "plane": Plane(unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D)),
+                "plane": _new_tuple(Plane, (unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D))),
                 "reason": "",
                 "arithmetic": "exact",
                 "tol": DEFAULT_TOL,
-                "_state": _State(ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S),
+                "_state": _new_tuple(
+                    _State, (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S)
+                ),
             },
         )
     except OverflowError:  # an int or a result beyond the float range
