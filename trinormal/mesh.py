@@ -109,11 +109,10 @@ def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]
     if arr64.size and not (np.isfinite(arr64.min()) and np.isfinite(arr64.max())):
         finite = np.isfinite(arr64)
         row = int(np.flatnonzero(~finite.all(axis=1))[0])
-        axis = "xyz"[int(np.flatnonzero(~finite[row])[0])]
-        what = "NaN" if np.isnan(arr64[row]).any() else "infinite"
+        col = int(np.flatnonzero(~finite[row])[0])
+        what = "NaN" if np.isnan(arr64[row, col]) else "infinite"
         raise ValueError(
-            f"vertices row {row} is {what} ({axis} = {arr64[row, 'xyz'.index(axis)]!r}); "
-            "every coordinate must be a finite number"
+            f"vertices row {row}: {'xyz'[col]} is {what}; every coordinate must be a finite number"
         )
     return arr64, out_dtype
 
