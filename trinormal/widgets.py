@@ -375,7 +375,7 @@ class Explorer:
             max=PRECISION_RANGE[1],
             step=1,
             description="decimals",
-            style={"description_width": "4em"},
+            style={"description_width": "5.5em"},
             layout=widgets.Layout(width="20em"),
         )
         self.result: TriangleNormal = triangle_normal(points[0], points[1], points[2], winding=w)
