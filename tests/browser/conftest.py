@@ -64,17 +64,27 @@ def browser_type_launch_args(browser_type_launch_args: dict[str, Any]) -> dict[s
     }
 
 
+def _newest_source() -> float:
+    """Modification time of the newest file the site is built from."""
+    sources = [ROOT / "mkdocs.yml"]
+    for folder, pattern in (("docs", "**/*"), ("notebooks", "*.ipynb"), ("trinormal", "**/*.py")):
+        sources += (p for p in (ROOT / folder).glob(pattern) if p.is_file())
+    return max(p.stat().st_mtime for p in sources)
+
+
 @pytest.fixture(scope="session")
 def site_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The built site: TRINORMAL_SITE_DIR, else site/, else a fresh strict build."""
+    """The built site: TRINORMAL_SITE_DIR, else an up-to-date site/, else a fresh strict build."""
     env = os.environ.get("TRINORMAL_SITE_DIR")
     if env:
         path = Path(env)
         assert (path / "index.html").is_file(), f"TRINORMAL_SITE_DIR={env} holds no built site"
         return path
     built = ROOT / "site"
-    if (built / "index.html").is_file():
-        return built
+    if (built / "index.html").is_file() and _newest_source() < (
+        built / "index.html"
+    ).stat().st_mtime:
+        return built  # `make test` has just built it
     out = tmp_path_factory.mktemp("site")
     subprocess.run(
         [sys.executable, "-m", "mkdocs", "build", "--strict", "--quiet", "-d", str(out)],
