@@ -327,7 +327,11 @@ GOOD_F = np.array([[0, 1, 2], [0, 2, 3]])
         (GOOD_V, [[0, 1, 2], [0, 2, 4]], r"faces row 1 refers to vertex 4.*0 to 3"),
         (GOOD_V, [[0, 1, 2], [0, 1, 2], [-1, 2, 3]], r"faces row 2 refers to vertex -1"),
         (np.where(np.arange(12).reshape(4, 3) == 7, np.nan, GOOD_V), GOOD_F, r"row 2: y is NaN"),
-        (np.where(np.arange(12).reshape(4, 3) == 3, np.inf, GOOD_V), GOOD_F, r"row 1: x is infinite"),
+        (
+            np.where(np.arange(12).reshape(4, 3) == 3, np.inf, GOOD_V),
+            GOOD_F,
+            r"row 1: x is infinite",
+        ),
         ([["a", "b", "c"]], [[0, 0, 0]], r"vertices must be real numbers"),
     ],
 )
