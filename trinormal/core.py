@@ -228,26 +228,6 @@ def _parse_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
 _PLAIN = frozenset((float, int))
 
 
-def _fast_ratios(a: object, b: object, c: object) -> tuple[list[tuple[int, int]], Any] | None:
-    """Exact ratios and float values of three tuples/lists of finite floats or ints, else None.
-
-    None sends the input through the careful path, which explains what is wrong.
-    """
-    if type(a) not in (tuple, list) or type(b) not in (tuple, list) or type(c) not in (tuple, list):
-        return None
-    if len(a) != 3 or len(b) != 3 or len(c) != 3:  # type: ignore[arg-type]
-        return None
-    vals = (*a, *b, *c)  # type: ignore[misc]
-    if not _PLAIN.issuperset(map(type, vals)):
-        return None
-    try:
-        ratios = [x.as_integer_ratio() for x in vals]
-        floats = [float(x) for x in vals]
-    except (ValueError, OverflowError):  # NaN, an infinity, or an int beyond the float range
-        return None
-    return ratios, floats
-
-
 _WINDINGS = {"ABC": Winding.ABC, "ACB": Winding.ACB}
 
 
@@ -708,19 +688,14 @@ def triangle_normal(
         r = _fast_exact(a, b, c, winding == "ABC")  # type: ignore[arg-type]
         if r is not None:
             return r
-    fast = _fast_ratios(a, b, c)
-    if fast is None:
-        coords = _parse_vertex(a, "A") + _parse_vertex(b, "B") + _parse_vertex(c, "C")
-        floats = None
-    else:
-        coords, floats = fast
+    coords = _parse_vertex(a, "A") + _parse_vertex(b, "B") + _parse_vertex(c, "C")
     try:
         w = _WINDINGS[winding]
     except (KeyError, TypeError):
         w = _check_winding(winding)
     tn, td = _DEFAULT_TOL_RATIO if tol is DEFAULT_TOL else _check_tol(tol)
     if arithmetic == "exact":
-        return _exact(coords, w, tn, td, floats)
+        return _exact(coords, w, tn, td)
     if arithmetic in ("float64", "float32"):
         return _floating(coords, w, tn, td, arithmetic)
     raise ValueError(f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {arithmetic!r}")
@@ -859,9 +834,7 @@ def _fast_exact(
     return res
 
 
-def _exact(
-    coords: list[tuple[int, int]], w: Winding, tn: int, td: int, floats: list[float] | None = None
-) -> TriangleNormal:
+def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> TriangleNormal:
     s = _exact_state(coords, w)
     ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S = s
     D2 = D * D
@@ -869,8 +842,7 @@ def _exact(
     degenerate = S * td * td <= tn * tn * (ux * ux + uy * uy + uz * uz) * (
         vx * vx + vy * vy + vz * vz
     )
-    if floats is None:
-        floats = list(_divide(ints, D))
+    floats = _divide(ints, D)
     try:  # int / int is correctly rounded; it raises only beyond the float range
         u = (ux / D, uy / D, uz / D)
         v = (vx / D, vy / D, vz / D)
