@@ -1,0 +1,115 @@
+"""One colour code for the points, the edges and the normal, everywhere.
+
+The 3D explorer, every matplotlib figure and the site draw A, B, C, U, V and N
+in these colours. Each role has a colour for light backgrounds and one for dark
+backgrounds; both keep a contrast of at least 3:1 against their background
+(WCAG's rule for graphics), and the hues come from Okabe and Ito's palette, so
+the code survives the common forms of colour blindness. Colour is never the
+only cue: every point, arrow and face is also labelled.
+
+Examples
+--------
+>>> ROLE_COLORS["N"]
+'#007A5A'
+>>> color("N", dark=True)
+'#3DDC97'
+>>> sorted(ROLES) == sorted(ROLE_COLORS)
+True
+"""
+
+from __future__ import annotations
+
+__all__ = ["DARK_ROLE_COLORS", "ROLES", "ROLE_COLORS", "ROLE_MEANINGS", "color", "palette"]
+
+#: What each role is, in the words the readouts use.
+ROLE_MEANINGS: dict[str, str] = {
+    "A": "vertex A",
+    "B": "vertex B",
+    "C": "vertex C",
+    "U": "edge U, from A",
+    "V": "edge V, from A",
+    "N": "normal N = U × V",
+    "front": "front face (N points out of it)",
+    "back": "back face",
+    "x": "x axis",
+    "y": "y axis",
+    "z": "z axis",
+}
+
+#: The roles, in drawing order.
+ROLES: tuple[str, ...] = tuple(ROLE_MEANINGS)
+
+#: Colours on a light (white) background.
+ROLE_COLORS: dict[str, str] = {
+    "A": "#333333",  # neutral: the vertex both edges start from
+    "B": "#A85A00",  # dark amber, of U's family (U ends at B)
+    "C": "#7A3E9D",  # purple, of V's family (V ends at C)
+    "U": "#D55E00",  # Okabe-Ito vermillion
+    "V": "#0072B2",  # Okabe-Ito blue
+    "N": "#007A5A",  # Okabe-Ito bluish green, darkened for 5:1 on white
+    "front": "#F0E442",  # Okabe-Ito yellow: the face N points out of
+    "back": "#56B4E9",  # Okabe-Ito sky blue: the other side
+    "x": "#D55E00",
+    "y": "#009E73",
+    "z": "#0072B2",
+}
+
+#: Colours on a dark background (the site's slate scheme, a dark JupyterLab theme).
+DARK_ROLE_COLORS: dict[str, str] = {
+    "A": "#E6E6E6",
+    "B": "#F5A623",
+    "C": "#D4A6F0",
+    "U": "#FF8C42",
+    "V": "#56B4E9",
+    "N": "#3DDC97",
+    "front": "#E5D740",
+    "back": "#3A8FC4",
+    "x": "#FF8C42",
+    "y": "#3DDC97",
+    "z": "#56B4E9",
+}
+
+
+def color(role: str, dark: bool = False) -> str:
+    """The colour of one role.
+
+    Parameters
+    ----------
+    role : str
+        One of :data:`ROLES`: ``"A"``, ``"B"``, ``"C"``, ``"U"``, ``"V"``,
+        ``"N"``, ``"front"``, ``"back"``, ``"x"``, ``"y"`` or ``"z"``.
+    dark : bool, default False
+        The variant for a dark background.
+
+    Returns
+    -------
+    str
+        A ``#RRGGBB`` colour.
+
+    Raises
+    ------
+    KeyError
+        For an unknown role.
+
+    Examples
+    --------
+    >>> color("U"), color("U", dark=True)
+    ('#D55E00', '#FF8C42')
+    """
+    return (DARK_ROLE_COLORS if dark else ROLE_COLORS)[role]
+
+
+def palette() -> dict[str, dict[str, str]]:
+    """Every role's light and dark colour, as the 3D view and the site read them.
+
+    Returns
+    -------
+    dict
+        ``{role: {"light": "#RRGGBB", "dark": "#RRGGBB"}}`` for every role.
+
+    Examples
+    --------
+    >>> palette()["V"]
+    {'light': '#0072B2', 'dark': '#56B4E9'}
+    """
+    return {r: {"light": ROLE_COLORS[r], "dark": DARK_ROLE_COLORS[r]} for r in ROLES}
