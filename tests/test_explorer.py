@@ -1,9 +1,12 @@
-"""trinormal.widgets: the explorer driven from pytest, without a kernel or a display."""
+"""trinormal.explorer: the explorer driven from pytest, without a kernel or a browser."""
 
 from __future__ import annotations
 
 import io
+import json
 import math
+import re
+from fractions import Fraction
 
 import ipywidgets as widgets
 import numpy as np
@@ -13,18 +16,28 @@ from hypothesis import strategies as st
 from PIL import Image
 
 from trinormal import Winding, triangle_normal
-from trinormal import widgets as tw
-from trinormal.exercises import check, get, names
-from trinormal.widgets import COORDINATES, Explorer
+from trinormal.explorer import COORDINATES, Explorer, ExplorerView, view_state
+from trinormal.explorer import widget as tw
+from trinormal.explorer.view import BUNDLE
 
 KEYS = ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz")
 SHARED: dict[str, Explorer] = {}
 
 
 def move(ex, a, b, c):
-    """Set the nine sliders one by one, as a student dragging them would."""
+    """Set the nine sliders one by one from code."""
     for key, value in zip(KEYS, (*a, *b, *c), strict=True):
         ex.controls[key].value = value
+
+
+def decimal(points):
+    """A float set from code means the shortest decimal that gives it back."""
+    return [[repr(float(x)) for x in p] for p in points]
+
+
+def from_browser(widget, name, value):
+    """Change a trait the way a message from the browser does (ipywidgets' set_state)."""
+    widget.set_state({name: value})
 
 
 def assert_readout_shows(ex, expected, precision):
@@ -52,8 +65,10 @@ def test_controls_are_the_contracted_widgets():
     assert toggle.value == "ABC"
     precision = ex.controls["precision"]
     assert isinstance(precision, widgets.IntSlider)
-    assert (precision.min, precision.max, precision.value) == (0, 10, 4)
+    assert (precision.min, precision.max, precision.value) == (0, 15, 4)
     assert isinstance(ex.readout, widgets.HTML)
+    assert isinstance(ex.view, ExplorerView)
+    assert [ex.inputs[k].value for k in KEYS] == ["0", "0", "0", "1", "0", "0", "0", "1", "0"]
 
 
 def test_range_and_step_are_constructor_options():
@@ -95,7 +110,7 @@ CASES = [
 def test_setting_sliders_recomputes_result_and_readout(a, b, c, winding):
     ex = Explorer(winding=winding)
     move(ex, a, b, c)
-    expected = triangle_normal(a, b, c, winding=winding)
+    expected = triangle_normal(*decimal((a, b, c)), winding=winding)
     assert ex.result == expected
     assert ex.result.winding == Winding(winding)
     assert (ex.a, ex.b, ex.c) == (expected.a, expected.b, expected.c)
@@ -109,8 +124,8 @@ def test_every_single_slider_change_is_seen_immediately():
         before = ex.result
         ex.controls[key].value = 2.5
         points = [[ex.controls[p + q].value for q in "xyz"] for p in "abc"]
-        assert ex.result == triangle_normal(*points)
-        assert ex.result != before or before == triangle_normal(*points)
+        assert ex.result == triangle_normal(*decimal(points))
+        assert ex.result != before or before == triangle_normal(*decimal(points))
         assert_readout_shows(ex, ex.result, 4)
 
 
@@ -131,7 +146,7 @@ def test_winding_toggle_turns_the_normal_over():
 @given(
     st.lists(st.floats(-5, 5, allow_nan=False), min_size=9, max_size=9),
     st.sampled_from(["ABC", "ACB"]),
-    st.integers(0, 10),
+    st.integers(0, 15),
 )
 def test_any_position_matches_the_core(values, winding, precision):
     ex = SHARED.setdefault("ex", Explorer())  # one explorer, moved example after example
@@ -140,9 +155,10 @@ def test_any_position_matches_the_core(values, winding, precision):
     move(ex, values[0:3], values[3:6], values[6:9])
     points = [[ex.controls[k].value for k in KEYS[i : i + 3]] for i in (0, 3, 6)]
     assert all(v == w for v, w in zip(values, (x for p in points for x in p), strict=True))
-    expected = triangle_normal(*points, winding=winding)
+    expected = triangle_normal(*decimal(points), winding=winding)
     assert ex.result == expected
     assert_readout_shows(ex, expected, precision)
+    assert ex.view.state == view_state(expected, precision)
 
 
 # --------------------------------------------------------------------------- degenerate triangles
@@ -160,17 +176,19 @@ def test_any_position_matches_the_core(values, winding, precision):
 def test_degenerate_positions_explain_instead_of_failing(a, b, c, word):
     ex = Explorer()
     move(ex, a, b, c)
-    expected = triangle_normal(a, b, c)
+    expected = triangle_normal(*decimal((a, b, c)))
     assert expected.degenerate
     assert ex.result == expected and ex.result.unit_normal is None
     assert_readout_shows(ex, expected, 4)
     assert word in ex.readout.value
     assert "No unit normal" in ex.readout.value
     assert ex.readout.value.count("undefined") >= 2  # unit normal and plane
-    assert not ex._artists["arrow_N"].get_visible()
+    assert ex.view.state["degenerate"] and ex.view.state["unit_normal"] is None
+    assert ex.view.state["status"] == expected.format()["status"]
+    assert not ex.snapshot._artists["arrow_N"].get_visible()
     assert ex.to_png().startswith(b"\x89PNG")
     move(ex, (0, 0, 0), (1, 0, 0), (0, 1, 0))  # and back to a proper triangle
-    assert not ex.result.degenerate and ex._artists["arrow_N"].get_visible()
+    assert not ex.result.degenerate and ex.snapshot._artists["arrow_N"].get_visible()
     assert "undefined" not in ex.readout.value
 
 
@@ -194,7 +212,7 @@ def test_a_failure_inside_the_callback_becomes_a_message(monkeypatch):
 def test_precision_changes_the_readout_only():
     ex = Explorer(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2))
     result = ex.result
-    for p in range(11):
+    for p in range(16):
         ex.controls["precision"].value = p
         assert ex.result == result
         assert_readout_shows(ex, triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2)), p)
@@ -215,8 +233,8 @@ def test_precision_changes_the_readout_only():
         ("az", -5.01, r"A\.z = -5\.01 is outside"),
         ("cy", math.inf, r"C\.y is infinite"),
         ("cy", math.nan, r"C\.y is NaN"),
-        ("precision", 11, r"precision must be from 0 to 10"),
-        ("precision", -1, r"precision must be from 0 to 10"),
+        ("precision", 16, r"precision must be from 0 to 15"),
+        ("precision", -1, r"precision must be from 0 to 15"),
         ("winding", "CBA", r"winding must be 'ABC' or 'ACB'"),
     ],
 )
@@ -234,7 +252,7 @@ def test_out_of_range_values_are_a_value_error_not_a_clamp(key, value, message):
         ({"b": (6, 0, 0)}, r"B\.x = 6 is outside"),
         ({"c": (0, 0, -7)}, r"C\.z = -7 is outside"),
         ({"a": (0, 0)}, r"A has 2 coordinates"),
-        ({"precision": 11}, r"precision"),
+        ({"precision": 16}, r"precision"),
         ({"precision": 2.5}, r"precision"),
         ({"winding": "BAC"}, r"winding"),
     ],
@@ -269,25 +287,25 @@ def test_values_are_kept_exactly_as_set():
 def test_figure_is_updated_in_place():
     ex = Explorer()
     axes = list(ex.figure.axes)
-    artists = dict(ex._artists)
+    artists = dict(ex.snapshot._artists)
     ex.set(a=(1, 1, 1), b=(2, 1, 1), c=(1, 2, 2), winding="ACB")
     assert ex.figure.axes == axes
-    assert all(ex._artists[k] is v for k, v in artists.items())
+    assert all(ex.snapshot._artists[k] is v for k, v in artists.items())
     r = ex.result
-    heights = [bar.get_height() for bar in ex._artists["bars_n"]]
+    heights = [bar.get_height() for bar in ex.snapshot._artists["bars_n"]]
     assert heights == list(r.normal)
-    unit = [bar.get_height() for bar in ex._artists["bars_u"]]
+    unit = [bar.get_height() for bar in ex.snapshot._artists["bars_u"]]
     assert unit == list(r.unit_normal)
-    xs, ys, zs = ex._artists["edges"].get_data_3d()
+    xs, ys, zs = ex.snapshot._artists["edges"].get_data_3d()
     assert list(zip(xs, ys, zs, strict=True)) == [r.a, r.b, r.c, r.a]
     # the U arrow starts at A and ends at B (order A→C→B: U = C − A, so it ends at C)
-    shaft = ex._artists["arrow_U"]._segments3d[0]
+    shaft = ex.snapshot._artists["arrow_U"]._segments3d[0]
     assert tuple(shaft[0]) == r.a and tuple(shaft[1]) == r.c
 
 
 def test_three_d_view_has_equal_scales_and_labels():
     ex = Explorer(a=(-4, 1, 0), b=(3, -2, 1), c=(0, 4, -3))
-    ax3 = ex._artists["ax3"]
+    ax3 = ex.snapshot._artists["ax3"]
     limits = {ax3.get_xlim(), ax3.get_ylim(), ax3.get_zlim()}
     assert len(limits) == 1
     low, high = limits.pop()
@@ -295,8 +313,8 @@ def test_three_d_view_has_equal_scales_and_labels():
     aspect = ax3.get_box_aspect()
     assert aspect[0] == aspect[1] == aspect[2]
     for name in "ABC":
-        assert ex._artists["label_" + name].get_marker() is not None
-    assert {ex._artists["tip_" + n].get_visible() for n in "UVN"} == {True}
+        assert ex.snapshot._artists["label_" + name].get_marker() is not None
+    assert {ex.snapshot._artists["tip_" + n].get_visible() for n in "UVN"} == {True}
 
 
 def test_blitted_picture_equals_a_full_redraw():
@@ -307,20 +325,20 @@ def test_blitted_picture_equals_a_full_redraw():
         if i == 5:
             ex.set(b=ex.a)  # degenerate: the N arrow disappears
         ex.render()
-        blitted = np.asarray(ex._canvas.buffer_rgba()).copy()
-        ex._canvas.draw()  # the whole figure, every artist, from scratch
-        full = np.asarray(ex._canvas.buffer_rgba()).copy()
+        blitted = np.asarray(ex.snapshot._canvas.buffer_rgba()).copy()
+        ex.snapshot._canvas.draw()  # the whole figure, every artist, from scratch
+        full = np.asarray(ex.snapshot._canvas.buffer_rgba()).copy()
         assert np.array_equal(blitted, full), i
 
 
 def test_each_axes_stays_inside_its_band():
     ex = Explorer(a=(-5, -5, -5), b=(5, -5, 5), c=(-5, 5, 5))  # the widest labels
     ex.render()
-    renderer = ex._canvas.get_renderer()
+    renderer = ex.snapshot._canvas.get_renderer()
     width, height = renderer.width, renderer.height
     for band, key in (("3d", "ax3"), ("n", "ax_n"), ("u", "ax_u")):
-        box = ex._artists[key].get_tightbbox(renderer)
-        limits = ex._band_bbox(band, width, height)
+        box = ex.snapshot._artists[key].get_tightbbox(renderer)
+        limits = ex.snapshot._band_bbox(band, width, height)
         assert limits.x0 <= box.x0 and box.x1 <= limits.x1, band
         assert limits.y0 <= box.y0 and box.y1 <= limits.y1, band
 
@@ -343,17 +361,16 @@ def test_figure_can_be_saved_in_full_by_matplotlib():
     assert "B = (2, 1, 1)" in ex.figure.alt_text
     ex.controls["bx"].value = 3  # the blitting path still works after another dpi
     ex.render()
-    blitted = np.asarray(ex._canvas.buffer_rgba()).copy()
-    ex._canvas.draw()
-    assert np.array_equal(blitted, np.asarray(ex._canvas.buffer_rgba()))
+    blitted = np.asarray(ex.snapshot._canvas.buffer_rgba()).copy()
+    ex.snapshot._canvas.draw()
+    assert np.array_equal(blitted, np.asarray(ex.snapshot._canvas.buffer_rgba()))
 
 
 # --------------------------------------------------------------------------- display
 
 
-def test_display_bundle_has_the_widget_and_a_plain_text_summary():
+def test_display_bundle_has_the_live_view_controls_and_a_plain_text_summary():
     ex = Explorer(precision=2)
-    assert bytes(ex.image.value) == b""  # nothing rendered before it is shown
     bundle = ex._repr_mimebundle_()
     view = bundle["application/vnd.jupyter.widget-view+json"]
     assert view["model_id"] == ex.widget.model_id
@@ -362,14 +379,17 @@ def test_display_bundle_has_the_widget_and_a_plain_text_summary():
     for key in ("u", "v", "normal", "magnitude", "area", "unit_normal", "plane", "status"):
         assert f[key] in bundle["text/plain"]
     box = ex.widget
-    assert ex.readout in box.children and ex.image in box.children
-    shown = {id(w) for row in box.children[0].children for w in row.children}
-    assert {id(c) for c in ex.controls.values()} <= shown
-    assert bytes(ex.image.value).startswith(b"\x89PNG")
-    before = bytes(ex.image.value)
-    ex.controls["az"].value = 1  # once shown, every change re-renders the image
-    after = bytes(ex.image.value)
-    assert after != before and after.startswith(b"\x89PNG")
+    assert box.children[0] is ex.view
+
+    def shown(widget):
+        yield widget
+        for child in getattr(widget, "children", ()):
+            yield from shown(child)
+
+    ids = {id(w) for w in shown(box)}
+    assert {id(c) for c in ex.controls.values()} <= ids
+    assert {id(c) for c in ex.inputs.values()} <= ids
+    assert id(ex.message) in ids
 
 
 def test_repr_names_the_state():
@@ -379,34 +399,150 @@ def test_repr_names_the_state():
     )
 
 
-# --------------------------------------------------------------------------- exercises
+# --------------------------------------------------------------------------- exactness
 
 
-def test_notebook_05_exercises_are_registered_and_checkable():
-    down = [(0, 0, 1), (1, 0, 1), (0, 1, 1)]
-    assert triangle_normal(*down, winding="ACB").unit_normal == (0.0, 0.0, -1.0)
-    assert check("05-down-acb", down)
-    up = check("05-down-acb", [down[0], down[2], down[1]])
-    assert not up and "swap B and C" in up.message
-    assert not check("05-down-acb", [(0, 0, 0), (1, 1, 1), (2, 2, 2)])
-    assert not check("05-down-acb", [(0, 0, 0), (0, 0, 1), (0, 1, 0)])
-    assert not check("05-down-acb", [(0, 0, 0), (1, 0, 0)])
-    a, b = tw.COLLINEAR_AB
-    beyond = tuple(2 * q - p for p, q in zip(a, b, strict=True))
-    assert check("05-collinear", beyond)
-    assert not check("05-collinear", a) and not check("05-collinear", b)
-    assert not check("05-collinear", (beyond[0], beyond[1], beyond[2] + 1))
-    k = tw.SCALE_FACTOR
-    a, b, c = tw.SCALE_ABC
-    before = triangle_normal(a, b, c).area
-    after = triangle_normal(*([k * x for x in p] for p in (a, b, c))).area
-    assert check("05-scale-area", round(after / before))
-    assert abs(after / before - round(after / before)) < 1e-12
-    assert not check("05-scale-area", k)
-    assert get("05-scale-area").prompt.startswith("Multiply every coordinate")
-    assert check("05-scale-area", ...).status == "unanswered"
-    assert {n for n in names() if n.startswith("05-")} == {
-        "05-down-acb",
-        "05-collinear",
-        "05-scale-area",
+def test_exact_values_set_by_code_stay_exact_everywhere():
+    ex = Explorer(a=("0.1", "0.2", "0.3"), b=("1/3", 0, 0), c=(0, "2.35", 0))
+    assert ex.result.exact.a == (Fraction(1, 10), Fraction(1, 5), Fraction(3, 10))
+    assert ex.result.exact.b[0] == Fraction(1, 3)
+    assert ex.result.exact.c[1] == Fraction(47, 20)
+    assert (ex.view.a, ex.view.b, ex.view.c) == (
+        ["0.1", "0.2", "0.3"],
+        ["1/3", "0", "0"],
+        ["0", "2.35", "0"],
+    )
+    assert [ex.inputs[k].value for k in ("ax", "bx", "cy")] == ["0.1", "1/3", "2.35"]
+    assert ex.result == triangle_normal(("0.1", "0.2", "0.3"), ("1/3", 0, 0), (0, "2.35", 0))
+
+
+@pytest.mark.parametrize("key", KEYS)
+def test_the_browser_snapping_a_slider_to_its_grid_changes_nothing(key):
+    # ipywidgets' slider puts a value on its grid in the browser and sends it back
+    ex = Explorer(a=("0.1", "0.2", "0.3"), b=("1/3", 0, 0), c=(0, "2.35", 0))
+    before = (ex.result, ex.texts)
+    value = ex.controls[key].value
+    grid = -5 + round((value + 5) / 0.1) * 0.1  # what the browser computes
+    from_browser(ex.controls[key], "value", grid)
+    assert (ex.result, ex.texts) == before
+
+
+def test_a_slider_moved_in_the_browser_lands_exactly_on_the_grid():
+    ex = Explorer()
+    from_browser(ex.controls["bx"], "value", -5 + 83 * 0.1)  # 3.3000000000000007
+    assert ex.texts["bx"] == "3.3" and ex.result.exact.b[0] == Fraction(33, 10)
+    assert ex.inputs["bx"].value == "3.3" and ex.view.b == ["3.3", "0", "0"]
+    coarse = Explorer(step=0.25)
+    from_browser(coarse.controls["cz"], "value", 1.2500000000000002)
+    assert coarse.texts["cz"] == "1.25" and coarse.result.exact.c[2] == Fraction(5, 4)
+
+
+def test_dragging_a_vertex_in_the_view_updates_every_surface():
+    ex = Explorer(precision=3)
+    from_browser(ex.view, "c", ["0.4", "1.1", "-0.7"])
+    expected = triangle_normal((0, 0, 0), (1, 0, 0), ("0.4", "1.1", "-0.7"))
+    assert ex.result == expected and ex.result.exact.c == (
+        Fraction(2, 5),
+        Fraction(11, 10),
+        Fraction(-7, 10),
+    )
+    assert [ex.inputs[k].value for k in ("cx", "cy", "cz")] == ["0.4", "1.1", "-0.7"]
+    assert [ex.controls[k].value for k in ("cx", "cy", "cz")] == [0.4, 1.1, -0.7]
+    assert ex.view.state == view_state(expected, 3)
+    assert_readout_shows(ex, expected, 3)
+
+
+def test_the_view_flips_the_winding():
+    ex = Explorer()
+    from_browser(ex.view, "winding", "ACB")
+    assert ex.result.winding is Winding.ACB and ex.controls["winding"].value == "ACB"
+    assert ex.view.state["normal"] == [0.0, 0.0, -1.0]
+    assert [row["label"] for row in ex.view.state["readout"][:2]] == ["U = C − A", "V = B − A"]
+
+
+def test_a_bad_move_from_the_view_is_refused_and_the_view_put_back():
+    ex = Explorer()
+    before = ex.result
+    from_browser(ex.view, "a", ["9", "0", "0"])
+    assert ex.result is before and ex.view.a == ["0", "0", "0"]
+    assert "A.x = 9 is outside the slider range -5 to 5" in ex.message.value
+    from_browser(ex.view, "b", ["1", "nan", "0"])
+    assert ex.result is before and ex.view.b == ["1", "0", "0"]
+    assert "B.y" in ex.message.value and "NaN" in ex.message.value
+
+
+@pytest.mark.parametrize(
+    ("typed", "value"),
+    [("1/3", Fraction(1, 3)), (" -2.35 ", Fraction(-47, 20)), ("2.5e-1", Fraction(1, 4)), ("4", 4)],
+)
+def test_typing_a_coordinate_reads_it_exactly(typed, value):
+    ex = Explorer()
+    from_browser(ex.inputs["by"], "value", typed)
+    assert ex.result.exact.b[1] == value and ex.message.value == ""
+    assert ex.controls["by"].value == float(value)
+
+
+@pytest.mark.parametrize(
+    ("typed", "message"),
+    [("abc", r"B\.y"), ("7", r"B\.y = 7 is outside the slider range -5 to 5"), ("1/0", r"B\.y")],
+)
+def test_a_typo_gets_a_message_naming_the_field_and_changes_nothing(typed, message):
+    ex = Explorer()
+    before = ex.result
+    from_browser(ex.inputs["by"], "value", typed)
+    assert ex.result is before
+    assert re.search(message, ex.message.value), ex.message.value
+    assert "nan" not in ex.readout.value.lower()
+    from_browser(ex.inputs["by"], "value", "0.5")  # fixing it clears the message
+    assert ex.message.value == "" and ex.result.exact.b[1] == Fraction(1, 2)
+
+
+def test_view_state_follows_the_contract():
+    r = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    state = view_state(r, 4)
+    assert set(state) == {
+        "ok",
+        "error",
+        "points",
+        "u",
+        "v",
+        "normal",
+        "unit_normal",
+        "degenerate",
+        "status",
+        "readout",
+        "summary",
     }
+    assert state["points"] == {"A": [1.0, 1.0, 1.0], "B": [2.0, 1.0, 1.0], "C": [1.0, 2.0, 2.0]}
+    f = r.format(4)
+    assert [(row["key"], row["value"]) for row in state["readout"]] == [
+        (k, f[k]) for k in ("u", "v", "normal", "magnitude", "area", "unit_normal", "plane")
+    ]
+    json.dumps(state)  # the view receives it as JSON
+
+
+def test_the_view_module_is_the_bundle_shipped_in_the_package():
+    assert BUNDLE.is_file() and BUNDLE.name == "explorer.js"
+    assert "render" in BUNDLE.read_text(encoding="utf-8")
+    assert "https://" not in ExplorerView()._esm.split("import")[0]
+
+
+def test_the_colour_code_is_the_package_one():
+    from trinormal.colors import palette
+
+    assert Explorer().view.palette == palette()
+
+
+def test_after_the_echo_of_a_tie_one_notch_is_a_real_move():
+    ex = Explorer(c=(0, "2.35", 0))  # halfway between 2.3 and 2.4 on the 0.1 grid
+    from_browser(ex.controls["cy"], "value", 2.3000000000000007)  # the browser picks 2.3
+    assert ex.texts["cy"] == "2.35"
+    from_browser(ex.controls["cy"], "value", 2.400000000000001)  # the student moves it
+    assert ex.texts["cy"] == "2.4" and ex.result.exact.c[1] == Fraction(12, 5)
+
+
+def test_showing_an_explorer_twice_keeps_an_off_grid_value():
+    ex = Explorer(b=("1/3", 0, 0))
+    for _ in range(2):  # each view in the browser snaps to 0.3 and sends it
+        from_browser(ex.controls["bx"], "value", 0.30000000000000027)
+    assert ex.result.exact.b[0] == Fraction(1, 3)

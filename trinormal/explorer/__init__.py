@@ -1,0 +1,20 @@
+"""The explorer: a live 3D view of a triangle for JupyterLab and the site.
+
+Rooms:
+
+* :mod:`~trinormal.explorer.state` — exact coordinates as text, grid snapping,
+  and :func:`~trinormal.explorer.state.view_state`, what the 3D view draws;
+* :mod:`~trinormal.explorer.readout` — the readout rows, HTML, summary and text
+  alternative, all from ``TriangleNormal.format``;
+* :mod:`~trinormal.explorer.figure` — the static matplotlib snapshot;
+* :mod:`~trinormal.explorer.view` — the anywidget that shares state with the
+  ES module ``static/explorer.js`` (built from ``js/explorer/``);
+* :mod:`~trinormal.explorer.widget` — :class:`Explorer`, which ties the view,
+  sliders, text boxes and readout to the exact core.
+"""
+
+from trinormal.explorer.state import view_state
+from trinormal.explorer.view import ExplorerView
+from trinormal.explorer.widget import COORDINATES, PRECISION_RANGE, Explorer
+
+__all__ = ["COORDINATES", "PRECISION_RANGE", "Explorer", "ExplorerView", "view_state"]
