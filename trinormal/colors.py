@@ -71,7 +71,7 @@ DARK_ROLE_COLORS: dict[str, str] = {
 
 
 def color(role: str, dark: bool = False) -> str:
-    """The colour of one role.
+    """Return the colour of one role.
 
     Parameters
     ----------

@@ -47,7 +47,7 @@ class Field:
     kind: str
 
     def label_for(self, winding: str) -> str:
-        """The label for a winding, ``"ABC"`` or ``"ACB"``.
+        """Return the label for a winding, ``"ABC"`` or ``"ACB"``.
 
         Examples
         --------
@@ -83,7 +83,7 @@ def field_labels(winding: str = "ABC") -> list[tuple[str, str]]:
 
 
 def fields_spec() -> list[dict[str, str]]:
-    """The fields as JSON-ready dictionaries, for the site's generated constants.
+    """Return the fields as JSON-ready dictionaries, for the site's generated constants.
 
     Examples
     --------
