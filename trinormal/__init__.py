@@ -8,7 +8,7 @@ The core needs only the standard library:
 
 Modules beyond the core import their own dependencies when you import them:
 ``trinormal.symbolic`` (sympy), ``trinormal.mesh`` (numpy),
-``trinormal.plotting`` (matplotlib) and ``trinormal.widgets`` (ipywidgets).
+``trinormal.plotting`` (matplotlib) and ``trinormal.explorer`` (ipywidgets, anywidget).
 """
 
 from trinormal.core import (

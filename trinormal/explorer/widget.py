@@ -28,6 +28,7 @@ from typing import Any
 import ipywidgets as widgets
 import traitlets
 
+from trinormal.colors import ROLE_COLORS
 from trinormal.core import TriangleNormal, Winding, triangle_normal
 from trinormal.display import MAX_PRECISION, format_number, format_vector
 from trinormal.explorer.figure import Snapshot
@@ -280,14 +281,14 @@ class Explorer:
                 readout=False,
                 continuous_update=True,
                 style={"description_width": "1.2em"},
-                layout=widgets.Layout(width="9.5em"),
+                layout=widgets.Layout(width="8.5em"),
             )
             self.inputs[key] = widgets.Text(
                 value=texts[key],
                 continuous_update=False,
                 description_allow_html=False,
                 tooltip=f"{name}: type a number such as 0.1, -2 or 1/3 and press Enter",
-                layout=widgets.Layout(width="5.5em"),
+                layout=widgets.Layout(width="5em", margin="0 0.8em 0 0"),
             )
         self.controls["winding"] = _WindingButtons(
             options=_WINDING_OPTIONS,
@@ -446,6 +447,15 @@ class Explorer:
         r, p = self.result, self._precision
         self._syncing = True
         try:
+            # the view first: its readout is what the learner is watching
+            with self.view.hold_sync():
+                for i, name in enumerate("abc"):
+                    point = [self._texts[k] for k in COORDINATES[3 * i : 3 * i + 3]]
+                    if getattr(self.view, name) != point:
+                        setattr(self.view, name, point)
+                self.view.winding = r.winding.value
+                self.view.precision = p
+                self.view.state = view_state(r, p)
             for key in COORDINATES:
                 text = self._texts[key]
                 value = float(exact_value(text))
@@ -458,14 +468,6 @@ class Explorer:
                 self.controls["winding"].value = r.winding.value
             if self.controls["precision"].value != p:
                 self.controls["precision"].value = p
-            with self.view.hold_sync():
-                for i, name in enumerate("abc"):
-                    point = [self._texts[k] for k in COORDINATES[3 * i : 3 * i + 3]]
-                    if getattr(self.view, name) != point:
-                        setattr(self.view, name, point)
-                self.view.winding = r.winding.value
-                self.view.precision = p
-                self.view.state = view_state(r, p)
         finally:
             self._syncing = False
         self.readout.value = readout_html(r, p)
@@ -585,19 +587,18 @@ class Explorer:
     def widget(self) -> widgets.Widget:
         """The whole explorer as one box: the 3D view with its readout, then the controls."""
         if self._widget is None:
-            columns = []
+            rows = []
             for p in "abc":
-                rows = [
-                    widgets.HBox(
-                        [self.controls[p + q], self.inputs[p + q]],
-                        layout=widgets.Layout(align_items="center"),
+                color = ROLE_COLORS[p.upper()]
+                cells: list[widgets.Widget] = [
+                    widgets.HTML(
+                        f'<b style="color:{color};font-size:16px">{p.upper()}</b>',
+                        layout=widgets.Layout(width="1.6em"),
                     )
-                    for q in "xyz"
                 ]
-                title = widgets.HTML(f"<b>{p.upper()}</b>")
-                columns.append(
-                    widgets.VBox([title, *rows], layout=widgets.Layout(margin="0 1em 0 0"))
-                )
+                for q in "xyz":
+                    cells += [self.controls[p + q], self.inputs[p + q]]
+                rows.append(widgets.HBox(cells, layout=widgets.Layout(align_items="center")))
             settings = widgets.HBox(
                 [self.controls["winding"], self.controls["precision"]],
                 layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
@@ -605,7 +606,7 @@ class Explorer:
             self._widget = widgets.VBox(
                 [
                     self.view,
-                    widgets.HBox(columns, layout=widgets.Layout(flex_flow="row wrap")),
+                    *rows,
                     settings,
                     self.message,
                 ],

@@ -1,0 +1,151 @@
+"""A real JupyterLab for the browser tests: started on a free localhost port, stopped after.
+
+The server runs from this environment (so the kernel imports the installed
+``trinormal``) with no token, no news feed and no update check, in a temporary
+root folder that holds only the notebooks a test writes there.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+#: How long JupyterLab may take to answer its status API after it starts.
+START_TIMEOUT_S = 90
+
+
+@dataclass
+class Lab:
+    """A running JupyterLab: its base URL and its root folder."""
+
+    url: str
+    root: Path
+
+    def write_notebook(self, name: str, cells: list[str]) -> str:
+        """Write a notebook of code cells into the root; return its URL in JupyterLab."""
+        nb = {
+            "cells": [
+                {
+                    "cell_type": "code",
+                    "execution_count": None,
+                    "metadata": {},
+                    "outputs": [],
+                    "source": source,
+                }
+                for source in cells
+            ],
+            "metadata": {
+                "kernelspec": {"display_name": "Python 3", "language": "python", "name": "python3"}
+            },
+            "nbformat": 4,
+            "nbformat_minor": 5,
+        }
+        (self.root / name).write_text(json.dumps(nb), encoding="utf-8")
+        return f"{self.url}lab/tree/{name}"
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+@contextmanager
+def running_lab(root: Path) -> Iterator[Lab]:
+    """Start JupyterLab on 127.0.0.1 and a free port; stop it (and its kernels) afterwards."""
+    port = free_port()
+    args = [
+        sys.executable, "-m", "jupyter", "lab", "--no-browser", f"--port={port}",
+        "--ServerApp.ip=127.0.0.1", "--ServerApp.token=", "--ServerApp.password=",
+        "--ServerApp.disable_check_xsrf=True", f"--ServerApp.root_dir={root}",
+        "--LabApp.news_url=None",
+        "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
+    ]  # fmt: skip
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        args.append("--allow-root")
+    # no "get notified about Jupyter news?" prompt over the notebook
+    settings = root.parent / "lab-settings" / "@jupyterlab" / "apputils-extension"
+    settings.mkdir(parents=True, exist_ok=True)
+    (settings / "notification.jupyterlab-settings").write_text('{"fetchNews": "false"}')
+    args.append(f"--LabApp.user_settings_dir={root.parent / 'lab-settings'}")
+    args.append(f"--LabApp.workspaces_dir={root.parent / 'lab-workspaces'}")
+    log = (root.parent / f"jupyterlab-{port}.log").open("w")
+    env = {**os.environ, "JUPYTER_CONFIG_DIR": str(root.parent / "config")}
+    proc = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT, env=env,
+                            start_new_session=True)  # fmt: skip
+    url = f"http://127.0.0.1:{port}/"
+    try:
+        deadline = time.monotonic() + START_TIMEOUT_S
+        while True:
+            try:
+                with urllib.request.urlopen(url + "api/status", timeout=2) as r:
+                    if r.status == 200:
+                        break
+            except OSError:
+                pass
+            if proc.poll() is not None or time.monotonic() > deadline:
+                log.flush()
+                text = (root.parent / f"jupyterlab-{port}.log").read_text()[-3000:]
+                raise RuntimeError(f"JupyterLab did not start:\n{text}")
+            time.sleep(0.3)
+        yield Lab(url=url, root=root)
+    finally:
+        os.killpg(proc.pid, signal.SIGTERM)
+        try:
+            proc.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+        log.close()
+
+
+def run_all(page: Any) -> None:
+    """Run every cell with JupyterLab's own Run menu, as a student would."""
+    page.locator(".lm-MenuBar-itemLabel", has_text="Run").first.click()
+    page.locator(".lm-Menu-itemLabel", has_text="Run All Cells").first.click()
+
+
+def kernel_ready(lab: Lab, timeout_s: float = 60) -> None:
+    """Wait until the server has a kernel that is idle and connected to the page."""
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        with urllib.request.urlopen(lab.url + "api/kernels", timeout=5) as r:
+            kernels = json.load(r)
+        if any(k["execution_state"] == "idle" and k["connections"] > 0 for k in kernels):
+            return
+        time.sleep(0.3)
+    raise TimeoutError(f"no idle, connected kernel after {timeout_s} s")
+
+
+def wait_idle(page: Any, timeout_ms: int = 60_000) -> None:
+    """Wait until the notebook's kernel is idle."""
+    page.wait_for_function(
+        """() => {
+            const s = document.querySelector('.jp-Notebook-ExecutionIndicator');
+            return s && s.getAttribute('data-status') === 'idle';
+        }""",
+        timeout=timeout_ms,
+    )
+
+
+def output_text(page: Any, cell_index: int) -> str:
+    """The text output of one code cell (0-based among all cells)."""
+    cell = page.locator(".jp-Notebook .jp-Cell").nth(cell_index)
+    return str(cell.locator(".jp-OutputArea-output").last.inner_text())
+
+
+def run_cell(page: Any, cell_index: int) -> None:
+    """Select one cell and run it with Shift+Enter."""
+    cell = page.locator(".jp-Notebook .jp-Cell").nth(cell_index)
+    cell.locator(".jp-InputArea-prompt").click()
+    page.keyboard.press("Shift+Enter")
