@@ -145,3 +145,63 @@ def test_precision_facts_agree_with_the_guide():
 def test_five_mistakes():
     assert len(guide.MISTAKES) == 5
     assert all(name and text for name, text in guide.MISTAKES)
+
+
+# --------------------------------------------------------------------------- the guide's words
+
+
+GUIDE = ROOT / "docs" / "guide"
+NOTEBOOKS = ROOT / "notebooks"
+
+
+def notebook_text(name: str) -> str:
+    import json
+
+    nb = json.loads((NOTEBOOKS / name).read_text(encoding="utf-8"))
+    return "\n".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "markdown")
+
+
+def test_one_weighting_recommendation_everywhere():
+    """The guide, notebooks 04 and 08 and the package default agree: angle weighting."""
+    import inspect
+
+    from trinormal import mesh
+
+    assert inspect.signature(mesh.vertex_normals).parameters["weighting"].default == "angle"
+    practice = " ".join((GUIDE / "practice.md").read_text(encoding="utf-8").split())
+    assert "trinormal recommends it and uses it by default" in practice
+    assert "exactly the weight you want" not in practice
+    for name in ("04_common_mistakes.ipynb", "08_vertex_normals.ipynb"):
+        assert "recommends **angle weighting**" in notebook_text(name), name
+
+
+def test_the_size_limits_the_precision_page_states():
+    """Products of coordinates underflow at the sizes the guide names, and not before."""
+    page = " ".join((GUIDE / "precision.md").read_text(encoding="utf-8").split())
+    assert "$10^{-23}$" in page and "$10^{-200}$" in page
+
+    def n_float(size: float, arithmetic: str) -> tuple[float, ...]:
+        t = ((0, 0, 0), (size, 0, 0), (0, size, 0))
+        return triangle_normal(*t, arithmetic=arithmetic, tol=0).normal
+
+    assert n_float(1e-23, "float32") == (0.0, 0.0, 0.0)
+    assert n_float(1e-200, "float64") == (0.0, 0.0, 0.0)
+    assert n_float(1e-20, "float32")[2] > 0  # subnormal, but not zero
+    assert n_float(1e-150, "float64")[2] > 0
+    assert triangle_normal((0, 0, 0), (1e-200, 0, 0), (0, 1e-200, 0)).unit_normal == (0.0, 0.0, 1.0)
+
+
+def test_ray_front_face_rule_as_the_guide_states_it():
+    """n · d < 0: the ray travels against the normal and meets the front."""
+    page = " ".join((GUIDE / "practice.md").read_text(encoding="utf-8").split())
+    assert "(negative: the ray travels against the normal)" in page
+    n = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).normal  # faces +z
+    down = (0, 0, -1)  # a ray from above
+    assert sum(a * b for a, b in zip(n, down, strict=True)) < 0
+
+
+def test_coincident_points_have_their_own_message():
+    twin = triangle_normal((0, 0, 0), (1, 2, 3), (1, 2, 3)).format()["status"]
+    line = triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["status"]
+    assert "coincide" in twin and "collinear" not in twin and twin != line
+    assert "B equals C" in (GUIDE / "degenerate.md").read_text(encoding="utf-8")

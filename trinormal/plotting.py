@@ -1,32 +1,44 @@
-"""Figures for the notebooks and the site: one palette, fixed sizes, opaque backgrounds.
+"""Figures for the notebooks and the site: one colour code, legible from the back of a room.
 
-The palette is Okabe and Ito's, safe for the common forms of colour blindness.
-Every helper returns a :class:`matplotlib.figure.Figure` with a white
-background (legible on the site's dark theme too) and a short text alternative
-in ``fig.alt_text``.
+Every helper returns a :class:`matplotlib.figure.Figure` with an opaque white
+background and a short text alternative in ``fig.alt_text``. The colours are
+the roles of :mod:`trinormal.colors` (A, B, C, U, V, N, front and back faces,
+the x, y and z axes), the same code the 3D explorer and the site use. Text is
+at least 12 pt and lines at least 1.5 px at the size :func:`show` displays a
+figure (100 pixels per inch of figure), and :func:`show` stores the picture at
+twice that resolution for high-DPI screens and projectors.
 """
 
 from __future__ import annotations
 
+import functools
 import io
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeVar
+
+from trinormal.colors import ROLE_COLORS
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = [
     "AXIS_COLORS",
+    "DISPLAY_DPI",
     "FACECOLOR",
     "PALETTE",
+    "SAVE_DPI",
+    "STYLE",
     "component_bar_chart",
+    "culling_figure",
+    "normal_transform_figure",
     "precision_error_figure",
     "right_hand_rule_figure",
     "shaded_mesh_figure",
+    "shading_figure",
     "show",
 ]
 
-#: Okabe–Ito colour-blind-safe palette.
+#: Okabe–Ito colour-blind-safe palette (for series that are not one of the roles).
 PALETTE: dict[str, str] = {
     "orange": "#E69F00",
     "sky": "#56B4E9",
@@ -38,15 +50,51 @@ PALETTE: dict[str, str] = {
     "black": "#000000",
 }
 
-#: Colours for the x, y and z components, used by every chart.
-AXIS_COLORS: tuple[str, str, str] = (PALETTE["vermillion"], PALETTE["green"], PALETTE["blue"])
+#: Colours for the x, y and z components: the roles ``x``, ``y``, ``z`` of :mod:`trinormal.colors`.
+AXIS_COLORS: tuple[str, str, str] = (ROLE_COLORS["x"], ROLE_COLORS["y"], ROLE_COLORS["z"])
 
 #: Figure background: opaque white, never transparent.
 FACECOLOR = "white"
 
+#: Pixels per inch of figure at the size a figure is shown.
+DISPLAY_DPI = 100
+#: Pixels per inch stored in the PNG: twice the shown size, sharp on high-DPI screens.
+SAVE_DPI = 200
+
+#: Matplotlib settings for every figure: text of 12 pt or more, lines of 1.5 px or more.
+STYLE: dict[str, Any] = {
+    "font.size": 13,
+    "axes.titlesize": 14,
+    "axes.labelsize": 13,
+    "xtick.labelsize": 12,
+    "ytick.labelsize": 12,
+    "legend.fontsize": 12,
+    "legend.title_fontsize": 12,
+    "figure.titlesize": 15,
+    "lines.linewidth": 2.0,
+    "axes.linewidth": 1.2,
+    "xtick.major.width": 1.2,
+    "ytick.major.width": 1.2,
+}
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+def _styled(fn: F) -> F:
+    """Build the figure under :data:`STYLE`."""
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        import matplotlib
+
+        with matplotlib.rc_context(STYLE):  # type: ignore[arg-type]
+            return fn(*args, **kwargs)
+
+    return wrapper  # type: ignore[return-value]
+
 
 def show(fig: Figure, alt: str | None = None) -> None:
-    """Display ``fig`` in a notebook as a PNG with a text alternative, then close it.
+    """Display ``fig`` in a notebook as a sharp PNG with a text alternative, then close it.
 
     Parameters
     ----------
@@ -57,18 +105,24 @@ def show(fig: Figure, alt: str | None = None) -> None:
 
     Notes
     -----
-    Displaying explicitly (instead of ending a cell with ``fig``) shows the image
-    once, stores no ``<Figure size ...>`` text, and gives screen readers and the
+    The PNG is stored at :data:`SAVE_DPI` and shown :data:`DISPLAY_DPI` pixels
+    per inch of figure wide, so a 12 pt label is 12 pt on screen and every
+    pixel of the picture is two pixels of a high-DPI screen. Displaying
+    explicitly (instead of ending a cell with ``fig``) shows the image once,
+    stores no ``<Figure size ...>`` text, and gives screen readers and the
     rendered site an ``alt`` attribute.
     """
     import matplotlib.pyplot as plt
     from IPython.display import Image, display
 
     text = alt if alt is not None else getattr(fig, "alt_text", "")
+    if not text:
+        raise ValueError("every figure needs a text alternative: pass alt=")
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=100, facecolor=fig.get_facecolor())
+    fig.savefig(buf, format="png", dpi=SAVE_DPI, facecolor=fig.get_facecolor())
+    width = round(fig.get_figwidth() * DISPLAY_DPI)
     plt.close(fig)
-    display(Image(data=buf.getvalue(), format="png", alt=text))  # type: ignore[no-untyped-call]
+    display(Image(data=buf.getvalue(), format="png", width=width, alt=text))  # type: ignore[no-untyped-call]
 
 
 # --------------------------------------------------------------------------- right-hand rule, bars
@@ -80,6 +134,7 @@ def _fmt_vec(xs: Any) -> str:
     return format_vector(xs, 4, trim=True)
 
 
+@_styled
 def right_hand_rule_figure(
     a: Sequence[Any],
     b: Sequence[Any],
@@ -106,7 +161,7 @@ def right_hand_rule_figure(
     Returns
     -------
     matplotlib.figure.Figure
-        6 × 5.5 inches, white, with ``fig.alt_text`` describing it.
+        6.5 × 6 inches, white, with ``fig.alt_text`` describing it.
 
     Examples
     --------
@@ -126,21 +181,22 @@ def right_hand_rule_figure(
     A, B, C = r.a, r.b, r.c
     u, v = r.u, r.v
     first, second = ("B", "C") if r.winding.value == "ABC" else ("C", "B")
-    fig = Figure(figsize=(6, 5.5), facecolor=FACECOLOR)
+    fig = Figure(figsize=(6.5, 6), facecolor=FACECOLOR)
     ax = fig.add_subplot(projection="3d")
+    ax.computed_zorder = False  # draw in the order added: the face first, labels on top
     ax.set_facecolor(FACECOLOR)
     ax.add_collection3d(
         Poly3DCollection(
-            [[A, B, C]], facecolor=PALETTE["sky"], edgecolor=PALETTE["black"], alpha=0.35
+            [[A, B, C]], facecolor=ROLE_COLORS["front"], edgecolor=PALETTE["black"], alpha=0.5
         )
     )
     for name, p in zip("ABC", (A, B, C), strict=True):
-        ax.text(*p, f" {name}", color=PALETTE["black"], fontsize=12, fontweight="bold")
-    colors = {"U": PALETTE["orange"], "V": PALETTE["purple"], "N": PALETTE["blue"]}
+        ax.text(*p, f" {name}", color=ROLE_COLORS[name], fontsize=14, fontweight="bold")
+    colors = {k: ROLE_COLORS[k] for k in "UVN"}
     for name, vec in (("U", u), ("V", v)):
         ax.quiver(*A, *vec, color=colors[name], linewidth=2.5, arrow_length_ratio=0.12)
         mid = [A[i] + 0.6 * vec[i] for i in range(3)]
-        ax.text(*mid, f"  {name}", color=colors[name], fontsize=12, fontweight="bold")
+        ax.text(*mid, f"  {name}", color=colors[name], fontsize=14, fontweight="bold")
     pts: list[Sequence[float]] = [A, B, C]
     lengths = [math.dist(p, q) for p, q in ((A, B), (A, C), (B, C))]
     scale = sum(lengths) / 3 or 1.0
@@ -151,7 +207,7 @@ def right_hand_rule_figure(
         n = [x * scale for x in unit]
         ax.quiver(*centroid, *n, color=colors["N"], linewidth=3, arrow_length_ratio=0.15)
         tip = [centroid[i] + n[i] for i in range(3)]
-        ax.text(*tip, "  N", color=colors["N"], fontsize=13, fontweight="bold")
+        ax.text(*tip, "  N", color=colors["N"], fontsize=15, fontweight="bold")
         pts.append(tuple(tip))
         # the curl from U towards V, a quarter of the way along each edge
         lu = math.hypot(*u)
@@ -166,7 +222,7 @@ def right_hand_rule_figure(
         arc = [
             [A[i] + rho * (math.cos(t) * uh[i] + math.sin(t) * wh[i]) for t in ts] for i in range(3)
         ]
-        ax.plot(*arc, color=PALETTE["black"], linewidth=1.5)
+        ax.plot(*arc, color=PALETTE["black"], linewidth=2)
         end = [arc[i][-1] for i in range(3)]
         prev = [arc[i][-4] for i in range(3)]
         ax.quiver(
@@ -203,6 +259,7 @@ def right_hand_rule_figure(
     return fig
 
 
+@_styled
 def component_bar_chart(
     vectors: Mapping[str, Sequence[Any]] | Sequence[Any],
     *,
@@ -221,7 +278,7 @@ def component_bar_chart(
     Returns
     -------
     matplotlib.figure.Figure
-        6 × 3.5 inches, white, one colour per axis, each bar labelled with its
+        7 × 4.2 inches, white, one colour per axis, each bar labelled with its
         value, and ``fig.alt_text`` listing the values.
 
     Examples
@@ -235,7 +292,7 @@ def component_bar_chart(
     from trinormal.display import format_number
 
     groups = dict(vectors) if isinstance(vectors, Mapping) else {"": vectors}
-    fig = Figure(figsize=(6, 3.5), facecolor=FACECOLOR)
+    fig = Figure(figsize=(7, 4.2), facecolor=FACECOLOR)
     ax = fig.add_subplot()
     ax.set_facecolor(FACECOLOR)
     width = 0.8 / 3
@@ -253,18 +310,18 @@ def component_bar_chart(
                 (x, values[i]),
                 ha="center",
                 va="bottom" if values[i] >= 0 else "top",
-                fontsize=9,
+                fontsize=12,
                 xytext=(0, 2 if values[i] >= 0 else -2),
                 textcoords="offset points",
             )
         parts = ", ".join(f"{'xyz'[i]} = {texts[i]}" for i in range(3))
         described.append(f"{label}: {parts}" if label else parts)
-    ax.axhline(0, color=PALETTE["black"], linewidth=0.8)
+    ax.axhline(0, color=PALETTE["black"], linewidth=1.5)
     ax.set_xticks(range(len(groups)), [str(k) for k in groups])
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.margins(y=0.2)
-    ax.legend(title="component", loc="best", fontsize=9)
+    ax.legend(title="component", loc="best")
     fig.alt_text = f"Bar chart, {title}. " + "; ".join(described) + "."  # type: ignore[attr-defined]
     return fig
 
@@ -272,6 +329,7 @@ def component_bar_chart(
 # ------------------------------------------------------------------ mesh notebooks (06, 07)
 
 
+@_styled
 def precision_error_figure(
     sines: Mapping[str, Any],
     errors: Mapping[str, Any],
@@ -300,21 +358,29 @@ def precision_error_figure(
     import matplotlib.pyplot as plt
     import numpy as np
 
-    fig, ax = plt.subplots(figsize=(7, 4.2), facecolor=FACECOLOR)
+    from trinormal.display import format_number
+
+    fig, ax = plt.subplots(figsize=(8, 5), facecolor=FACECOLOR)
     ax.set_facecolor(FACECOLOR)
     colors = [PALETTE["vermillion"], PALETTE["blue"], PALETTE["green"], PALETTE["purple"]]
     floor = 1e-18
     for (label, s), color in zip(sines.items(), colors, strict=False):
         e = np.maximum(np.asarray(errors[label], dtype=float), floor)
-        ax.scatter(np.asarray(s, dtype=float), e, s=10, color=color, label=label, alpha=0.8)
+        ax.scatter(np.asarray(s, dtype=float), e, s=18, color=color, label=label, alpha=0.8)
     if tol is not None:
-        ax.axvline(tol, color=PALETTE["black"], linestyle="--", linewidth=1, label=f"tol = {tol:g}")
+        ax.axvline(
+            tol,
+            color=PALETTE["black"],
+            linestyle="--",
+            linewidth=2,
+            label=f"tol = {format_number(tol, 0)}",
+        )
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("sine of the angle between the edges (1 = right angle, 0 = a line)")
+    ax.set_xlabel("sine of the angle between the edges (1: right angle, 0: a line)")
     ax.set_ylabel("direction error (radians)")
     ax.set_title(title)
-    ax.legend(loc="upper right", fontsize=9)
+    ax.legend(loc="upper right")
     fig.tight_layout()
     fig.alt_text = (  # type: ignore[attr-defined]
         f"Log-log scatter plot, {title}: the error of each precision grows as the sine "
@@ -323,6 +389,7 @@ def precision_error_figure(
     return fig
 
 
+@_styled
 def shaded_mesh_figure(
     vertices: Any,
     faces: Any,
@@ -362,7 +429,7 @@ def shaded_mesh_figure(
     f = np.asarray(faces)
     cmap = LinearSegmentedColormap.from_list("lit", ["#101010", PALETTE["sky"], "#ffffff"])
     n = len(panels)
-    fig = plt.figure(figsize=(3.6 * n, 3.8), facecolor=FACECOLOR)
+    fig = plt.figure(figsize=(4 * n, 4.2), facecolor=FACECOLOR)
     lo, hi = v.min(axis=0), v.max(axis=0)
     mid, half = (lo + hi) / 2, (hi - lo).max() / 2
     described = []
@@ -379,11 +446,335 @@ def shaded_mesh_figure(
         ax.set_box_aspect((1, 1, 1))
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
-        ax.set_title(name, fontsize=10)
+        ax.set_title(name, fontsize=13)
         drawn = int(keep.sum())
         described.append(f"{name} ({drawn} of {len(b)} faces drawn)")
     if title:
         fig.suptitle(title)
     fig.subplots_adjust(left=0, right=1, bottom=0, top=0.88 if title else 0.95, wspace=0)
     fig.alt_text = "Shaded renderings of a mesh: " + "; ".join(described) + "."  # type: ignore[attr-defined]
+    return fig
+
+
+# ------------------------------------------------------------- shading, culling, transforms
+
+
+def camera_direction(elev: float, azim: float) -> Any:
+    """Return the unit vector from the scene towards a far camera, in matplotlib's angles.
+
+    Parameters
+    ----------
+    elev, azim : float
+        Elevation and azimuth in degrees, as in ``Axes3D.view_init``.
+
+    Returns
+    -------
+    ndarray, shape (3,)
+
+    Examples
+    --------
+    >>> [round(float(x), 6) for x in camera_direction(90, 0)]
+    [0.0, 0.0, 1.0]
+    """
+    import numpy as np
+
+    e, a = np.radians(elev), np.radians(azim)
+    return np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+
+
+def _lit(brightness: Any, base: str = "#56B4E9") -> Any:
+    """Colours from black (0) through ``base`` to white (1) for brightness values."""
+    import numpy as np
+    from matplotlib.colors import LinearSegmentedColormap
+
+    cmap = LinearSegmentedColormap.from_list("lit", ["#101010", base, "#ffffff"])
+    return cmap(np.clip(np.asarray(brightness, dtype=float), 0, 1))
+
+
+def _cube_limits(ax: Any, points: Any) -> None:
+    import numpy as np
+
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    mid, half = (lo + hi) / 2, (hi - lo).max() / 2
+    for setlim, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid, strict=True):
+        setlim(m - half, m + half)
+    ax.set_box_aspect((1, 1, 1))
+    del np
+
+
+def _subdivide(tri: Any, k: int) -> tuple[Any, Any]:
+    """Split every triangle of ``tri`` (F, 3, 3) into k² small ones.
+
+    Returns the small triangles (F·k², 3, 3) and the barycentric weights of
+    each small triangle's centre (k², 3), the same for every face.
+    """
+    import numpy as np
+
+    bary, centres = [], []
+    for i in range(k):
+        for j in range(k - i):
+            corners = [(i, j), (i + 1, j), (i, j + 1)]
+            bary.append(corners)
+            if j < k - i - 1:
+                bary.append([(i + 1, j), (i + 1, j + 1), (i, j + 1)])
+    w = np.array([[[1 - (a + b) / k, a / k, b / k] for a, b in t] for t in bary])  # (k², 3, 3)
+    centres = w.mean(axis=1)  # (k², 3)
+    small = np.einsum("sci,fid->fscd", w, tri).reshape(-1, 3, 3)
+    return small, centres
+
+
+@_styled
+def shading_figure(
+    vertices: Any,
+    faces: Any,
+    light: Sequence[float],
+    *,
+    weighting: str = "angle",
+    subdivisions: int = 8,
+    elev: float = 20.0,
+    azim: float = -50.0,
+) -> Figure:
+    """Flat and smooth Lambert shading of one closed mesh, side by side.
+
+    Flat shading lights each triangle with its face normal, so every facet
+    has one brightness. Smooth shading interpolates the vertex normals across
+    each triangle (the way a renderer blends them between the corners), and
+    here each triangle is cut into ``subdivisions²`` small pieces, each lit
+    with the normalised blend of the corner normals at its centre.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+    faces : array_like of int, shape (F, 3)
+        A closed, outward-wound mesh (only faces turned towards the camera are drawn).
+    light : sequence of 3 floats
+        Direction towards the light (normalised here).
+    weighting : {"angle", "area", "uniform"}
+        How :func:`trinormal.mesh.vertex_normals` averages the face normals.
+    subdivisions : int
+        How finely each triangle is cut for the smooth panel.
+    elev, azim : float
+        The camera, in matplotlib's angles (degrees).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two panels, with ``fig.alt_text`` set.
+    """
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    from trinormal import mesh
+
+    v = np.asarray(vertices, dtype=float)
+    f = np.asarray(faces)
+    lt = np.asarray(light, dtype=float)
+    lt = lt / np.linalg.norm(lt)
+    eye = camera_direction(elev, azim)
+    fn = mesh.face_normals(v, f)
+    vn = mesh.vertex_normals(v, f, weighting)
+    seen = fn @ eye > 0
+    tri = v[f[seen]]
+    flat_polys, flat_b = tri, np.maximum(0.0, fn[seen] @ lt)
+    small, centres = _subdivide(tri, subdivisions)
+    blend = np.einsum("si,fid->fsd", centres, vn[f[seen]]).reshape(-1, 3)
+    blend /= np.linalg.norm(blend, axis=1, keepdims=True)
+    smooth_b = np.maximum(0.0, blend @ lt)
+    fig = plt.figure(figsize=(9, 4.8), facecolor=FACECOLOR)
+    panels = {
+        "flat: one normal per face": (flat_polys, flat_b),
+        "smooth: vertex normals blended": (small, smooth_b),
+    }
+    for k, (name, (polys, b)) in enumerate(panels.items()):
+        ax = fig.add_subplot(1, 2, k + 1, projection="3d")
+        ax.set_facecolor(FACECOLOR)
+        ax.add_collection3d(Poly3DCollection(polys, facecolors=_lit(b), edgecolors="none"))
+        _cube_limits(ax, v)
+        ax.view_init(elev=elev, azim=azim)
+        ax.set_axis_off()
+        ax.set_title(name)
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=0.9, wspace=0)
+    fig.alt_text = (  # type: ignore[attr-defined]
+        f"Two renderings of the same mesh of {len(f)} triangles under one light. Left, flat "
+        "shading: every triangle has a single brightness, so the facets show as a mosaic. "
+        f"Right, smooth shading with {weighting}-weighted vertex normals blended across each "
+        "triangle: the brightness changes gradually and the facets disappear, although the "
+        "outline is still the same polygon."
+    )
+    return fig
+
+
+@_styled
+def culling_figure(
+    vertices: Any,
+    faces: Any,
+    *,
+    camera: tuple[float, float] = (30.0, -90.0),
+    side: tuple[float, float] = (30.0, 0.0),
+) -> Figure:
+    """Show what back-face culling removes: the camera's view, then the mesh from the side.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+    faces : array_like of int, shape (F, 3)
+        A closed, outward-wound mesh.
+    camera : (elev, azim)
+        The camera that decides front from back (matplotlib's angles, degrees).
+    side : (elev, azim)
+        A second camera, off to the side, that shows what was removed.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three panels: the camera's view of the front faces; all faces from the
+        side, front faces in the ``front`` colour and back faces in the ``back``
+        colour of :mod:`trinormal.colors`; the front faces alone from the side.
+    """
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    from trinormal import mesh
+
+    v = np.asarray(vertices, dtype=float)
+    f = np.asarray(faces)
+    fn = mesh.face_normals(v, f)
+    eye = camera_direction(*camera)
+    front = fn @ eye > 0
+    light = eye + np.array([0.0, 0.0, 0.6])
+    light /= np.linalg.norm(light)
+    shade = 0.55 + 0.45 * np.abs(fn @ light)
+    from matplotlib.colors import to_rgb
+
+    def colours(mask: Any) -> Any:
+        base = np.where(
+            mask[:, None], np.array(to_rgb(ROLE_COLORS["front"])), to_rgb(ROLE_COLORS["back"])
+        )
+        return np.clip(base * shade[:, None], 0, 1)
+
+    all_colours = colours(front)
+    panels = [
+        ("the camera's view", front, camera),
+        ("from the side: all faces", np.ones(len(f), bool), side),
+        ("from the side: back faces culled", front, side),
+    ]
+    fig = plt.figure(figsize=(12, 4.6), facecolor=FACECOLOR)
+    for k, (name, keep, (el, az)) in enumerate(panels):
+        ax = fig.add_subplot(1, 3, k + 1, projection="3d")
+        ax.set_facecolor(FACECOLOR)
+        ax.add_collection3d(
+            Poly3DCollection(v[f[keep]], facecolors=all_colours[keep], edgecolors="none")
+        )
+        _cube_limits(ax, v)
+        ax.view_init(elev=el, azim=az)
+        ax.set_axis_off()
+        ax.set_title(name)
+    from matplotlib.patches import Patch
+
+    fig.legend(
+        handles=[
+            Patch(color=ROLE_COLORS["front"], label="front face (towards the camera)"),
+            Patch(color=ROLE_COLORS["back"], label="back face"),
+        ],
+        loc="lower center",
+        ncol=2,
+        frameon=False,
+    )
+    fig.subplots_adjust(left=0, right=1, bottom=0.1, top=0.9, wspace=0)
+    n_front = int(front.sum())
+    fig.alt_text = (  # type: ignore[attr-defined]
+        f"Three views of a mesh of {len(f)} triangles. First, the camera's view, which shows "
+        f"only the {n_front} faces whose normals point towards it. Second, the same mesh from "
+        "the side with every face drawn: the half facing the camera in yellow, the other half "
+        "in blue. Third, the same side view after culling: the blue back half is gone, and "
+        "the camera never saw it."
+    )
+    return fig
+
+
+@_styled
+def normal_transform_figure(sx: float = 2.0, sy: float = 1.0, count: int = 16) -> Figure:
+    """Draw a cylinder seen end-on, stretched, with its normals transformed two ways.
+
+    The cylinder's axis points at the viewer, so its surface is drawn as a
+    circle and its normals lie in the picture. The stretch
+    ``M = diag(sx, sy, 1)`` turns it into an elliptic cylinder.
+
+    Parameters
+    ----------
+    sx, sy : float
+        The stretch along x and y.
+    count : int
+        How many normals to draw.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three panels: the surface and its normals; the stretched copy with the
+        normals multiplied by M (dashed black, not perpendicular); the stretched
+        copy with the normals multiplied by M⁻ᵀ (the ``N`` colour, perpendicular).
+        ``fig.alt_text`` gives the largest error of each.
+    """
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from trinormal.display import format_number
+
+    t = np.linspace(0, 2 * np.pi, 400)
+    s = np.linspace(0, 2 * np.pi, count, endpoint=False) + np.pi / count
+    p = np.stack([np.cos(s), np.sin(s)], axis=1)  # points on the unit circle
+    n = p.copy()  # their outward normals
+    m = np.array([sx, sy])
+    q = p * m
+    wrong = n * m
+    right = n / m
+    tangent = np.stack([-np.sin(s), np.cos(s)], axis=1) * m  # the tangent, moved with the surface
+
+    def off(normals: Any) -> Any:
+        u = normals / np.linalg.norm(normals, axis=1, keepdims=True)
+        tt = tangent / np.linalg.norm(tangent, axis=1, keepdims=True)
+        return np.degrees(np.abs(np.arcsin(np.clip(np.abs((u * tt).sum(1)), 0, 1))))
+
+    err_wrong, err_right = off(wrong).max(), off(right).max()
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.8), facecolor=FACECOLOR)
+    stretch = f"x × {format_number(sx, 2, trim=True)}"
+    if sy != 1:
+        stretch += f", y × {format_number(sy, 2, trim=True)}"
+    panels = [
+        ("the surface and its normals", p, n, ROLE_COLORS["N"], "-", np.ones(2)),
+        ("stretched, normals × M (wrong)", q, wrong, "#000000", "--", m),
+        ("stretched, normals × M⁻ᵀ (right)", q, right, ROLE_COLORS["N"], "-", m),
+    ]
+    length = 0.45
+    for ax, (name, pts, vecs, col, style, scale) in zip(axes, panels, strict=True):
+        ax.set_facecolor(FACECOLOR)
+        ax.plot(scale[0] * np.cos(t), scale[1] * np.sin(t), color=ROLE_COLORS["A"], lw=2.5)
+        u = vecs / np.linalg.norm(vecs, axis=1, keepdims=True) * length
+        for (x, y), (dx, dy) in zip(pts, u, strict=True):
+            ax.annotate(
+                "",
+                xy=(x + dx, y + dy),
+                xytext=(x, y),
+                arrowprops={"arrowstyle": "-|>", "color": col, "lw": 2, "linestyle": style},
+            )
+        ax.set_aspect("equal")
+        r = max(sx, sy, 1) + length + 0.1
+        ax.set_xlim(-r, r)
+        ax.set_ylim(-r * 0.75, r * 0.75)
+        ax.set_title(name)
+        ax.set_xticks([])
+        ax.set_yticks([])
+    fig.suptitle(f"A cylinder seen end-on, then stretched by M ({stretch})")
+    fig.tight_layout()
+    fig.alt_text = (  # type: ignore[attr-defined]
+        f"Three panels. Left: a circle, the end view of a cylinder, with {count} outward "
+        f"normals at right angles to it. Middle: the cylinder stretched ({stretch}) into an "
+        "ellipse, with the normals multiplied by the same matrix: dashed arrows that lean "
+        f"away from the perpendicular by up to {format_number(err_wrong, 1)} degrees. Right: "
+        "the same ellipse with the normals multiplied by the inverse transpose: every arrow "
+        f"is at right angles to the surface (largest error {format_number(err_right, 1)} "
+        "degrees)."
+    )
     return fig

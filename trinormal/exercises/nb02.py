@@ -1,0 +1,121 @@
+"""Exercises of notebook 02, the symbolic derivation."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from trinormal.core import triangle_normal
+from trinormal.exercises import Exercise
+
+#: The edges of exercise 02-lagrange.
+LAGRANGE_U, LAGRANGE_V = (1, 2, 2), (2, 0, 0)
+
+
+def _dot(p: tuple[int, ...], q: tuple[int, ...]) -> int:
+    return sum(a * b for a, b in zip(p, q, strict=True))
+
+
+def _lagrange() -> Any:
+    return triangle_normal((0, 0, 0), LAGRANGE_U, LAGRANGE_V).exact.magnitude_squared
+
+
+def _scaling_power() -> int:
+    """Measure k in N(sA, sB, sC) = s**k N(A, B, C) with s = 2 on a sample triangle."""
+    a, b, c = (1, 2, 3), (4, 0, -1), (2, 5, 1)
+    n1 = triangle_normal(a, b, c).exact.normal
+    sa, sb, sc = (tuple(2 * x for x in p) for p in (a, b, c))
+    n2 = triangle_normal(sa, sb, sc).exact.normal
+    ratio = next(y / x for x, y in zip(n1, n2, strict=True) if x != 0)
+    return int(ratio.numerator).bit_length() - 1
+
+
+_NAMES = ("Ux", "Uy", "Uz", "Vx", "Vy", "Vz")
+
+
+def _nz_example() -> str:
+    return "Ux*Vy - Uy*Vx"
+
+
+def _check_nz(answer: Any) -> bool | tuple[bool, str]:
+    import sympy as sp
+
+    from trinormal.symbolic import EDGE_SYMBOLS, normal_components
+
+    symbols = {str(s): s for e in EDGE_SYMBOLS for s in e}
+    # ux, U_x and u_x mean Ux too: match names without case or underscores
+    loose = {name.lower(): symbols[name] for name in _NAMES}
+    try:
+        expr = sp.sympify(answer, locals=symbols) if isinstance(answer, str) else answer
+        expr = sp.sympify(expr)
+        unknown = []
+        for sym in expr.free_symbols:
+            key = str(sym).replace("_", "").lower()
+            if key in loose:
+                expr = expr.subs(sym, loose[key])
+            else:
+                unknown.append(str(sym))
+    except (sp.SympifyError, TypeError, SyntaxError, AttributeError):
+        return False, "Your answer could not be read as an expression in Ux, Uy, Uz, Vx, Vy, Vz."
+    if unknown:
+        return False, (
+            f"Your answer uses {', '.join(sorted(unknown))}: write it with Ux, Uy, Uz, Vx, Vy, Vz "
+            "only."
+        )
+    nz = normal_components("edges").z
+    if sp.expand(expr - nz) == 0:
+        return True
+    if sp.expand(expr + nz) == 0:
+        return False, "You have the right terms with the opposite sign: which product comes first?"
+    used = {str(s) for s in expr.free_symbols}
+    if used & {"Uz", "Vz"}:
+        return False, "N_z does not involve Uz or Vz: only the x and y components of U and V."
+    return False, "Use the x and y components of U and V: N_z = (one product) − (another)."
+
+
+EXERCISES = (
+    Exercise(
+        "02-nz-formula",
+        "Write N_z in terms of the edge components Ux, Uy, Uz, Vx, Vy, Vz "
+        "(a sympy expression or a string such as 'Ux*Vy - ...').",
+        checker=_check_nz,
+        example=_nz_example,
+    ),
+    Exercise(
+        "02-scaling-power",
+        "Scaling all three points by s multiplies N by s**k. What is k?",
+        expected=_scaling_power,
+        hint="Each edge is scaled by s, and N multiplies two edges.",
+        mistakes=(
+            (1, "Each edge grows by s, but N is a product of two edges."),
+            (3, "Three factors of s would scale a volume; N is a product of two edges."),
+        ),
+    ),
+    Exercise(
+        "02-lagrange",
+        "U = (1, 2, 2) and V = (2, 0, 0). Use Lagrange's identity to find |N|² exactly.",
+        expected=_lagrange,
+        hint="|N|² = |U|²|V|² − (U · V)²: compute the three dot products first.",
+        mistakes=(
+            (
+                lambda: _dot(LAGRANGE_U, LAGRANGE_U) * _dot(LAGRANGE_V, LAGRANGE_V),
+                "That is |U|²|V|²: now subtract (U · V)².",
+            ),
+            (
+                lambda: (
+                    _dot(LAGRANGE_U, LAGRANGE_U) * _dot(LAGRANGE_V, LAGRANGE_V)
+                    - _dot(LAGRANGE_U, LAGRANGE_V)
+                ),
+                "You subtracted U · V: subtract its square, (U · V)².",
+            ),
+            (
+                lambda: (
+                    _dot(LAGRANGE_U, LAGRANGE_U) * _dot(LAGRANGE_V, LAGRANGE_V)
+                    + _dot(LAGRANGE_U, LAGRANGE_V) ** 2
+                ),
+                "(U · V)² is subtracted, not added.",
+            ),
+            (lambda: math.sqrt(_lagrange()), "That is |N|: the question asks for |N|²."),
+        ),
+    ),
+)

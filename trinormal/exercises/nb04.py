@@ -1,0 +1,101 @@
+"""Exercises of notebook 04, common mistakes."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+from trinormal.core import triangle_normal
+from trinormal.exercises import Exercise, raw_normal, unit
+
+#: The triangle of exercise 04-dot-value: U · V and N_z differ on purpose.
+DOT_TRIANGLE = ((0, 0, 0), (2, 0, 0), (3, 1, 0))
+#: The two faces of exercise 04-weighted-sum.
+BIG = ((0, 0, 0), (4, 0, 0), (0, 4, 0))
+SMALL = ((0, 0, 0), (0, 1, 0), (0, 0, 1))
+#: The 2D triangle of exercise 04-2d-nz, as (x, y) points P, Q, R.
+FLAT = ((0, 0), (0, 2), (3, 0))
+
+
+def _dot_value() -> Fraction:
+    e = triangle_normal(*DOT_TRIANGLE).exact
+    return sum((u * v for u, v in zip(e.u, e.v, strict=True)), Fraction(0))
+
+
+def _add(p: tuple[Any, ...], q: tuple[Any, ...]) -> tuple[Any, ...]:
+    return tuple(x + y for x, y in zip(p, q, strict=True))
+
+
+def _weighted_sum() -> tuple[Fraction, ...]:
+    return _add(raw_normal(*BIG), raw_normal(*SMALL))
+
+
+def _flat_nz() -> Fraction:
+    p, q, r = ((x, y, 0) for x, y in FLAT)
+    return raw_normal(p, q, r)[2]
+
+
+EXERCISES = (
+    Exercise(
+        "04-dot-value",
+        "For A = (0,0,0), B = (2,0,0), C = (3,1,0), what is U · V (the product that is not N)?",
+        expected=_dot_value,
+        hint="U · V = UxVx + UyVy + UzVz: multiply matching components and add.",
+        mistakes=(
+            (
+                lambda: raw_normal(*DOT_TRIANGLE)[2],
+                "That is N_z, the z component of U × V. The dot product multiplies matching "
+                "components (x with x, y with y, z with z) and adds them.",
+            ),
+        ),
+    ),
+    Exercise(
+        "04-weighted-sum",
+        "Add the raw normals of (0,0,0), (4,0,0), (0,4,0) and (0,0,0), (0,1,0), (0,0,1) "
+        "(the area-weighted sum).",
+        expected=_weighted_sum,
+        hint="Compute each raw normal N = U × V, then add them component by component.",
+        mistakes=(
+            (
+                lambda: _add(unit(raw_normal(*BIG)), unit(raw_normal(*SMALL))),
+                "You added unit normals, so both faces count the same. Add the raw normals, "
+                "whose lengths are twice the areas.",
+            ),
+            (
+                lambda: tuple(x / 2 for x in _weighted_sum()),
+                "That is the sum of N / 2 (the areas as vectors): add the raw normals N "
+                "themselves.",
+            ),
+            (
+                lambda: _add(raw_normal(*BIG), raw_normal(*SMALL, winding="ACB")),
+                "The small face's normal is reversed: for (0,0,0), (0,1,0), (0,0,1) take "
+                "U = (0, 1, 0) first.",
+            ),
+            (
+                lambda: _add(raw_normal(*BIG, winding="ACB"), raw_normal(*SMALL)),
+                "The large face's normal is reversed: for (0,0,0), (4,0,0), (0,4,0) take "
+                "U = (4, 0, 0) first.",
+            ),
+        ),
+    ),
+    Exercise(
+        "04-2d-nz",
+        "The 2D triangle P = (0, 0), Q = (0, 2), R = (3, 0), placed at z = 0: what is N_z, "
+        "the z component of its raw normal, for the order P → Q → R?",
+        expected=_flat_nz,
+        hint="Add z = 0 to each point, then N_z = UxVy − UyVx with U = Q − P and V = R − P.",
+        mistakes=(
+            (
+                lambda: -_flat_nz(),
+                "Wrong sign. Seen from +z, does P → Q → R turn counterclockwise (positive) "
+                "or clockwise?",
+            ),
+            (
+                lambda: _flat_nz() / abs(_flat_nz()),
+                "That is the unit normal's z component: the question asks for the raw N_z, "
+                "whose size is twice the area.",
+            ),
+            (0, "A flat triangle in the xy-plane has its normal along z, so N_z is not 0."),
+        ),
+    ),
+)

@@ -1,0 +1,42 @@
+"""Exercises of notebook 06, float precision."""
+
+from __future__ import annotations
+
+import math
+
+from trinormal.exercises import Exercise
+
+
+def _float64_bits() -> int:
+    import numpy as np
+
+    return int(np.finfo(np.float64).nmant) + 1
+
+
+def _float64_digits() -> float:
+    return _float64_bits() * math.log10(2)
+
+
+EXERCISES = (
+    Exercise(
+        "06-float64-bits",
+        "How many significand bits does a float64 carry (numpy.finfo helps)?",
+        expected=_float64_bits,
+        hint="np.finfo(np.float64).nmant counts the stored bits; add the implicit leading bit.",
+        mistakes=(
+            (
+                lambda: _float64_bits() - 1,
+                "That is nmant, the stored bits: one more leading bit is implicit.",
+            ),
+            (64, "64 is the whole format, sign and exponent included: count the significand."),
+        ),
+    ),
+    Exercise(
+        "06-float64-digits",
+        "About how many decimal digits does a float64 carry? (Answers within 0.5 count.)",
+        expected=_float64_digits,
+        tol=0.5,
+        hint="Each significand bit is worth log10(2), about 0.301 decimal digits.",
+        mistakes=((_float64_bits, "That is the number of bits: multiply it by log10(2)."),),
+    ),
+)

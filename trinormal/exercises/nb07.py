@@ -1,0 +1,19 @@
+"""Exercises of notebook 07, the limits of precision."""
+
+from __future__ import annotations
+
+from trinormal.core import triangle_normal
+from trinormal.exercises import Exercise
+
+#: The needle of exercise 07-needle-degenerate.
+NEEDLE = ((0, 0, 0), (1, 0, 0), (2, 3e-12, 0))
+
+EXERCISES = (
+    Exercise(
+        "07-needle-degenerate",
+        "With the default tol, is (0,0,0), (1,0,0), (2,3e-12,0) degenerate? (True/False)",
+        expected=lambda: triangle_normal(*NEEDLE).degenerate,
+        hint="Compute its sine, |N| / (|U| |V|), and compare it with DEFAULT_TOL = 1e-12: "
+        "degenerate means sine <= tol.",
+    ),
+)

@@ -1,0 +1,59 @@
+"""Exercises of notebook 10, transforms."""
+
+from __future__ import annotations
+
+from trinormal.exercises import Exercise, unit
+
+#: Exercise 10-det-cross: M = diag(2, 3, 4), U = (1, 0, 0), V = (0, 1, 0).
+DIAG = (2, 3, 4)
+
+
+def _det_cross() -> tuple[int, int, int]:
+    mu, mv = (DIAG[0], 0, 0), (0, DIAG[1], 0)
+    return (
+        mu[1] * mv[2] - mu[2] * mv[1],
+        mu[2] * mv[0] - mu[0] * mv[2],
+        mu[0] * mv[1] - mu[1] * mv[0],
+    )
+
+
+EXERCISES = (
+    Exercise(
+        "10-scaled-normal",
+        "A plane has unit normal (1, 1, 0)/√2. Scale x by 2. What is its new unit normal? "
+        "(Within 0.0001 per component.)",
+        expected=lambda: unit((1 / 2, 1, 0)),
+        tol=1e-4,
+        hint="Transform the normal by the inverse transpose, then normalise.",
+        mistakes=(
+            (
+                lambda: unit((2, 1, 0)),
+                "That is M n normalised: the normal moved like a point. Use M⁻ᵀ, which "
+                "divides the x component by 2 instead.",
+            ),
+            (
+                (1 / 2, 1, 0),
+                "Right direction, but not a unit vector yet: divide by its length.",
+            ),
+        ),
+    ),
+    Exercise(
+        "10-det-cross",
+        "For M = diag(2, 3, 4), U = (1, 0, 0), V = (0, 1, 0): what is (MU) × (MV)?",
+        expected=_det_cross,
+        hint="Multiply it out: MU = (2, 0, 0) and MV = (0, 3, 0).",
+        mistakes=(
+            (
+                (0, 0, 24),
+                "That is det(M) · (U × V). The identity is det(M) · M⁻ᵀ (U × V): M⁻ᵀ divides "
+                "the z component by 4.",
+            ),
+            ((0, 0, 1), "That is U × V before the transform: transform U and V first."),
+            (
+                (0, 0, -6),
+                "Your vector points the opposite way: det(M) = 24 > 0, so the transform keeps "
+                "the orientation.",
+            ),
+        ),
+    ),
+)
