@@ -230,9 +230,9 @@ class Snapshot:
         ax3.set_autoscale_on(False)
         for axis, name in zip((ax3.xaxis, ax3.yaxis, ax3.zaxis), "xyz", strict=True):
             axis.set_pane_color((0.96, 0.96, 0.96, 1.0))
-            axis.set_label_text(name)
+            axis.set_label_text(name, fontsize=13)
             axis.labelpad = -2
-        ax3.tick_params(labelsize=7, pad=-1)
+        ax3.tick_params(labelsize=12, pad=0)
         ax3.view_init(elev=22, azim=-60)
         art["face"] = Poly3DCollection(
             [[(0, 0, 0), (1, 0, 0), (0, 1, 0)]],
@@ -241,7 +241,7 @@ class Snapshot:
             alpha=0.55,
         )
         ax3.add_collection3d(art["face"], autolim=False)
-        (art["edges"],) = ax3.plot([], [], [], color=_EDGE_COLOR, lw=1.2)
+        (art["edges"],) = ax3.plot([], [], [], color=_EDGE_COLOR, lw=1.6)
         (art["arc"],) = ax3.plot([], [], [], color=ROLE_COLORS["N"], lw=2.0)
         for name in "UVN":
             coll = Line3DCollection([], colors=ROLE_COLORS[name], linewidths=2.5)
@@ -260,7 +260,7 @@ class Snapshot:
                 ms=13,
                 color=ROLE_COLORS[name],
             )
-        art["title3"] = ax3.set_title("", fontsize=10)
+        art["title3"] = ax3.set_title("", fontsize=13)
 
         # bar charts: N (limits follow the data in 1-2-5 steps) and the unit normal (fixed)
         xs = (0, 1, 2)
@@ -269,16 +269,16 @@ class Snapshot:
             (ax_u, "u", "components of the unit normal n̂ = N / |N|"),
         ):
             art["bars_" + key] = list(ax.bar(xs, (0, 0, 0), color=_AXIS_COLORS, width=0.6))
-            art["zero_" + key] = ax.axhline(0.0, color=_EDGE_COLOR, lw=0.8)
+            art["zero_" + key] = ax.axhline(0.0, color=_EDGE_COLOR, lw=1.5)
             ax.set_xticks(xs, ["x", "y", "z"])
             ax.set_xlim(-0.6, 2.6)
-            ax.set_title(title, fontsize=10)
-            ax.tick_params(labelsize=8)
+            ax.set_title(title, fontsize=13)
+            ax.tick_params(labelsize=12)
             ax.set_autoscale_on(False)
         ax_u.set_ylim(-1.4, 1.4)
         ax_u.set_yticks([-1.0, -0.5, 0.0, 0.5, 1.0])
         art["undefined"] = ax_u.text(
-            1, 0.7, "", ha="center", va="center", fontsize=10, color=ROLE_COLORS["U"]
+            1, 0.7, "", ha="center", va="center", fontsize=12, color=ROLE_COLORS["U"]
         )
 
         # the artists that move, in the order a full draw paints them
