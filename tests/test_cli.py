@@ -145,3 +145,100 @@ def test_output_piped_into_a_reader_that_stops_early():
     err = p.stderr.read().decode()
     assert p.wait(timeout=60) == 0
     assert "Traceback" not in err and "BrokenPipeError" not in err
+
+
+# --------------------------------------------------------------------------- hard environments
+
+
+def run_env(*args: str, **env: str) -> subprocess.CompletedProcess[bytes]:
+    import os
+
+    return subprocess.run(
+        [sys.executable, "-m", "trinormal", *args],
+        capture_output=True,
+        timeout=60,
+        env={**os.environ, **env},
+    )
+
+
+@pytest.mark.parametrize("encoding", ["ascii", "cp1252", "latin-1"])
+@pytest.mark.parametrize("mode", [[], ["--steps"], ["--json"], ["--help"]])
+def test_output_falls_back_to_ascii_when_the_stream_cannot_encode_symbols(encoding, mode):
+    p = run_env("1,1,1", "2,1,1", "1,2,2", *mode, PYTHONIOENCODING=encoding)
+    assert p.returncode == 0, p.stderr
+    assert p.stderr == b""
+    text = p.stdout.decode(encoding)
+    if mode == ["--json"]:
+        assert json.loads(text)["formatted"]["unit_normal"] == "(0.0000, -0.7071, 0.7071)"
+    elif mode == ["--help"]:
+        assert "usage: trinormal" in text and "U = B - A" in text
+    elif mode == ["--steps"]:
+        assert "|N| = sqrt(2) ~ 1.4142" in text
+    else:
+        assert "N = U x V      (0.0000, -1.0000, 1.0000)" in text
+        assert "A->B->C" in text and "U = B - A" in text
+
+
+def test_errors_fall_back_to_ascii_too():
+    p = run_env("0,0,0", "1,0,0", "0,\uff11,0", PYTHONIOENCODING="ascii")
+    assert p.returncode == 2
+    assert p.stderr.decode("ascii").splitlines() == [
+        "trinormal: error: C.y = '\\uff11' is not a number "
+        "(use a decimal like 0.1 or a fraction like 1/3)"
+    ]
+
+
+@pytest.mark.parametrize("mode", [[], ["--json"], ["--steps"], ["--help"]])
+def test_a_full_device_is_one_line_and_status_1(mode, tmp_path):
+    import os
+
+    if not os.path.exists("/dev/full"):  # pragma: no cover - Linux has it
+        pytest.fail("this test needs /dev/full")
+    with open("/dev/full", "w") as full:
+        p = subprocess.run(
+            [sys.executable, "-m", "trinormal", "0,0,0", "1,0,0", "0,1,0", *mode],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=60,
+        )
+    assert p.returncode == 1
+    assert p.stderr.splitlines() == [
+        "trinormal: error: cannot write the output: No space left on device"
+    ]
+
+
+def test_what_readers_paste_is_read_and_long_input_is_not_echoed():
+    p = run("\u22121,0,0", " 1 ,\u00a00 ,0", "0,1,0")
+    assert p.returncode == 0, p.stderr
+    assert "A, B, C        (\u22121, 0, 0)   (1, 0, 0)   (0, 1, 0)" in p.stdout
+    p = run("0,0,0", "1,0,0", "0," + "1" * 5000 + ",0")
+    assert p.returncode == 2
+    assert p.stderr == "trinormal: error: C.y is too long (5000 characters; at most 1000)\n"
+
+
+@pytest.mark.parametrize(
+    "point",
+    ["1e-2200,0,0", "1e399,0,0", "5e-324,1e308,0"],
+)
+def test_extreme_accepted_input_prints_in_every_mode(point):
+    for mode in ([], ["--json"], ["--steps"], ["--arithmetic", "float32"]):
+        p = run("0,0,0", point, "0,1,1e-300", *mode)
+        assert p.returncode in (0, 2), p.stderr
+        assert "Traceback" not in p.stderr
+        if p.returncode == 2:  # refused: one line naming the coordinate
+            assert p.stderr.startswith("trinormal: error: ") and p.stderr.count("\n") == 1
+
+
+def test_a_closed_output_stream_is_one_line_and_status_1():
+    import os
+
+    p = subprocess.run(
+        [sys.executable, "-m", "trinormal", "0,0,0", "1,0,0", "0,1,0"],
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=60,
+        preexec_fn=lambda: os.close(1),  # start with the output stream closed
+    )
+    assert p.returncode == 1
+    assert p.stderr == "trinormal: error: cannot write the output: the output stream is closed\n"

@@ -404,3 +404,65 @@ def test_fast_path_degeneracy_verdict_at_the_tolerance():
         assert fast == careful
         flips += fast.degenerate
     assert 0 < flips < 2000  # both verdicts occur
+
+
+# --------------------------------------------------------------------------- hard inputs
+
+
+def test_float_range_errors_are_value_errors_naming_what_overflowed():
+    from trinormal.core import FloatRangeError
+
+    # N's components fit in float64 but |N| = 2.1e308 does not
+    pts = ((0, 0, 0), (1e154, 1e154, 0), (0, 0, 1.5e154))
+    with pytest.raises(FloatRangeError, match=r"^\|N\| overflows the float64 range") as info:
+        triangle_normal(*pts, arithmetic="float64")
+    assert isinstance(info.value, ValueError) and isinstance(info.value, OverflowError)
+    r = triangle_normal(*pts)  # the exact path has no range to leave
+    assert r.magnitude == math.inf and r.format(2)["magnitude"] == "2.12e+308"
+    with pytest.raises(ValueError, match=r"B\.x is outside the float32 range"):
+        triangle_normal((0, 0, 0), (1e39, 0, 0), (0, 1, 0), arithmetic="float32")
+
+
+@pytest.mark.parametrize("arithmetic", ["float64", "float32"])
+def test_float_results_always_format(arithmetic):
+    rng = random.Random(31)
+    for _ in range(300):
+        e = rng.randint(-1100, 1024) if arithmetic == "float64" else rng.randint(-160, 128)
+        pts = [[math.ldexp(rng.uniform(-1, 1), e) for _ in range(3)] for _ in range(3)]
+        try:
+            r = triangle_normal(*pts, arithmetic=arithmetic)
+        except ValueError as err:
+            assert "range" in str(err)
+            continue
+        assert all(math.isfinite(x) for x in (*r.u, *r.v, *r.normal, r.magnitude, r.area))
+        r.format(15)
+        r.to_dict()
+
+
+def test_winding_and_arithmetic_of_the_wrong_type_are_value_errors():
+    ok = ((0, 0, 0), (1, 0, 0), (0, 1, 0))
+    with pytest.raises(ValueError, match="winding must be 'ABC' or 'ACB'"):
+        triangle_normal(*ok, winding=np.array(["ABC", "ACB"]))  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="arithmetic must be one of exact, float64, float32"):
+        triangle_normal(*ok, arithmetic=None)  # type: ignore[arg-type]
+
+
+def test_plain_ints_beyond_the_limit_leave_the_fast_path_and_are_refused():
+    with pytest.raises(ValueError, match=r"^C\.z is too large a number"):
+        triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 10**400))
+    r = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 10**399))
+    assert r.exact.c[2] == 10**399
+
+
+def test_the_core_imports_only_the_standard_library():
+    code = (
+        "import sys, trinormal, trinormal.cli, trinormal.validation;"
+        "trinormal.cli.main(['0,0,0', '1,0,0', '0,1,0', '--steps']);"
+        "bad = {'numpy', 'sympy', 'matplotlib', 'ipywidgets'} & set(sys.modules);"
+        "sys.exit(1 if bad else 0)"
+    )
+    import subprocess
+    import sys
+
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, timeout=60)
+    assert p.returncode == 0, p.stderr

@@ -26,11 +26,16 @@ from trinormal.display import exact_text, format_surd, radical, radical_text
         (Fraction(1, 3), 15, "0.333333333333333"),
         (2.7755575615628914e-17, 4, "2.7756e-17"),
         (1e-4, 4, "0.0001"),
-        (0.99999e-4, 4, "9.9999e-05"),
+        (0.99999e-5, 4, "9.9999e-06"),
+        (0.99999e-4, 4, "0.0001"),  # fixed-point shows it: no switch to scientific
+        (0.707, 0, "1"),
+        (0.4, 0, "4e-01"),
+        (0.5, 0, "1"),  # a tie rounds away from zero, so fixed-point shows it
+        (-0.00004999, 4, "-4.9990e-05"),
         (1e15, 4, "1.0000e+15"),
         (999999999999999.0, 2, "999999999999999.00"),
         (-3e-9, 0, "-3e-09"),
-        (Fraction(9999995, 10**11), 4, "1.0000e-04"),  # 9.999995e-5 carries into a new digit
+        (Fraction(9999995, 10**12), 4, "1.0000e-05"),  # 9.999995e-6 carries into a new digit
         (Decimal("0.1"), 1, "0.1"),
         (7.3710e599 if False else 7371 * 10**596, 4, "7.3710e+599"),
     ],
@@ -43,7 +48,8 @@ def test_trim():
     assert format_number(0.5, 4, trim=True) == "0.5"
     assert format_number(2.0, 4, trim=True) == "2"
     assert format_number(-0.0, 4, trim=True) == "0"
-    assert format_number(5e-5, 4, trim=True) == "5e-05"
+    assert format_number(5e-6, 4, trim=True) == "5e-06"
+    assert format_number(5e-5, 4, trim=True) == "0.0001"
     assert format_vector((0.0, -0.70710678, 0.70710678), 4, trim=True) == "(0, -0.7071, 0.7071)"
 
 
@@ -68,8 +74,8 @@ def test_rationals_round_half_away_from_zero_exactly():
             ref = (Decimal(q.numerator) / Decimal(q.denominator)).quantize(
                 Decimal(1).scaleb(-p), rounding=ROUND_HALF_UP
             )
-        if abs(q) < Fraction(1, 10**p) and q != 0:
-            continue  # scientific notation, checked elsewhere
+        if 2 * abs(q) < Fraction(1, 10**p) and q != 0:
+            continue  # fixed-point would show zero: scientific notation, checked elsewhere
         assert format_number(q, p) == f"{ref:.{p}f}"
 
 
@@ -81,10 +87,24 @@ def test_square_roots_are_correctly_rounded():
         with localcontext() as ctx:
             ctx.prec = 80
             exact = (Decimal(num) / Decimal(den)).sqrt()
-            if exact < Decimal(1).scaleb(-p):
+            if 2 * exact < Decimal(1).scaleb(-p):
                 continue
             ref = exact.quantize(Decimal(1).scaleb(-p), rounding=ROUND_HALF_UP)
         assert format_surd(False, num, den, p) == f"{ref:.{p}f}"
+
+
+def test_scientific_exactly_where_fixed_point_would_show_zero():
+    """The switch happens at half of 10**-p: below it fixed-point rounds to zero."""
+    for p in range(16):
+        half = Fraction(1, 2 * 10**p)
+        assert "e" not in format_number(half, p)  # a tie rounds away from zero: 0.0…1
+        assert format_number(half, p).endswith("1")
+        assert "e-" in format_number(half - Fraction(1, 10**40), p)
+        assert "e" not in format_number(-half, p) and format_number(-half, p).startswith("-")
+    # the unit normal of the guide's third row at precision 0 (issue: it read 7e-01)
+    r = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    assert r.format(0)["unit_normal"] == "(0, -1, 1)"
+    assert format_number(0.707, 0) == "1"
 
 
 def test_square_root_ties_are_exact():

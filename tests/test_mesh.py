@@ -355,3 +355,73 @@ def test_bad_options():
 def test_empty_mesh():
     assert mesh.face_normals(GOOD_V, np.empty((0, 3), dtype=int)).shape == (0, 3)
     assert mesh.vertex_normals(GOOD_V, np.empty((0, 3), dtype=int)).tolist() == [[0, 0, 0]] * 4
+
+
+# --------------------------------------------------------------------------- hard inputs
+
+
+def test_float32_near_its_limit_gives_inf_not_a_warning():
+    v = np.array([[0, 0, 0], [1e30, 0, 0], [0, 1e30, 0], [3e38, 3e38, 0]], dtype=np.float32)
+    f = [[0, 1, 2], [0, 3, 2]]
+    raw = mesh.face_normals(v, f, unit=False)  # |N| = 1e60 is beyond float32: inf, quietly
+    assert raw.dtype == np.float32 and raw[0, 2] == np.inf
+    assert mesh.face_areas(v, f)[0] == np.inf
+    np.testing.assert_array_equal(mesh.face_normals(v, f)[0], [0, 0, 1])
+    for weighting in mesh.WEIGHTINGS:
+        assert np.isfinite(mesh.vertex_normals(v, f, weighting)).all()
+
+
+def test_area_weights_are_scaled_per_vertex_so_tiny_faces_keep_their_direction():
+    s = 1e-165  # |N| about 1e-330: below the float range, but the face is valid
+    v = np.array(
+        [[0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 5, 5], [0, 0, 0], [s, 0, 0], [0, 0, s]], dtype=float
+    )
+    f = np.array([[0, 1, 2], [0, 1, 3], [4, 5, 6]])
+    got = mesh.vertex_normals(v, f, "area")
+    np.testing.assert_allclose(got[4:], [[0, -1, 0]] * 3, atol=EPS)  # the tiny face alone
+    # the same tiny face scaled up to ordinary size gives the same vertex normals
+    big = v.copy()
+    big[4:] /= s
+    np.testing.assert_allclose(got[4:], mesh.vertex_normals(big, f, "area")[4:], atol=EPS)
+    np.testing.assert_allclose(got[:4], mesh.vertex_normals(big, f, "area")[:4], atol=1e-15)
+
+
+def test_vertex_shared_by_a_tiny_and_an_ordinary_face_weighs_them_by_area():
+    s = 1e-170
+    v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, s], [s, 0, 0]], dtype=float)
+    n = mesh.vertex_normals(v, [[0, 1, 2], [0, 3, 4]], "area")
+    np.testing.assert_allclose(n[0], [0, 0, 1], atol=EPS)  # the tiny face counts for nothing
+    np.testing.assert_allclose(n[3], [0, 1, 0], atol=EPS)  # ... except at its own corners
+
+
+@pytest.mark.parametrize("top", [2**31 + 5, 2**40, 2**62, 2**63 - 1])
+def test_inconsistent_edges_with_huge_indices(top):
+    f = np.array([[0, top, top - 1], [top - 1, top, 7], [top, 0, 3]], dtype=np.int64)
+    # faces 0 and 1 walk the edge between top - 1 and top in opposite directions, and so do
+    # faces 0 and 2 with the edge between 0 and top: consistent (packing the pairs into one
+    # int64 key would wrap around here)
+    assert mesh.inconsistent_edges(f).tolist() == []
+    g = np.vstack([f, [[0, top, 5]]])  # walks 0 -> top again, as face 0 does
+    assert mesh.inconsistent_edges(g).tolist() == [[0, top]]
+    assert not mesh.consistent_winding(g)
+
+
+def test_indices_beyond_intp_are_refused():
+    f = np.array([[0, 1, 2**64 - 1]], dtype=np.uint64)
+    with pytest.raises(ValueError, match="faces row 0 refers to vertex 18446744073709551615"):
+        mesh.inconsistent_edges(f)
+
+
+def test_object_vertices_beyond_float64_are_a_value_error():
+    v = np.array([[0, 0, 0], [10**400, 0, 0], [0, 1, 0]], dtype=object)
+    with pytest.raises(ValueError, match="within the float64 range"):
+        mesh.face_normals(v, [[0, 1, 2]])
+
+
+def test_tolerance_is_checked_as_the_core_checks_it():
+    for bad in (-1, 2, float("nan"), "abc"):
+        with pytest.raises(ValueError) as info:
+            mesh.face_normals(GOOD_V, GOOD_F, tol=bad)
+        with pytest.raises(ValueError) as core:
+            triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0), tol=bad)
+        assert str(info.value) == str(core.value)

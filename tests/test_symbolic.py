@@ -222,3 +222,28 @@ def test_steps_latex_joins_lines():
     tex = steps_latex(steps((0, 0, 0), (1, 0, 0), (0, 1, 0)))
     assert tex.startswith("\\begin{aligned}") and tex.endswith("\\end{aligned}")
     assert tex.count("\\\\\n") == 10
+
+
+@pytest.mark.parametrize(
+    "points",
+    [
+        ((5e-324, 1.7e308, -1.7e308), (1.7e308, 5e-324, 2.2e-308), (-1e-300, 3e307, 1e-320)),
+        (("1e399", "-1e399", "1e-399"), ("1e-399", "1e399", "0"), ("3", "1/7", "1e399")),
+    ],
+)
+def test_extreme_inputs_keep_exact_radicals(points):
+    """Huge radicands are split by trinormal itself (sympy would spend seconds on primality).
+
+    The values stay exact: |N|² and the unit normal's length are checked by rational
+    arithmetic, and the LaTeX still shows a square root.
+    """
+    r = triangle_normal(*points)
+    s = solution(*points)
+    state = r._state
+    assert sp.Rational(state.S, state.D**4) == s.magnitude**2
+    assert 4 * s.area**2 == s.magnitude**2
+    assert s.unit_normal is not None and s.offset is not None
+    assert sum(x**2 for x in s.unit_normal) == 1
+    assert s.offset * s.magnitude == sum(n * a for n, a in zip(s.normal, s.a, strict=True))
+    latex = [st.latex for st in steps(*points)]
+    assert len(latex) == 11 and r"\sqrt" in latex[-4].split(" = ")[-1]

@@ -8,22 +8,29 @@ third). Negative coordinates need no ``--``::
     trinormal 0,0,0 1,0,0 0,1,0 --json
 
 A degenerate triangle is an answer (exit status 0). Bad input prints one line
-naming the vertex and axis and exits with status 2.
+naming the vertex and axis and exits with status 2; an output that cannot be
+written (a full disk) prints one line and exits with status 1. Where the output
+cannot show ``×``, ``−`` or ``→`` (an ASCII terminal, a Windows code page), they
+are written ``x``, ``-`` and ``->``. The command never prints a traceback.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import errno
 import json
 import os
+import re
 import sys
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import NoReturn
+from typing import Any, NoReturn
 
 from trinormal.core import ARITHMETICS, TriangleNormal, Winding, triangle_normal
-from trinormal.display import MAX_PRECISION, exact_text, format_surd, radical, radical_text
+from trinormal.display import exact_text, format_surd, radical, radical_text
 from trinormal.tolerances import DEFAULT_TOL
+from trinormal.validation import check_precision, check_tolerance, check_vertex, check_winding
 
 __all__ = ["main", "steps"]
 
@@ -38,6 +45,72 @@ class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         raise _UsageError(message)
 
+    def _print_message(self, message: str, file: Any = None) -> None:
+        if message:
+            _write(file or sys.stdout, message)
+
+
+#: Stand-ins for the symbols an ASCII-only stream cannot show.
+_ASCII = {
+    "×": "x",
+    "−": "-",
+    "→": "->",
+    "·": "*",
+    "²": "^2",
+    "√": "sqrt",
+    "≈": "~",
+    "n̂": "n^",
+    "…": "...",
+    "—": "-",
+}
+
+
+def _encodable(text: str, stream: Any) -> str:
+    """``text`` as ``stream`` can encode it: symbols spelled in ASCII if they cannot be."""
+    encoding = getattr(stream, "encoding", None) or "utf-8"
+    try:
+        text.encode(encoding)
+        return text
+    except (UnicodeEncodeError, LookupError):
+        pass
+    text = re.sub(r"√(\d+)", r"sqrt(\1)", text)
+    for symbol, plain in _ASCII.items():
+        text = text.replace(symbol, plain)
+    try:
+        return text.encode(encoding, "backslashreplace").decode(encoding)
+    except LookupError:
+        return text.encode("ascii", "backslashreplace").decode("ascii")
+
+
+def _write(stream: Any, text: str) -> None:
+    """Write ``text`` to ``stream`` and flush, falling back to ASCII spellings."""
+    if stream is None:  # started with the stream closed (``>&-``)
+        raise OSError(errno.EBADF, "the output stream is closed")
+    stream.write(_encodable(text, stream))
+    stream.flush()
+
+
+_MAX_MESSAGE = 300
+
+
+def _error(message: str) -> None:
+    """Print one error line on stderr, whatever stderr can encode."""
+    message = " ".join(message.split("\n"))
+    if len(message) > _MAX_MESSAGE:  # argparse echoes arguments whole: never a screenful
+        message = message[: _MAX_MESSAGE - 1] + "…"
+    line = "trinormal: error: " + message
+    with contextlib.suppress(OSError, ValueError):  # stderr itself is gone: nothing to do
+        _write(sys.stderr, line + "\n")
+
+
+def _silence_stdout() -> None:
+    """Point stdout at the null device, so the interpreter's final flush cannot fail."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
+
 
 def _parser() -> argparse.ArgumentParser:
     p = _Parser(
@@ -51,7 +124,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--winding",
         default="ABC",
-        choices=[w.value for w in Winding],
+        metavar="{ABC,ACB}",
         help="ABC: U = B − A, V = C − A (default); ACB swaps U and V and flips N",
     )
     p.add_argument("--precision", default="4", help="decimal places, 0 to 15 (default 4)")
@@ -97,18 +170,11 @@ def _split_argv(argv: Sequence[str]) -> tuple[list[str], list[str]]:
 def _read_point(text: str, vertex: str) -> list[str]:
     parts = [part.strip() for part in text.split(",")]
     if len(parts) != 3:
-        raise ValueError(f"{vertex} has {len(parts)} coordinates, expected 3 (write it as x,y,z)")
+        try:
+            check_vertex(parts, vertex)  # the shared message for a wrong count
+        except ValueError as err:
+            raise ValueError(f"{err}; write a point as x,y,z") from None
     return parts
-
-
-def _precision(text: str) -> int:
-    try:
-        p = int(text)
-    except ValueError:
-        raise ValueError(f"--precision must be a whole number from 0 to 15, got {text!r}") from None
-    if not 0 <= p <= MAX_PRECISION:
-        raise ValueError(f"--precision must be from 0 to {MAX_PRECISION}, got {p}")
-    return p
 
 
 # --------------------------------------------------------------------------- output
@@ -180,7 +246,11 @@ def steps(r: TriangleNormal, precision: int = 4) -> list[tuple[str, str]]:
     def approx(neg: bool, q: Fraction) -> str:
         return format_surd(neg, q.numerator, q.denominator, precision)
 
-    c, m = radical(m2)
+    # |N| = sqrt(S) / D², with S the integer |N|² · D⁴: splitting S (not the reduced
+    # fraction's numerator times its denominator) keeps the numbers small
+    state = r._state
+    k, m = radical(Fraction(state.S))
+    c = k / (state.D * state.D)
     mag = radical_text(c, m)
     suffix = "" if m == 1 else f" ≈ {approx(False, m2)}"
     out.append(("|N|", f"{mag}{suffix}"))
@@ -244,6 +314,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     0
     """
     args_in = list(sys.argv[1:] if argv is None else argv)
+    try:
+        return _run(args_in)
+    except KeyboardInterrupt:
+        return 130
+    except OSError as exc:  # writing the help or usage text failed (a full disk)
+        _silence_stdout()
+        _error(f"cannot write the output: {exc.strerror or exc}")
+        return 1
+    except Exception as exc:  # never a traceback: one line, status 1
+        _error(f"unexpected {type(exc).__name__}: {exc}")
+        return 1
+
+
+def _run(args_in: list[str]) -> int:
     options, points = _split_argv(args_in)
     try:
         args = _parser().parse_args(options)
@@ -254,34 +338,46 @@ def main(argv: Sequence[str] | None = None) -> int:
                 f"got {len(points)}"
             )
         a, b, c = (_read_point(p, v) for p, v in zip(points, "ABC", strict=True))
-        precision = _precision(args.precision)
-        tol = DEFAULT_TOL if args.tol is None else args.tol
-        r = triangle_normal(a, b, c, winding=args.winding, tol=tol, arithmetic=args.arithmetic)
-        if args.json:
-            data = r.to_dict()
-            data["precision"] = precision
-            data["formatted"] = r.format(precision)
-            text = json.dumps(data, indent=2, ensure_ascii=False)
-        elif args.steps:
-            lines = [f"A = {_vec(r.exact.a)}, B = {_vec(r.exact.b)}, C = {_vec(r.exact.c)}"]
-            lines.append(f"winding {r.winding.label}")
-            if r.arithmetic != "exact":
-                lines.append(
-                    f"(the working is exact; --arithmetic {r.arithmetic} affects the table)"
-                )
-            lines += [f"{label} = {work}" for label, work in steps(r, precision)]
-            text = "\n".join(lines)
-        else:
-            text = _table(r, points, precision)
-    except (_UsageError, ValueError, TypeError, OverflowError) as exc:
-        print(f"trinormal: error: {exc}", file=sys.stderr)
+        winding = check_winding(args.winding, "--winding")
+        precision = check_precision(args.precision, "--precision")
+        tol: float | Fraction = DEFAULT_TOL
+        if args.tol is not None:
+            tol = Fraction(*check_tolerance(args.tol, "--tol"))
+        r = triangle_normal(a, b, c, winding=winding, tol=tol, arithmetic=args.arithmetic)
+        text = _render(r, args, points, precision)
+    except (_UsageError, ValueError, TypeError) as exc:
+        _error(str(exc))
         return 2
     try:
-        print(text, flush=True)
+        _write(sys.stdout, text + "\n")
     except BrokenPipeError:  # the reader stopped early (``| head``): not an error
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
+        _silence_stdout()
+    except (OSError, ValueError) as exc:  # a full disk, a closed stream
+        _silence_stdout()
+        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+        _error(f"cannot write the output: {reason}")
+        return 1
     return 0
+
+
+def _render(r: TriangleNormal, args: argparse.Namespace, points: list[str], precision: int) -> str:
+    """Make the text to print: JSON, the worked steps or the table."""
+    if args.json:
+        data = r.to_dict()
+        data["precision"] = precision
+        data["formatted"] = r.format(precision)
+        text = json.dumps(data, indent=2, ensure_ascii=False)
+        if _encodable(text, sys.stdout) != text:  # the stream cannot show every symbol
+            text = json.dumps(data, indent=2, ensure_ascii=True)
+        return text
+    if args.steps:
+        lines = [f"A = {_vec(r.exact.a)}, B = {_vec(r.exact.b)}, C = {_vec(r.exact.c)}"]
+        lines.append(f"winding {r.winding.label}")
+        if r.arithmetic != "exact":
+            lines.append(f"(the working is exact; --arithmetic {r.arithmetic} affects the table)")
+        lines += [f"{label} = {work}" for label, work in steps(r, precision)]
+        return "\n".join(lines)
+    return _table(r, points, precision)
 
 
 if __name__ == "__main__":  # pragma: no cover

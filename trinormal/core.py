@@ -14,23 +14,35 @@ The standard library is all this module needs.
 from __future__ import annotations
 
 import math
-import re
 import struct
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from decimal import Decimal
-from enum import StrEnum
 from fractions import Fraction
 from functools import cached_property
-from numbers import Integral, Real
 from typing import Any, Literal, NamedTuple
 
 from trinormal.display import format_surd, join_vector, plane_equation
 from trinormal.tolerances import DEFAULT_TOL
+from trinormal.validation import (
+    _LIMIT as _INT_LIMIT,  # the size limit: the fast path takes plain ints below it
+)
+from trinormal.validation import (
+    AXES,
+    VERTICES,
+    Winding,
+    _show,
+    check_common,
+    check_coordinate,
+    check_tolerance,
+    check_vertex,
+    check_winding,
+)
 
 __all__ = [
     "ARITHMETICS",
     "Exact",
+    "FloatRangeError",
     "Plane",
     "TriangleNormal",
     "Winding",
@@ -41,37 +53,14 @@ __all__ = [
 Vec3 = tuple[float, float, float]
 Arithmetic = Literal["exact", "float64", "float32"]
 ARITHMETICS: tuple[str, ...] = ("exact", "float64", "float32")
-VERTICES = "ABC"
-AXES = "xyz"
-
-#: Largest decimal exponent accepted in a string, so "1e999999999" is an error, not a hang.
-MAX_DECIMAL_EXPONENT = 9999
 
 
-class Winding(StrEnum):
-    """Vertex order: which way round the triangle is traversed.
+class FloatRangeError(ValueError, OverflowError):
+    """A value leaves the float64 or float32 range in ``arithmetic="float64"``/``"float32"``.
 
-    ``ABC`` uses U = B − A and V = C − A; ``ACB`` swaps the two edges, which
-    flips the normal.
-
-    Examples
-    --------
-    >>> Winding("ACB") is Winding.ACB
-    True
-    >>> Winding.ABC == "ABC"
-    True
+    It is a :class:`ValueError` (the inputs cannot be computed in that format)
+    and, for code written before it existed, an :class:`OverflowError`.
     """
-
-    ABC = "ABC"
-    ACB = "ACB"
-
-    @property
-    def label(self) -> str:
-        """The order with arrows, as shown on buttons: ``A→B→C``."""
-        return "→".join(self.value)
-
-    def __str__(self) -> str:
-        return self.value
 
 
 class Plane(NamedTuple):
@@ -100,52 +89,16 @@ class Exact:
 
 # --------------------------------------------------------------------------- parsing
 
-_DECIMAL_RE = re.compile(r"([+-]?)(\d+(?:\.\d*)?|\.\d+)(?:[eE]([+-]?\d+))?")
-_FRACTION_RE = re.compile(r"([+-]?\d+)\s*/\s*([+-]?\d+)")
-_NAN_WORDS = {"nan", "+nan", "-nan"}
-_INF_WORDS = {"inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"}
-
-
-def _parse_string(text: str, name: str) -> tuple[int, int]:
-    s = text.strip()
-    if not s:
-        raise ValueError(f"{name} is empty")
-    low = s.lower()
-    if low in _NAN_WORDS:
-        raise ValueError(f"{name} is NaN")
-    if low in _INF_WORDS:
-        raise ValueError(f"{name} is infinite")
-    m = _DECIMAL_RE.fullmatch(s)
-    if m:
-        sign, digits, exp = m.groups()
-        e = int(exp) if exp else 0
-        if "." in digits:
-            whole, frac = digits.split(".")
-            e -= len(frac)
-            digits = whole + frac
-        if abs(e) > MAX_DECIMAL_EXPONENT or len(digits) > 4000:
-            raise ValueError(f"{name} = {s!r} is too large a number to read exactly")
-        n = int(digits) * (-1 if sign == "-" else 1)
-        return (n * 10**e, 1) if e >= 0 else (n, 10**-e)
-    m = _FRACTION_RE.fullmatch(s)
-    if m:
-        if len(s) > 4000:
-            raise ValueError(f"{name} = {s!r} is too large a number to read exactly")
-        n, d = int(m.group(1)), int(m.group(2))
-        if d == 0:
-            raise ValueError(f"{name} = {s!r} divides by zero")
-        return (n, d) if d > 0 else (-n, -d)
-    raise ValueError(
-        f"{name} = {s!r} is not a number (use a decimal like 0.1 or a fraction like 1/3)"
-    )
-
 
 def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     """Read one coordinate as an exact ratio ``(numerator, denominator)``, denominator > 0.
 
+    The rules are :func:`trinormal.validation.check_coordinate`'s: this is that
+    function under the name the core has always used.
+
     Parameters
     ----------
-    x : int, float, Fraction, Decimal, numpy real scalar or str
+    x : int, float, Fraction, Decimal, numpy or sympy real number, or str
         The coordinate. A string holds a decimal (``"0.1"``, ``"-2.5e3"``) or a
         fraction (``"1/3"``) and is read exactly.
     name : str
@@ -159,7 +112,8 @@ def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     Raises
     ------
     ValueError
-        NaN, an infinity, an empty or unreadable string, or a zero denominator.
+        NaN, an infinity, an empty or unreadable string, a zero denominator,
+        a value beyond the size limit.
     TypeError
         ``None``, ``bool``, complex numbers and other non-real types.
 
@@ -178,73 +132,10 @@ def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     ...
     ValueError: B.y is NaN
     """
-    if type(x) is float:  # the common case first
-        if x != x:
-            raise ValueError(f"{name} is NaN")
-        if x in (math.inf, -math.inf):
-            raise ValueError(f"{name} is infinite")
-        return x.as_integer_ratio()
-    if type(x) is int:
-        return x, 1
-    if isinstance(x, str):
-        return _parse_string(x, name)
-    if x is None or isinstance(x, bool) or type(x).__name__ == "bool_":
-        raise TypeError(f"{name} is {x!r}, expected a real number")
-    if isinstance(x, Integral):
-        return int(x), 1
-    if isinstance(x, Fraction):
-        return x.numerator, x.denominator
-    if isinstance(x, Decimal):
-        if x.is_nan():
-            raise ValueError(f"{name} is NaN")
-        if x.is_infinite():
-            raise ValueError(f"{name} is infinite")
-        return x.as_integer_ratio()
-    if isinstance(x, Real) and hasattr(x, "as_integer_ratio"):  # numpy floating scalars
-        if x != x:
-            raise ValueError(f"{name} is NaN")
-        try:
-            n, d = x.as_integer_ratio()
-        except (OverflowError, ValueError):
-            raise ValueError(f"{name} is infinite") from None
-        return int(n), int(d)
-    raise TypeError(f"{name} is {type(x).__name__}, expected a real number")
-
-
-def _parse_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
-    if isinstance(p, str | bytes) or p is None:
-        raise TypeError(f"{vertex} must be 3 coordinates (x, y, z), got {type(p).__name__}")
-    try:
-        coords = list(p)  # type: ignore[call-overload]
-    except TypeError:
-        raise TypeError(
-            f"{vertex} must be 3 coordinates (x, y, z), got {type(p).__name__}"
-        ) from None
-    if len(coords) != 3:
-        raise ValueError(f"{vertex} has {len(coords)} coordinates, expected 3")
-    return [parse_coordinate(x, f"{vertex}.{axis}") for x, axis in zip(coords, AXES, strict=True)]
+    return check_coordinate(x, name)
 
 
 _PLAIN = frozenset((float, int))
-
-
-_WINDINGS = {"ABC": Winding.ABC, "ACB": Winding.ACB}
-
-
-def _check_winding(winding: object) -> Winding:
-    try:
-        return Winding(str(winding)) if isinstance(winding, str) else Winding(winding)  # type: ignore[arg-type]
-    except ValueError:
-        raise ValueError(
-            f"winding must be 'ABC' or 'ACB' (or a Winding), got {winding!r}"
-        ) from None
-
-
-def _check_tol(tol: object) -> tuple[int, int]:
-    n, d = parse_coordinate(tol, "tol")
-    if n < 0:
-        raise ValueError(f"tol must be >= 0, got {tol!r}")
-    return n, d
 
 
 # --------------------------------------------------------------------------- float formats
@@ -547,20 +438,7 @@ def _sqrt_ratio(num: int, den: int) -> float:
     return _div(r, 1 << k)
 
 
-def _common(coords: list[tuple[int, int]]) -> tuple[tuple[int, ...], int]:
-    """Bring exact ratios to one denominator D; return the integer numerators and D."""
-    D = 1
-    pow2 = True
-    for _, d in coords:
-        if d & (d - 1):
-            pow2 = False
-        if d > D:
-            D = d
-    if pow2:  # every float input: shift instead of multiplying
-        top = D.bit_length()
-        return tuple([n << (top - d.bit_length()) for n, d in coords]), D
-    D = math.lcm(*(d for _, d in coords))
-    return tuple([n * (D // d) for n, d in coords]), D
+_common = check_common
 
 
 def _exact_state(coords: list[tuple[int, int]], winding: Winding) -> _State:
@@ -610,16 +488,19 @@ def triangle_normal(
     Parameters
     ----------
     a, b, c : sequence of 3 real numbers
-        The vertices (list, tuple or numpy array). Each coordinate may be an
-        int, float, Fraction, Decimal, numpy real scalar, or a string holding a
-        decimal (``"0.1"``) or a fraction (``"1/3"``), read exactly.
+        The vertices (list, tuple, numpy array or another sized, ordered
+        sequence). Each coordinate may be an int, float, Fraction, Decimal,
+        numpy real scalar, sympy ``Integer``/``Rational``/``Float``, or a string
+        holding a decimal (``"0.1"``, ``"−2.5e3"``) or a fraction (``"1/3"``),
+        read exactly. The rules and size limits are
+        :mod:`trinormal.validation`'s.
     winding : {"ABC", "ACB"} or Winding, default "ABC"
         ``"ABC"``: U = B − A, V = C − A. ``"ACB"``: U = C − A, V = B − A.
         N = U × V, so the two orders give opposite normals.
     tol : real, default 1e-12
-        Degeneracy threshold on the sine of the angle between U and V (see
-        :mod:`trinormal.tolerances`). ``0`` flags only exactly collinear or
-        coincident points.
+        Degeneracy threshold on the sine of the angle between U and V, from 0
+        to 1 (see :mod:`trinormal.tolerances`). ``0`` flags only exactly
+        collinear or coincident points.
     arithmetic : {"exact", "float64", "float32"}, default "exact"
         ``"exact"`` computes with rationals and rounds once at the end.
         ``"float64"``/``"float32"`` evaluate the textbook formula step by step in
@@ -634,9 +515,12 @@ def triangle_normal(
     ------
     ValueError
         NaN or infinite coordinates, a vertex without exactly 3 coordinates, an
-        unreadable string, an unknown winding or arithmetic, a negative tol.
+        unreadable string, a value beyond the size limit, an unknown winding or
+        arithmetic, a tol outside 0 to 1; in ``float64``/``float32`` arithmetic,
+        a value beyond that format's range (:class:`FloatRangeError`).
     TypeError
-        ``None``, ``bool``, complex or other non-real coordinates.
+        ``None``, ``bool``, complex or other non-real coordinates; a vertex
+        that is not a sized, ordered sequence (a set, dict, string or iterator).
 
     Examples
     --------
@@ -680,6 +564,7 @@ def triangle_normal(
     if (
         arithmetic == "exact"
         and tol is DEFAULT_TOL
+        and isinstance(winding, str)
         and (winding == "ABC" or winding == "ACB")
         and type(a) in _SEQ
         and type(b) in _SEQ
@@ -688,17 +573,16 @@ def triangle_normal(
         r = _fast_exact(a, b, c, winding == "ABC")  # type: ignore[arg-type]
         if r is not None:
             return r
-    coords = _parse_vertex(a, "A") + _parse_vertex(b, "B") + _parse_vertex(c, "C")
-    try:
-        w = _WINDINGS[winding]
-    except (KeyError, TypeError):
-        w = _check_winding(winding)
-    tn, td = _DEFAULT_TOL_RATIO if tol is DEFAULT_TOL else _check_tol(tol)
+    coords = check_vertex(a, "A") + check_vertex(b, "B") + check_vertex(c, "C")
+    w = check_winding(winding)
+    tn, td = _DEFAULT_TOL_RATIO if tol is DEFAULT_TOL else check_tolerance(tol)
+    if not isinstance(arithmetic, str) or arithmetic not in ARITHMETICS:
+        raise ValueError(
+            f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {_show(arithmetic)}"
+        )
     if arithmetic == "exact":
         return _exact(coords, w, tn, td)
-    if arithmetic in ("float64", "float32"):
-        return _floating(coords, w, tn, td, arithmetic)
-    raise ValueError(f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {arithmetic!r}")
+    return _floating(coords, w, tn, td, arithmetic)
 
 
 _SEQ = (tuple, list)
@@ -760,6 +644,8 @@ def _fast_exact(
                     D = 1
                     ints = tuple([i << (emin - 53) for i in ints])
         elif _PLAIN.issuperset(types):
+            if max(map(abs, vals)) >= _INT_LIMIT:
+                return None  # the careful path refuses it, naming the coordinate
             ratios = [x.as_integer_ratio() for x in vals]
             D = max([d for _, d in ratios])
             top = D.bit_length()
@@ -926,7 +812,7 @@ def _floating(
         limit = "±1.8e308"
     for x, i in zip(vals, range(9), strict=True):
         if math.isinf(x):
-            raise OverflowError(
+            raise FloatRangeError(
                 f"{VERTICES[i // 3]}.{AXES[i % 3]} is outside the {fmt} range ({limit}); "
                 "use arithmetic='exact'"
             )
@@ -941,7 +827,7 @@ def _floating(
     )
     for q, name in ((u, "U"), (v, "V"), (n, "N")):
         if not all(math.isfinite(x) for x in q):
-            raise OverflowError(
+            raise FloatRangeError(
                 f"{name} overflows the {fmt} range ({limit}) for these points; "
                 "use arithmetic='exact'"
             )
@@ -958,6 +844,10 @@ def _floating(
         ss = rnd(rnd(rnd(sx * sx) + rnd(sy * sy)) + rnd(sz * sz))
         root = rnd(math.sqrt(ss))
         magnitude = rnd(_ldexp(root, e))
+        if math.isinf(magnitude):
+            raise FloatRangeError(
+                f"|N| overflows the {fmt} range ({limit}) for these points; use arithmetic='exact'"
+            )
     area = rnd(magnitude / 2)
     if degenerate:
         ints = _common([x.as_integer_ratio() for x in vals])[0]
@@ -966,6 +856,11 @@ def _floating(
     else:
         unit = (rnd(sx / root), rnd(sy / root), rnd(sz / root))
         d = rnd(rnd(rnd(unit[0] * A[0]) + rnd(unit[1] * A[1])) + rnd(unit[2] * A[2]))
+        if math.isinf(d):
+            raise FloatRangeError(
+                f"the plane's offset n̂ · A overflows the {fmt} range ({limit}) for these "
+                "points; use arithmetic='exact'"
+            )
         plane = Plane(unit, d)
     exact_state = _exact_state(coords, w)
     return TriangleNormal(

@@ -6,10 +6,12 @@ Rules (the site's JavaScript calculator follows the same ones):
 * Rounding is half away from zero, applied to the *exact* value, so an area of
   exactly 0.125 shows ``0.13`` at precision 2. Square roots are rounded from an
   exact integer evaluation, so they are correctly rounded too.
-* A nonzero value never prints as zero: below ``10**-precision``, or at ``1e15``
-  and above, the number switches to scientific notation with ``precision``
-  digits after the point (``2.7756e-17``). Exponents have at least two digits,
-  as in Python's ``format(x, ".4e")``.
+* A nonzero value never prints as zero: only when fixed-point at this precision
+  would show it as zero (it is below half of ``10**-precision``), and also at
+  ``1e15`` and above, the number switches to scientific notation with
+  ``precision`` digits after the point (``2.7756e-17``). So 0.707 at precision 0
+  is ``1`` and 0.4 is ``4e-01``. Exponents have at least two digits, as in
+  Python's ``format(x, ".4e")``.
 * Zero never carries a minus sign.
 * ``trim=True`` drops trailing zeros and a bare point (``0.5``, ``1.4142``).
 """
@@ -20,21 +22,15 @@ import math
 from collections.abc import Iterable
 from decimal import Decimal
 from fractions import Fraction
-from numbers import Integral, Real
+from numbers import Integral, Rational, Real
+
+from trinormal.validation import MAX_PRECISION as MAX_PRECISION  # re-exported
+from trinormal.validation import check_coordinate, check_precision
 
 __all__ = ["format_number", "format_vector"]
 
-MAX_PRECISION = 15
 _SCI_ABOVE_LOG10 = 15  # values >= 1e15 print in scientific notation
-
-
-def _check_precision(precision: int) -> int:
-    if isinstance(precision, bool) or not isinstance(precision, Integral):
-        raise TypeError(f"precision must be an integer from 0 to 15, got {precision!r}")
-    p = int(precision)
-    if not 0 <= p <= MAX_PRECISION:
-        raise ValueError(f"precision must be from 0 to {MAX_PRECISION}, got {p}")
-    return p
+_check_precision = check_precision
 
 
 def _round_sqrt(num: int, den: int, k: int) -> int:
@@ -88,8 +84,9 @@ def format_surd(negative: bool, num: int, den: int, precision: int, trim: bool =
     p = _check_precision(precision)
     if num == 0:
         return "0" if (trim or p == 0) else "0." + "0" * p
-    # Scientific below 10**-p or at 1e15 and above: sqrt(num/den) < 10**-p <=> num*100**p < den
-    small = num * 100**p < den
+    # Scientific where fixed-point would show zero, sqrt(num/den) < 10**-p / 2, that is
+    # 4 num 100**p < den; and at 1e15 and above
+    small = 4 * num * 100**p < den
     large = num >= den * 100**_SCI_ABOVE_LOG10
     sign = "-" if negative else ""
     if not (small or large):
@@ -109,23 +106,48 @@ def format_surd(negative: bool, num: int, den: int, precision: int, trim: bool =
     return f"{sign}{mantissa}e{'-' if e < 0 else '+'}{abs(e):02d}"
 
 
+#: The largest numerator or denominator, in bits, :func:`format_number` accepts (about
+#: 3900 digits: Python prints integers of at most 4300 digits).
+_FORMAT_BITS = 13_000
+
+
 def exact_ratio(x: object) -> tuple[int, int]:
     """Return ``(numerator, denominator)`` of a finite real number, exactly.
+
+    Any number :func:`trinormal.validation.check_coordinate` reads (sympy
+    numbers too), with numerator and denominator of up to about 3900 digits.
 
     Examples
     --------
     >>> exact_ratio(0.5), exact_ratio(Fraction(1, 3)), exact_ratio(Decimal("0.1"))
     ((1, 2), (1, 3), (1, 10))
     """
-    if isinstance(x, bool) or not isinstance(x, Real | Decimal):
+    if isinstance(x, bool | str):
         raise TypeError(f"expected a real number, got {type(x).__name__}")
+    too_large = ValueError(f"cannot format {type(x).__name__}: it has too many digits")
+    if isinstance(x, Decimal):
+        if not x.is_finite():
+            raise ValueError(f"cannot format {x!r}: it is not a finite number")
+        if (x and not -3900 < x.adjusted() < 3900) or len(x.as_tuple().digits) > 3900:
+            raise too_large
     if isinstance(x, Integral):
-        return int(x), 1
-    try:
-        n, d = x.as_integer_ratio()  # type: ignore[union-attr]
-    except (OverflowError, ValueError):
-        raise ValueError(f"cannot format {x!r}: it is not a finite number") from None
-    return int(n), int(d)
+        n, d = int(x), 1
+    elif isinstance(x, Rational):
+        n, d = int(x.numerator), int(x.denominator)
+    elif isinstance(x, Real | Decimal) and hasattr(x, "as_integer_ratio"):
+        try:
+            n, d = x.as_integer_ratio()
+        except (OverflowError, ValueError):
+            raise ValueError(f"cannot format {x!r}: it is not a finite number") from None
+        n, d = int(n), int(d)
+    else:
+        try:  # sympy numbers and the like: read, or refused, as a coordinate is
+            n, d = check_coordinate(x, "the value")
+        except TypeError:
+            raise TypeError(f"expected a real number, got {type(x).__name__}") from None
+    if max(-n, n, d).bit_length() > _FORMAT_BITS:
+        raise too_large
+    return n, d
 
 
 def format_number(
@@ -145,8 +167,9 @@ def format_number(
     Returns
     -------
     str
-        Fixed-point text, or scientific notation for a nonzero value below
-        ``10**-precision`` or at ``1e15`` and above.
+        Fixed-point text, or scientific notation for a nonzero value that
+        fixed-point would show as zero (below half of ``10**-precision``) or
+        at ``1e15`` and above.
 
     Raises
     ------
@@ -159,6 +182,8 @@ def format_number(
     '0.13'
     >>> format_number(0.25, 1)
     '0.3'
+    >>> format_number(0.707, 0), format_number(0.4, 0), format_number(0.00005, 4)
+    ('1', '4e-01', '0.0001')
     >>> format_number(-0.0)
     '0.0000'
     >>> format_number(2.7755575615628914e-17)

@@ -49,6 +49,7 @@ import numpy as np
 import numpy.typing as npt
 
 from trinormal.tolerances import DEFAULT_TOL
+from trinormal.validation import check_tolerance
 
 __all__ = [
     "WEIGHTINGS",
@@ -83,6 +84,9 @@ _LO = 2.0**-900
 # One vertex row (3 float64) as a single item, so a gather moves whole rows.
 _ROW = np.dtype((np.void, 24))
 
+# The largest vertex index: 2**63 - 1 (numpy's intp on 64-bit machines).
+_MAX_INDEX = int(np.iinfo(np.intp).max)
+
 
 # --------------------------------------------------------------------------- validation
 
@@ -99,6 +103,8 @@ def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]
             arr = arr.astype(np.float64)
         except (TypeError, ValueError):
             raise ValueError("vertices must be real numbers") from None
+        except OverflowError:  # a Python int or Fraction beyond the float64 range
+            raise ValueError("vertices must be real numbers within the float64 range") from None
         out_dtype = np.dtype(np.float64)
     else:
         raise ValueError(f"vertices must be real numbers, got dtype {arr.dtype}")
@@ -134,6 +140,8 @@ def _check_faces(
         raise ValueError(f"faces must hold integer vertex indices, got dtype {arr.dtype}")
     if arr.ndim != 2 or arr.shape[1] != 3:
         raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
+    if arr.dtype.kind == "u" and arr.dtype.itemsize >= 8 and int(arr.max()) > _MAX_INDEX:
+        _raise_range_error(arr, _MAX_INDEX + 1)  # beyond what an index (intp) can hold
     if check_range:
         lo, hi = int(arr.min()), int(arr.max())
         limit = n_vertices if n_vertices is not None else hi + 1
@@ -156,13 +164,20 @@ def _raise_range_error(arr: npt.NDArray[Any], limit: int) -> None:
 
 
 def _check_tol(tol: float) -> float:
-    try:
-        t = float(tol)
-    except (TypeError, ValueError):
-        raise ValueError(f"tol must be a real number >= 0, got {tol!r}") from None
-    if not (t >= 0.0 and math.isfinite(t)):
-        raise ValueError(f"tol must be a finite number >= 0, got {tol!r}")
-    return t
+    """Return the tolerance as a float, checked by :func:`trinormal.validation.check_tolerance`."""
+    if tol is DEFAULT_TOL:
+        return DEFAULT_TOL
+    n, d = check_tolerance(tol)
+    return n / d  # 0 <= tol <= 1: no overflow
+
+
+def _cast(values: FloatArray, dtype: np.dtype[Any]) -> FloatArray:
+    """Return float64 results in ``dtype``: beyond the float32 range they become ±inf, quietly."""
+    if values.dtype == dtype:
+        return values
+    with np.errstate(over="ignore", under="ignore"):
+        out: FloatArray = values.astype(dtype)
+    return out
 
 
 def _prepare(
@@ -450,7 +465,7 @@ def face_normals(
     if exps is not None:  # rows from the careful path: |N| = mag * 2**exp, maybe out of range
         with np.errstate(over="ignore", under="ignore"):
             raw = np.ldexp(raw, exps[:, None])
-    return raw.astype(dtype, copy=False)
+    return _cast(raw, dtype)
 
 
 def degenerate_faces(
@@ -520,9 +535,9 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
     v, f, dtype = _prepare(vertices, faces)
     mag = np.empty(f.shape[0])
     exps = _face_rows(v, f, DEFAULT_TOL, mag_out=mag)
-    with np.errstate(over="ignore"):
+    with np.errstate(over="ignore", under="ignore"):
         area = np.ldexp(mag, (exps if exps is not None else 0) - 1)
-    return area.astype(dtype, copy=False)
+    return _cast(area, dtype)
 
 
 def vertex_normals(
@@ -571,16 +586,17 @@ def vertex_normals(
     v, f, dtype = _prepare(vertices, faces)
     nv, nf = v.shape[0], f.shape[0]
     unit = np.empty((nf, 3))
+    w: FloatArray
     if weighting == "angle":
         w = np.empty((nf, 3))
         _face_rows(v, f, t, unit_out=unit, angles_out=w)
     elif weighting == "area":
         mag = np.empty(nf)
         exps = _face_rows(v, f, t, unit_out=unit, mag_out=mag)
-        if exps is not None:  # bring |N| to one scale, the largest face's exponent
-            top = int(exps.max())
-            mag = np.ldexp(mag, exps - top)
-        w = np.repeat(mag[:, None], 3, axis=1)
+        if exps is None:  # every |N| is a normal float of moderate size: weigh as it is
+            w = np.repeat(mag[:, None], 3, axis=1)
+        else:
+            w = _area_weights_per_vertex(mag, exps, f, nv)
     else:
         _face_rows(v, f, t, unit_out=unit)
         w = np.ones((nf, 3))
@@ -590,7 +606,29 @@ def vertex_normals(
     for k in range(3):
         np.multiply(w.T, unit[:, k], out=wc)
         acc[:, k] = np.bincount(idx, weights=wc.ravel(), minlength=nv)
-    return _normalize_rows(acc).astype(dtype, copy=False)
+    return _cast(_normalize_rows(acc), dtype)
+
+
+def _area_weights_per_vertex(mag: FloatArray, exps: IntArray, f: IntArray, nv: int) -> FloatArray:
+    """Area weights (F, 3), one per corner, scaled vertex by vertex.
+
+    |N| of face i is ``mag[i] * 2**exps[i]``, possibly far outside the float
+    range. Each vertex's weights are divided by the same power of two, the
+    largest among its own faces, so a vertex whose faces are all tiny keeps
+    their direction even when the mesh also holds faces of ordinary size.
+    """
+    m, e = np.frexp(mag)  # |N| = m * 2**(e + exps), m in [0.5, 1) or 0
+    e = (e + exps).astype(np.int64)
+    e[m == 0.0] = np.iinfo(np.int64).min  # zero (degenerate) faces set no scale
+    corner = f.T.ravel()  # corner by corner, as in vertex_normals
+    top = np.full(nv, np.iinfo(np.int64).min, dtype=np.int64)
+    np.maximum.at(top, corner, np.tile(e, 3))
+    shift = np.tile(e, 3) - top[corner]  # <= 0 where the face counts
+    shift = np.maximum(shift, -2000)  # far below: the weight is zero anyway
+    with np.errstate(under="ignore"):
+        w = np.ldexp(np.tile(m, 3), shift.astype(np.intp))
+    out: FloatArray = w.reshape(3, -1).T
+    return out
 
 
 def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:
@@ -620,12 +658,13 @@ def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:
     f = _check_faces(faces, None)
     if f.shape[0] == 0:
         return np.empty((0, 2), dtype=np.intp)
-    nv = int(f.max()) + 1
-    start = f.ravel()
-    end = f[:, [1, 2, 0]].ravel()
-    key = np.sort(start.astype(np.int64) * nv + end)
-    dup = np.unique(key[1:][key[1:] == key[:-1]])
-    return np.stack([dup // nv, dup % nv], axis=1).astype(np.intp)
+    # directed edges as (start, end) rows, sorted; no packing into one integer, which
+    # would wrap around for indices above 2**31
+    edges = np.stack([f.ravel(), f[:, [1, 2, 0]].ravel()], axis=1)
+    edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
+    same = (edges[1:] == edges[:-1]).all(axis=1)
+    dup: IntArray = np.unique(edges[1:][same], axis=0).reshape(-1, 2).astype(np.intp)
+    return dup
 
 
 def consistent_winding(faces: npt.ArrayLike) -> bool:
@@ -864,80 +903,3 @@ def terrain(
     p10, p01, p11 = p00 + 1, p00 + nx, p00 + nx + 1
     f = np.stack([p00, p10, p11, p00, p11, p01], axis=1).reshape(-1, 3)
     return v, f.astype(np.intp)
-
-
-# --------------------------------------------------------------------------- notebook exercises
-
-
-def _register_exercises() -> None:
-    """Register the exercises of notebooks 06, 07 and 08 (see :mod:`trinormal.exercises`)."""
-    from trinormal.core import triangle_normal
-    from trinormal.exercises import exercise
-
-    def cube_corner_degrees() -> float:
-        v, f = cube()
-        a = vertex_normals(v, f, "angle")[7]
-        b = vertex_normals(v, f, "area")[7]
-        return math.degrees(math.atan2(float(np.linalg.norm(np.cross(a, b))), float(a @ b)))
-
-    def scaled_normal() -> tuple[float, ...]:
-        m = np.diag([2.0, 1.0, 1.0])
-        n = np.linalg.inv(m).T @ np.array([1.0, 1.0, 0.0])
-        return tuple(float(x) for x in n / np.linalg.norm(n))
-
-    items: list[tuple[str, str, Any, float | None, str]] = [
-        (
-            "06-float64-bits",
-            "How many significand bits does a float64 carry (numpy.finfo helps)?",
-            lambda: int(np.finfo(np.float64).nmant) + 1,
-            None,
-            "nmant counts the stored bits; one more bit is implicit.",
-        ),
-        (
-            "06-float32-digits",
-            "About how many decimal digits does float32 carry? (24 bits times log10 2)",
-            lambda: 24 * math.log10(2),
-            0.5,
-            "Each bit is worth log10(2), about 0.301 decimal digits.",
-        ),
-        (
-            "06-needle-degenerate",
-            "With the default tol, is (0,0,0), (1,0,0), (1,1e-13,0) degenerate? (True/False)",
-            lambda: triangle_normal((0, 0, 0), (1, 0, 0), (1, 1e-13, 0)).degenerate,
-            None,
-            "Compare the sine of the angle at A with DEFAULT_TOL.",
-        ),
-        (
-            "07-cube-corner-degrees",
-            "Angle in degrees between the area- and angle-weighted normals at cube vertex 7.",
-            cube_corner_degrees,
-            0.01,
-            "Compute both with mesh.vertex_normals and measure the angle between them.",
-        ),
-        (
-            "07-lambert",
-            "Lambert brightness max(0, n · l) for n = (0, 0, 1) and l = (0, 0.6, 0.8).",
-            0.8,
-            1e-9,
-            "The dot product of the two unit vectors, clipped at zero.",
-        ),
-        (
-            "08-scaled-normal",
-            "Unit normal of a plane with normal (1, 1, 0)/√2 after scaling x by 2.",
-            scaled_normal,
-            1e-4,
-            "Transform the normal by the inverse transpose, then normalise.",
-        ),
-        (
-            "08-det-cross",
-            "For M = diag(2, 3, 4), U = (1, 0, 0), V = (0, 1, 0): what is (MU) × (MV)?",
-            (0.0, 0.0, 6.0),
-            1e-9,
-            "det(M) · M^-T N with N = U × V, or just multiply it out.",
-        ),
-    ]
-    for name, prompt, expected, tol, hint in items:
-        exercise(name, prompt, expected, tol=tol, hint=hint, replace=True)
-
-
-_register_exercises()

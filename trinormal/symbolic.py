@@ -34,6 +34,7 @@ from typing import Any, Literal, NamedTuple
 import sympy as sp
 
 from trinormal.core import Winding, triangle_normal
+from trinormal.display import radical
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = [
@@ -395,12 +396,41 @@ def solution(
     (ux, uy, uz), (vx, vy, vz) = EDGE_SYMBOLS
     values = {ux: u[0], uy: u[1], uz: u[2], vx: v[0], vy: v[1], vz: v[2]}
     n = _three(sp.Rational(f.subs(values)) for f in normal_components("edges"))
-    mag = sp.sqrt(sum(x**2 for x in n))
+    dot = sum(n[i] * A[i] for i in range(3))
     unit = offset = None
-    if not r.degenerate:
-        unit = _three(sp.radsimp(x / mag) for x in n)
-        offset = sp.radsimp(sum(n[i] * A[i] for i in range(3)) / mag)
-    return Solution(A, B, C, r.winding, u, v, n, mag, mag / 2, unit, offset, r.degenerate, r.reason)
+    state = r._state
+    if state.S.bit_length() <= _SYMPY_SQRT_BITS:
+        mag = sp.sqrt(sum(x**2 for x in n))
+        area = mag / 2
+        if not r.degenerate:
+            unit = _three(sp.radsimp(x / mag) for x in n)
+            offset = sp.radsimp(dot / mag)
+    else:
+        # |N| = sqrt(S) / D² with S = k² m: written as (k / D²) √m directly, because sympy
+        # would spend seconds proving a large radicand's factors prime
+        k, m = radical(Fraction(state.S))
+        D2 = state.D * state.D
+        root = sp.Integer(1) if m == 1 else sp.Pow(sp.Integer(m), sp.S.Half, evaluate=False)
+        scale = sp.Rational(int(k), D2)
+        # (no arithmetic on the root below: sympy would try to factor m again)
+        mag = _times_root(scale, root)
+        area = _times_root(scale / 2, root)
+        if not r.degenerate:
+            # x / (c √m) = x / (c m) · √m, the denominator rationalized as radsimp does
+            unit = _three(_times_root(x / (scale * m), root) for x in n)
+            offset = _times_root(dot / (scale * m), root)
+    return Solution(A, B, C, r.winding, u, v, n, mag, area, unit, offset, r.degenerate, r.reason)
+
+
+#: Up to this size of |N|²·D⁴ (in bits) sympy takes the square root itself; beyond it
+#: the root is built from trinormal's own split into a square and the rest.
+_SYMPY_SQRT_BITS = 600
+
+
+def _times_root(q: sp.Rational, root: sp.Expr) -> sp.Expr:
+    if root == 1 or q == 0:
+        return q
+    return sp.Mul(q, root, evaluate=False)
 
 
 def steps(

@@ -101,7 +101,7 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
         "ABC",
         2,
     ),
-    ("beyond float range", ("0", "0", "0"), ("1e400", "0", "0"), ("0", "1e-400", "1"), "ABC", 4),
+    ("beyond float range", ("0", "0", "0"), ("1e399", "0", "0"), ("0", "1e-399", "1"), "ABC", 4),
     (
         "scientific switch at 1e15",
         ("0", "0", "0"),
@@ -138,6 +138,32 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
         10,
     ),
     ("precision 7 on thirds", ("0", "0", "0"), ("1/3", "1/3", "0"), ("0", "1/3", "1/3"), "ABC", 7),
+    ("precision 15", ("1", "1", "1"), ("2", "1", "1"), ("1", "2", "2"), "ABC", 15),
+    (
+        "precision 15 on thirds",
+        ("0", "0", "0"),
+        ("1/3", "1/3", "0"),
+        ("0", "1/3", "1/3"),
+        "ACB",
+        15,
+    ),
+    ("precision 13, tiny", ("0", "0", "0"), ("1e-7", "0", "0"), ("0", "3e-7", "0"), "ABC", 13),
+    # scientific only where fixed-point would show zero: 0.05 at precision 1 is 0.1
+    ("fixed-point keeps 0.05", ("0", "0", "0"), ("0.1", "0", "0"), ("0", "1", "0"), "ABC", 1),
+    ("0.005 at precision 2", ("0", "0", "0"), ("0.005", "0", "0"), ("0", "1", "0"), "ABC", 2),
+    ("just below half", ("0", "0", "0"), ("0.0049999", "0", "0"), ("0", "1", "0"), "ABC", 2),
+    ("precision 0, below half", ("0", "0", "0"), ("0.4", "0", "0"), ("0", "0.9", "0"), "ACB", 0),
+    # what readers paste: the Unicode minus, spaces of every kind, a byte order mark
+    ("Unicode minus", ("−1", "0", "0"), ("0", "−2.5", "0"), ("0", "0", "1/−4"), "ABC", 4),
+    (
+        "spaces around",
+        (" 1 ", "\t2", "\u00a03\u00a0"),
+        ("\u20034", "5\u3000", "\ufeff6"),
+        ("7", " 8", "9 "),
+        "ABC",
+        3,
+    ),
+    ("plus and bare points", ("+.5", "5.", "-.25"), ("1", "0", "0"), ("0", "1", "0"), "ABC", 4),
     # unreadable input: the message names the field; every output shows a dash
     ("empty field", ("", "0", "0"), ("1", "0", "0"), ("0", "1", "0"), "ABC", 4),
     ("blank field", ("0", "0", "0"), ("1", "   ", "0"), ("0", "1", "0"), "ABC", 4),
@@ -151,6 +177,22 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
     ("comma decimal", ("0", "0", "0"), ("1,5", "0", "0"), ("0", "1", "0"), "ABC", 4),
     ("quote in input", ("0", "it's", "0"), ("1", "0", "0"), ("0", "1", "0"), "ABC", 4),
     ("first bad field wins", ("0", "0", "0"), ("x", "0", "0"), ("", "1", "0"), "ABC", 4),
+    ("5000 digits", ("0", "0", "0"), ("1", "0", "0"), ("0", "1" * 5000, "0"), "ABC", 4),
+    ("401 digits", ("0", "0", "0"), ("1" * 401, "0", "0"), ("0", "1", "0"), "ABC", 4),
+    ("1e-2200", ("0", "0", "0"), ("1", "0", "0"), ("0", "1", "1e-2200"), "ABC", 4),
+    ("full-width digit", ("0", "0", "0"), ("\uff11", "0", "0"), ("0", "1", "0"), "ABC", 4),
+    ("Arabic-Indic digit", ("\u0661", "0", "0"), ("1", "0", "0"), ("0", "1", "0"), "ABC", 4),
+    ("underscore", ("0", "0", "0"), ("1_000", "0", "0"), ("0", "1", "0"), "ABC", 4),
+    ("hexadecimal", ("0", "0", "0"), ("1", "0x10", "0"), ("0", "1", "0"), "ABC", 4),
+    ("invisible character", ("0", "0", "0"), ("1", "0", "0"), ("0", "1\u200b", "0"), "ABC", 4),
+    (
+        "too many digits together",
+        (f"1/{3**800}", f"1/{7**470}", f"1/{11**380}"),
+        ("1", "0", "0"),
+        ("0", "1", "0"),
+        "ABC",
+        4,
+    ),
 ]
 
 

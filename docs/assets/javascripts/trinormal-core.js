@@ -21,7 +21,12 @@
 })(typeof self !== "undefined" ? self : this, function () {
   "use strict";
 
-  var MAX_DECIMAL_EXPONENT = 9999;
+  // The limits and rules of trinormal/validation.py (tests/data/parser_vectors.json checks both).
+  var MAX_DIGITS = 400;
+  var MAX_COMMON_DIGITS = 850;
+  var MAX_TEXT_LENGTH = 1000;
+  var MIN_PRECISION = 0;
+  var MAX_PRECISION = 15;
   var SCI_ABOVE_LOG10 = 15;
   var AXES = "xyz";
 
@@ -70,6 +75,19 @@
     return (a / gcd(a, b)) * b;
   }
 
+  /* n/d as the nearest-ish double (for drawing only: never printed), without overflow on the way. */
+  function toNumber(n, d) {
+    if (n === 0n) return 0;
+    var shift = 64 - (bitLength(n) - bitLength(d)); // keep ~64 significant bits in the quotient
+    var q = shift >= 0 ? (n << BigInt(shift)) / d : n / (d << BigInt(-shift));
+    var x = Number(q);
+    // x * 2^-shift, in two halves so neither factor over- or underflows on its own;
+    // beyond the double range the value is drawn at the edge of it
+    var h = Math.trunc(-shift / 2);
+    x = x * Math.pow(2, h) * Math.pow(2, -shift - h);
+    return Number.isFinite(x) ? x : x > 0 ? Number.MAX_VALUE : -Number.MAX_VALUE;
+  }
+
   /* The exact value of a double as [numerator, denominator] (like float.as_integer_ratio). */
   function doubleRatio(x) {
     var buf = new DataView(new ArrayBuffer(8));
@@ -94,29 +112,53 @@
 
   // ------------------------------------------------------------------ parsing
 
-  /* Python's repr() of a str, for messages like  A.x = 'abc' is not a number. */
-  function pyRepr(s) {
-    var quote = s.indexOf("'") >= 0 && s.indexOf('"') < 0 ? '"' : "'";
+  var LIMIT = 10n ** BigInt(MAX_DIGITS);
+  var COMMON_LIMIT = 10n ** BigInt(MAX_COMMON_DIGITS);
+  var LIMIT_BITS = bitLength(LIMIT);
+  var QUOTE_SHOWN = 24;
+  var SPACES = "\t\n\v\f\r \x85\xa0\u1680\u2000-\u200a\u2028\u2029\u202f\u205f\u3000\ufeff";
+  var STRIP_RE = new RegExp("^[" + SPACES + "]+|[" + SPACES + "]+$", "g");
+  var SHOWN_RE = /[\p{L}\p{N}\p{P}\p{S}]/u;
+
+  /* A user's text quoted for a message, short: trinormal.validation.quote_input. */
+  function quoteInput(text) {
+    var chars = Array.from(text);
+    var cut = chars.length > QUOTE_SHOWN;
+    if (cut) chars = chars.slice(0, QUOTE_SHOWN);
+    var joined = chars.join("");
+    var quote = joined.indexOf("'") >= 0 && joined.indexOf('"') < 0 ? '"' : "'";
     var out = quote;
-    for (var i = 0; i < s.length; i++) {
-      var ch = s[i];
-      var code = s.charCodeAt(i);
-      if (ch === "\\") out += "\\\\";
-      else if (ch === quote) out += "\\" + ch;
+    chars.forEach(function (ch) {
+      var code = ch.codePointAt(0);
+      if (ch === "\\" || ch === quote) out += "\\" + ch;
       else if (ch === "\n") out += "\\n";
       else if (ch === "\r") out += "\\r";
       else if (ch === "\t") out += "\\t";
-      else if (code < 0x20 || (code >= 0x7f && code < 0xa0)) {
-        out += "\\x" + code.toString(16).padStart(2, "0");
-      } else out += ch;
-    }
-    return out + quote;
+      else if (ch === " " || (code > 0x20 && code < 0x7f)) out += ch;
+      else if (code >= 0xa0 && SHOWN_RE.test(ch)) out += ch;
+      else if (code < 0x100) out += "\\x" + code.toString(16).padStart(2, "0");
+      else if (code < 0x10000) out += "\\u" + code.toString(16).padStart(4, "0");
+      else out += "\\U" + code.toString(16).padStart(8, "0");
+    });
+    return out + (cut ? "\u2026" + quote : quote);
   }
 
-  var DECIMAL_RE = /^([+-]?)(\d+(?:\.\d*)?|\.\d+)(?:[eE]([+-]?\d+))?$/;
-  var FRACTION_RE = /^([+-]?\d+)\s*\/\s*([+-]?\d+)$/;
+  /* Any value for a message, as Python shows it (None, True, False for null and booleans). */
+  function show(value) {
+    if (typeof value === "string") return quoteInput(value);
+    if (value === null || value === undefined) return "None";
+    if (typeof value === "boolean") return value ? "True" : "False";
+    return String(value);
+  }
+
+  var SIGN = "[+\\-\u2212]";
+  var DECIMAL_RE = new RegExp("^(" + SIGN + "?)([0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE](" + SIGN + "?[0-9]+))?$");
+  var FRACTION_RE = new RegExp(
+    "^(" + SIGN + "?[0-9]+)[" + SPACES + "]*/[" + SPACES + "]*(" + SIGN + "?[0-9]+)$"
+  );
   var NAN_WORDS = ["nan", "+nan", "-nan"];
   var INF_WORDS = ["inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"];
+  var NOT_A_NUMBER = "is not a number (use a decimal like 0.1 or a fraction like 1/3)";
 
   function InputError(message) {
     this.name = "InputError";
@@ -124,41 +166,143 @@
   }
   InputError.prototype = Object.create(Error.prototype);
 
-  /* Read a coordinate exactly, as trinormal.core._parse_string does: [n, d] with d > 0. */
+  function tooLarge(name, shown) {
+    return new InputError(
+      (shown === undefined ? name : name + " = " + shown) +
+        " is too large a number, or too small a fraction, to compute with exactly (at most " +
+        MAX_DIGITS + " digits in its numerator and in its denominator)"
+    );
+  }
+
+  function checkRatio(n, d, name, shown) {
+    if (-LIMIT < n && n < LIMIT && d < LIMIT) return [n, d];
+    var g = gcd(n, d);
+    if (g > 1n) {
+      n /= g;
+      d /= g;
+      if (-LIMIT < n && n < LIMIT && d < LIMIT) return [n, d];
+    }
+    throw tooLarge(name, shown);
+  }
+
+  function stripLeft(text, chars) {
+    var i = 0;
+    while (i < text.length && chars.indexOf(text[i]) >= 0) i++;
+    return text.slice(i);
+  }
+
+  /* sign digits e exp, exactly, its size checked before converting: validation._decimal. */
+  function readDecimal(sign, digits, exp, name, shown) {
+    var shift = 0;
+    if (digits.indexOf(".") >= 0) {
+      var parts = digits.split(".");
+      shift = -parts[1].length;
+      digits = parts[0] + parts[1];
+    }
+    var sig = stripLeft(digits, "0");
+    if (!sig) return [0n, 1n];
+    if (exp) {
+      exp = exp.replace(/\u2212/g, "-");
+      if (stripLeft(stripLeft(exp, "+-"), "0").length > 6) throw tooLarge(name, shown);
+      shift += parseInt(exp, 10);
+    }
+    var stripped = sig.replace(/0+$/, "");
+    var e = shift + sig.length - stripped.length;
+    sig = stripped;
+    var n, d;
+    if (e >= 0) {
+      if (sig.length + e > MAX_DIGITS) throw tooLarge(name, shown);
+      n = BigInt(sig) * pow10(e);
+      d = 1n;
+    } else {
+      if (-e > LIMIT_BITS || sig.length > MAX_DIGITS - e) throw tooLarge(name, shown);
+      n = BigInt(sig);
+      d = pow10(-e);
+    }
+    return checkRatio(sign === "-" || sign === "\u2212" ? -n : n, d, name, shown);
+  }
+
+  /* Read a coordinate exactly, as trinormal.validation.check_coordinate reads a string. */
   function parseCoordinate(text, name) {
-    var s = String(text).trim();
+    text = String(text);
+    var length = Array.from(text).length;
+    if (length > MAX_TEXT_LENGTH) {
+      throw new InputError(
+        name + " is too long (" + length + " characters; at most " + MAX_TEXT_LENGTH + ")"
+      );
+    }
+    var s = text.replace(STRIP_RE, "");
     if (!s) throw new InputError(name + " is empty");
-    var low = s.toLowerCase();
+    var shown = quoteInput(s);
+    var low = s.toLowerCase().replace(/\u2212/g, "-");
     if (NAN_WORDS.indexOf(low) >= 0) throw new InputError(name + " is NaN");
     if (INF_WORDS.indexOf(low) >= 0) throw new InputError(name + " is infinite");
     var m = DECIMAL_RE.exec(s);
-    if (m) {
-      var sign = m[1];
-      var digits = m[2];
-      var e = m[3] ? parseInt(m[3], 10) : 0;
-      if (digits.indexOf(".") >= 0) {
-        var parts = digits.split(".");
-        e -= parts[1].length;
-        digits = parts[0] + parts[1];
-      }
-      if (Math.abs(e) > MAX_DECIMAL_EXPONENT || digits.length > 4000) {
-        throw new InputError(name + " = " + pyRepr(s) + " is too large a number to read exactly");
-      }
-      var n = BigInt(digits) * (sign === "-" ? -1n : 1n);
-      return e >= 0 ? [n * pow10(e), 1n] : [n, pow10(-e)];
-    }
+    if (m) return readDecimal(m[1], m[2], m[3], name, shown);
     m = FRACTION_RE.exec(s);
     if (m) {
-      if (s.length > 4000) {
-        throw new InputError(name + " = " + pyRepr(s) + " is too large a number to read exactly");
-      }
-      var num = BigInt(m[1]);
-      var den = BigInt(m[2]);
-      if (den === 0n) throw new InputError(name + " = " + pyRepr(s) + " divides by zero");
-      return den > 0n ? [num, den] : [-num, -den];
+      var num = BigInt(m[1].replace(/\u2212/g, "-"));
+      var den = BigInt(m[2].replace(/\u2212/g, "-"));
+      if (den === 0n) throw new InputError(name + " = " + shown + " divides by zero");
+      return den > 0n ? checkRatio(num, den, name, shown) : checkRatio(-num, -den, name, shown);
     }
+    throw new InputError(name + " = " + shown + " " + NOT_A_NUMBER);
+  }
+
+  /* One common denominator for the nine coordinates, within the limit: validation.check_common. */
+  function checkCommon(coords) {
+    var tooLargeTogether = function (i) {
+      return new InputError(
+        "ABC"[Math.floor(i / 3)] + "." + AXES[i % 3] +
+          " makes the nine coordinates too large to compute with exactly: over one common " +
+          "denominator they would need more than " + MAX_COMMON_DIGITS + " digits"
+      );
+    };
+    var D = 1n;
+    for (var i = 0; i < coords.length; i++) {
+      D = lcm(D, coords[i][1]);
+      if (D >= COMMON_LIMIT) throw tooLargeTogether(i);
+    }
+    var ints = coords.map(function (r) {
+      return r[0] * (D / r[1]);
+    });
+    var worst = 0;
+    var over = false;
+    ints.forEach(function (x, k) {
+      if (abs(x) > abs(ints[worst])) worst = k;
+      if (abs(x) >= COMMON_LIMIT) over = true;
+    });
+    if (over) throw tooLargeTogether(worst);
+    return { ints: ints, D: D };
+  }
+
+  /* A precision as trinormal.validation.check_precision reads it (a number or typed text). */
+  function checkPrecision(value, name) {
+    name = name || "precision";
+    var range = MIN_PRECISION + " to " + MAX_PRECISION;
+    var p;
+    if (typeof value === "string") {
+      var text = value.replace(STRIP_RE, "");
+      if (!/^[0-9]+$/.test(text)) {
+        throw new InputError(name + " must be a whole number from " + range + ", got " + show(value));
+      }
+      if (text.length > 6) throw new InputError(name + " must be from " + range + ", got " + show(text));
+      p = parseInt(text, 10);
+    } else if (typeof value === "number" && Number.isInteger(value)) {
+      p = value;
+    } else {
+      throw new InputError(name + " must be a whole number from " + range + ", got " + show(value));
+    }
+    if (p < MIN_PRECISION || p > MAX_PRECISION) {
+      throw new InputError(name + " must be from " + range + ", got " + p);
+    }
+    return p;
+  }
+
+  function checkWinding(value, name) {
+    if (value === "ABC" || value === "ACB") return value;
     throw new InputError(
-      name + " = " + pyRepr(s) + " is not a number (use a decimal like 0.1 or a fraction like 1/3)"
+      (name || "winding") + " must be 'ABC' or 'ACB', got " + show(value) + " (invalid choice)"
     );
   }
 
@@ -198,7 +342,8 @@
   function formatSurd(negative, num, den, precision, trim) {
     var p = precision;
     if (num === 0n) return trim || p === 0 ? "0" : "0." + "0".repeat(p);
-    var small = num * 100n ** BigInt(p) < den;
+    // scientific only where fixed-point would show zero (below half of 10**-p), or at 1e15 and above
+    var small = 4n * num * 100n ** BigInt(p) < den;
     var large = num >= den * 100n ** BigInt(SCI_ABOVE_LOG10);
     var sign = negative ? "-" : "";
     var s;
@@ -261,7 +406,9 @@
   /*
    * compute(a, b, c, winding, precision): a, b, c are arrays of 3 strings.
    * Returns {ok: true, degenerate, status, out: {u, v, normal, magnitude, area, unit_normal,
-   * plane}, chart: [x, y, z] as numbers in [-1, 1] relative to the largest |component|}
+   * plane}, chart: [x, y, z] as numbers in [-1, 1] relative to the largest |component|,
+   * floats: {points: {A, B, C}, u, v, normal, unit_normal (null when degenerate)} as
+   * numbers for drawing}
    * or {ok: false, status: message, field: "B.y"} for unreadable input.
    */
   function compute(a, b, c, winding, precision) {
@@ -278,20 +425,24 @@
         }
       }
     }
-    if (winding !== "ABC" && winding !== "ACB") {
-      return { ok: false, status: "winding must be 'ABC' or 'ACB', got " + pyRepr(String(winding)), field: "winding" };
+    var p, common;
+    try {
+      checkWinding(winding);
+    } catch (err) {
+      return { ok: false, status: err.message, field: "winding" };
     }
-    var p = Number(precision);
-    if (!Number.isInteger(p) || p < 0 || p > 15) {
-      return { ok: false, status: "precision must be a whole number from 0 to 10", field: "precision" };
+    try {
+      p = checkPrecision(precision);
+    } catch (err) {
+      return { ok: false, status: err.message, field: "precision" };
     }
-    var D = 1n;
-    coords.forEach(function (r) {
-      D = lcm(D, r[1]);
-    });
-    var ints = coords.map(function (r) {
-      return r[0] * (D / r[1]);
-    });
+    try {
+      common = checkCommon(coords);
+    } catch (err) {
+      return { ok: false, status: err.message, field: err.message.split(" ", 1)[0] };
+    }
+    var D = common.D;
+    var ints = common.ints;
     var P = winding === "ABC" ? 3 : 6;
     var Q = winding === "ABC" ? 6 : 3;
     var u = [ints[P] - ints[0], ints[P + 1] - ints[1], ints[P + 2] - ints[2]];
@@ -334,12 +485,41 @@
     var chart = n.map(function (x) {
       return big === 0n ? 0 : Number((x * 1000000n) / big) / 1000000;
     });
-    return { ok: true, degenerate: degenerate, status: status, out: out, chart: chart };
+    // floats for drawing (the 3D view): never used for a displayed digit
+    var toFloats = function (xs, d) {
+      return xs.map(function (x) {
+        return toNumber(x, d);
+      });
+    };
+    var floats = {
+      points: { A: toFloats(ints.slice(0, 3), D), B: toFloats(ints.slice(3, 6), D), C: toFloats(ints.slice(6, 9), D) },
+      u: toFloats(u, D),
+      v: toFloats(w, D),
+      normal: toFloats(n, D2),
+      unit_normal: null,
+    };
+    if (!degenerate) {
+      var root = isqrt(S * 4n ** 60n); // |N| * 2^60, so the unit normal keeps ~60 bits
+      floats.unit_normal = n.map(function (x) {
+        return toNumber(x * 2n ** 60n, root);
+      });
+    }
+    return { ok: true, degenerate: degenerate, status: status, out: out, chart: chart, floats: floats };
   }
 
   return {
     compute: compute,
     parseCoordinate: parseCoordinate,
+    checkPrecision: checkPrecision,
+    checkWinding: checkWinding,
+    quoteInput: quoteInput,
+    LIMITS: {
+      MAX_DIGITS: MAX_DIGITS,
+      MAX_COMMON_DIGITS: MAX_COMMON_DIGITS,
+      MAX_TEXT_LENGTH: MAX_TEXT_LENGTH,
+      MIN_PRECISION: MIN_PRECISION,
+      MAX_PRECISION: MAX_PRECISION,
+    },
     formatSurd: formatSurd,
     isqrt: isqrt,
     InputError: InputError,
