@@ -253,13 +253,21 @@ def test_out_of_range_values_are_a_value_error_not_a_clamp(key, value, message):
         ({"c": (0, 0, -7)}, r"C\.z = -7 is outside"),
         ({"a": (0, 0)}, r"A has 2 coordinates"),
         ({"precision": 16}, r"precision"),
-        ({"precision": 2.5}, r"precision"),
-        ({"winding": "BAC"}, r"winding"),
+        ({"winding": "BAC"}, r"winding must be 'ABC' or 'ACB', got 'BAC'"),
     ],
 )
 def test_bad_starting_values_are_refused(kwargs, message):
     with pytest.raises(ValueError, match=message):
         Explorer(**kwargs)
+
+
+@pytest.mark.parametrize("precision", [2.5, "two", True])
+def test_precision_is_checked_as_everywhere_else(precision):
+    # one check, one message: the explorer refuses what the core's formatter refuses
+    with pytest.raises((TypeError, ValueError)) as core:
+        triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).format(precision)
+    with pytest.raises(core.type, match=re.escape(str(core.value))):
+        Explorer(precision=precision)
 
 
 def test_set_moves_several_controls_and_checks_them_all_first():

@@ -30,11 +30,18 @@ import traitlets
 
 from trinormal.colors import ROLE_COLORS
 from trinormal.core import TriangleNormal, Winding, triangle_normal
-from trinormal.display import MAX_PRECISION, format_number, format_vector
+from trinormal.display import format_number, format_vector
 from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
 from trinormal.explorer.state import coordinate_text, exact_value, grid_text, view_state
 from trinormal.explorer.view import ExplorerView
+from trinormal.validation import (
+    MAX_PRECISION,
+    MIN_PRECISION,
+    check_precision,
+    check_vertex,
+    check_winding,
+)
 
 __all__ = ["COORDINATES", "PRECISION_RANGE", "Explorer"]
 
@@ -42,7 +49,7 @@ __all__ = ["COORDINATES", "PRECISION_RANGE", "Explorer"]
 COORDINATES: tuple[str, ...] = tuple(p + q for p in "abc" for q in "xyz")
 
 #: Smallest and largest number of decimal places the precision control offers.
-PRECISION_RANGE: tuple[int, int] = (0, MAX_PRECISION)
+PRECISION_RANGE: tuple[int, int] = (MIN_PRECISION, MAX_PRECISION)
 
 _WINDING_OPTIONS = [(w.label, w.value) for w in Winding]
 #: Rounding slack when comparing a slider value from the browser with the grid: the
@@ -75,24 +82,11 @@ def _check_in_range(name: str, value: float, low: float, high: float) -> float:
 
 
 def _check_precision(value: object) -> int:
-    low, high = PRECISION_RANGE
-    if isinstance(value, bool) or not isinstance(value, int):
-        if isinstance(value, float) and value.is_integer():
-            value = int(value)
-        else:
-            raise ValueError(
-                f"precision must be a whole number from {low} to {high}, got {value!r}"
-            )
-    if not low <= value <= high:
-        raise ValueError(f"precision must be from {low} to {high} decimal places, got {value}")
-    return value
+    return check_precision(value)
 
 
 def _check_winding(value: object) -> str:
-    try:
-        return Winding(value).value  # type: ignore[arg-type]
-    except ValueError:
-        raise ValueError(f"winding must be 'ABC' or 'ACB' (or a Winding), got {value!r}") from None
+    return check_winding(value).value
 
 
 class _CoordinateSlider(widgets.FloatSlider):  # type: ignore[misc]
@@ -322,16 +316,8 @@ class Explorer:
         texts: dict[str, str] = {}
         for p, point in points.items():
             vertex = p.upper()
-            if isinstance(point, str | bytes | dict | set | frozenset):
-                raise TypeError(f"{vertex} must be 3 coordinates (x, y, z), got {point!r}")
-            try:
-                coords = list(point)
-            except TypeError:
-                raise TypeError(
-                    f"{vertex} must be 3 coordinates (x, y, z), got {point!r}"
-                ) from None
-            if len(coords) != 3:
-                raise ValueError(f"{vertex} has {len(coords)} coordinates, expected 3")
+            check_vertex(point, vertex)  # three numbers in an ordered sequence, each readable
+            coords = list(point)
             for q, value in zip("xyz", coords, strict=True):
                 texts[p + q] = self._check_text(p + q, coordinate_text(value, f"{vertex}.{q}"))
         return texts
