@@ -28,6 +28,7 @@ __all__ = [
     "PALETTE",
     "SAVE_DPI",
     "STYLE",
+    "SURFACE",
     "component_bar_chart",
     "culling_figure",
     "normal_transform_figure",
@@ -52,6 +53,10 @@ PALETTE: dict[str, str] = {
 
 #: Colours for the x, y and z components: the roles ``x``, ``y``, ``z`` of :mod:`trinormal.colors`.
 AXIS_COLORS: tuple[str, str, str] = (ROLE_COLORS["x"], ROLE_COLORS["y"], ROLE_COLORS["z"])
+
+#: The colour of a lit surface in the shading figures: a warm grey, so that the role colours
+#: keep their meaning (sky blue is the ``back`` of a face, yellow its ``front``).
+SURFACE = "#A0988A"
 
 #: Figure background: opaque white, never transparent.
 FACECOLOR = "white"
@@ -145,9 +150,14 @@ def right_hand_rule_figure(
 ) -> Figure:
     """Draw a triangle in 3D with its edges U, V and its normal N, on equal axis scales.
 
-    U and V start at A; a curved arrow turns from U towards V, the way the
-    fingers of a right hand curl, and N (drawn from the centroid, with the
-    length of the mean edge so it stays on screen) points where the thumb does.
+    U and V start at A; a curved arrow (in N's colour, as in the explorer)
+    turns from U towards V, the way the fingers of a right hand curl, and N
+    (drawn from the centroid, three quarters of the mean edge long) points
+    where the thumb does.
+    The face is filled in the ``front`` colour when the camera sees the side N
+    points out of, and in the ``back`` colour when it sees the other side. The
+    axes are the same for both windings of the same points, so the two
+    pictures differ only in what the winding changes.
 
     Parameters
     ----------
@@ -167,12 +177,15 @@ def right_hand_rule_figure(
     --------
     >>> fig = right_hand_rule_figure((0, 0, 0), (1, 0, 0), (0, 1, 0))
     >>> fig.alt_text.split(". ")[1]
-    'The normal N = (0, 0, 1) points along +z.'
+    'The normal N = (0, 0, 1) points along +z; the camera sees the front of the face (yellow).'
+    >>> right_hand_rule_figure((0, 0, 0), (1, 0, 0), (0, 1, 0), "ACB").alt_text.split(". ")[1]
+    'The normal N = (0, 0, -1) points along -z; the camera sees the back of the face (sky blue).'
     """
     import math
 
     import mpl_toolkits.mplot3d  # noqa: F401  (registers the 3d projection)
     from matplotlib.figure import Figure
+    from matplotlib.ticker import MaxNLocator
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     from trinormal.core import triangle_normal
@@ -181,34 +194,45 @@ def right_hand_rule_figure(
     A, B, C = r.a, r.b, r.c
     u, v = r.u, r.v
     first, second = ("B", "C") if r.winding.value == "ABC" else ("C", "B")
+    elev, azim = 25.0, -60.0
     fig = Figure(figsize=(6.5, 6), facecolor=FACECOLOR)
     ax = fig.add_subplot(projection="3d")
     ax.computed_zorder = False  # draw in the order added: the face first, labels on top
     ax.set_facecolor(FACECOLOR)
+    eye = camera_direction(elev, azim)
+    unit = r.unit_normal
+    seen = "front" if unit is None or sum(unit[i] * eye[i] for i in range(3)) > 0 else "back"
     ax.add_collection3d(
         Poly3DCollection(
-            [[A, B, C]], facecolor=ROLE_COLORS["front"], edgecolor=PALETTE["black"], alpha=0.5
+            [[A, B, C]], facecolor=ROLE_COLORS[seen], edgecolor=PALETTE["black"], alpha=0.5
         )
     )
     for name, p in zip("ABC", (A, B, C), strict=True):
         ax.text(*p, f" {name}", color=ROLE_COLORS[name], fontsize=14, fontweight="bold")
     colors = {k: ROLE_COLORS[k] for k in "UVN"}
+    pts: list[Sequence[float]] = [A, B, C]
+    centroid = [sum(p[i] for p in pts) / 3 for i in range(3)]
+    lengths = [math.dist(p, q) for p, q in ((A, B), (A, C), (B, C))]
+    scale = 0.75 * (sum(lengths) / 3) or 1.0
     for name, vec in (("U", u), ("V", v)):
         ax.quiver(*A, *vec, color=colors[name], linewidth=2.5, arrow_length_ratio=0.12)
-        mid = [A[i] + 0.6 * vec[i] for i in range(3)]
-        ax.text(*mid, f"  {name}", color=colors[name], fontsize=14, fontweight="bold")
-    pts: list[Sequence[float]] = [A, B, C]
-    lengths = [math.dist(p, q) for p, q in ((A, B), (A, C), (B, C))]
-    scale = sum(lengths) / 3 or 1.0
-    centroid = [sum(p[i] for p in pts) / 3 for i in range(3)]
+        # the label sits beside the head of its arrow, outside the face
+        mid = [A[i] + 0.8 * vec[i] for i in range(3)]
+        out = [mid[i] - centroid[i] for i in range(3)]
+        ee = sum(x * x for x in vec) or 1.0
+        along = sum(out[i] * vec[i] for i in range(3)) / ee
+        perp = [out[i] - along * vec[i] for i in range(3)]
+        size = math.hypot(*perp) or 1.0
+        away = [mid[i] + 0.2 * scale * perp[i] / size for i in range(3)]
+        ax.text(*away, name, color=colors[name], fontsize=14, fontweight="bold", ha="center")
     direction = "is zero, so it has no direction: the triangle is degenerate"
-    unit = r.unit_normal
     if unit is not None:
         n = [x * scale for x in unit]
         ax.quiver(*centroid, *n, color=colors["N"], linewidth=3, arrow_length_ratio=0.15)
         tip = [centroid[i] + n[i] for i in range(3)]
         ax.text(*tip, "  N", color=colors["N"], fontsize=15, fontweight="bold")
-        pts.append(tuple(tip))
+        # both ends, so the other winding of the same points gets the same axes
+        pts += [tuple(tip), tuple(centroid[i] - n[i] for i in range(3))]
         # the curl from U towards V, a quarter of the way along each edge
         lu = math.hypot(*u)
         uh = [x / lu for x in u]
@@ -222,13 +246,13 @@ def right_hand_rule_figure(
         arc = [
             [A[i] + rho * (math.cos(t) * uh[i] + math.sin(t) * wh[i]) for t in ts] for i in range(3)
         ]
-        ax.plot(*arc, color=PALETTE["black"], linewidth=2)
+        ax.plot(*arc, color=colors["N"], linewidth=2)
         end = [arc[i][-1] for i in range(3)]
         prev = [arc[i][-4] for i in range(3)]
         ax.quiver(
             *prev,
             *(end[i] - prev[i] for i in range(3)),
-            color=PALETTE["black"],
+            color=colors["N"],
             arrow_length_ratio=1.0,
             linewidth=1.5,
         )
@@ -237,6 +261,8 @@ def right_hand_rule_figure(
             axis = max(range(3), key=lambda i: abs(unit[i]))
             sign = "+" if unit[axis] > 0 else "-"
             direction = f"points along {sign}{'xyz'[axis]}"
+        colour = "yellow" if seen == "front" else "sky blue"
+        direction += f"; the camera sees the {seen} of the face ({colour})"
     # equal scales: a cube around everything drawn
     lo = [min(p[i] for p in pts) for i in range(3)]
     hi = [max(p[i] for p in pts) for i in range(3)]
@@ -245,10 +271,12 @@ def right_hand_rule_figure(
         centre = (lo[i] + hi[i]) / 2
         setter(centre - half * 1.1, centre + half * 1.1)
     ax.set_box_aspect((1, 1, 1))
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # few ticks, so 12 pt labels never overlap
+        axis.set_major_locator(MaxNLocator(nbins=4))
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
-    ax.view_init(elev=25, azim=-60)
+    ax.view_init(elev=elev, azim=azim)
     normal = _fmt_vec(r.exact.normal)
     ax.set_title(title if title is not None else f"Winding {r.winding.label}: N = {normal}")
     fig.alt_text = (  # type: ignore[attr-defined]
@@ -427,7 +455,7 @@ def shaded_mesh_figure(
 
     v = np.asarray(vertices, dtype=float)
     f = np.asarray(faces)
-    cmap = LinearSegmentedColormap.from_list("lit", ["#101010", PALETTE["sky"], "#ffffff"])
+    cmap = LinearSegmentedColormap.from_list("lit", ["#101010", SURFACE, "#ffffff"])
     n = len(panels)
     fig = plt.figure(figsize=(4 * n, 4.2), facecolor=FACECOLOR)
     lo, hi = v.min(axis=0), v.max(axis=0)
@@ -439,11 +467,11 @@ def shaded_mesh_figure(
         b = np.asarray(values, dtype=float)
         keep = ~np.isnan(b)
         colors = cmap(np.clip(b[keep], 0, 1))
-        poly = Poly3DCollection(v[f[keep]], facecolors=colors, edgecolors="none")
+        poly = Poly3DCollection(v[f[keep]], facecolors=colors, edgecolors=colors, linewidths=0.4)
         ax.add_collection3d(poly)
         for setlim, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid, strict=True):
             setlim(m - half, m + half)
-        ax.set_box_aspect((1, 1, 1))
+        ax.set_box_aspect((1, 1, 1), zoom=1.5)  # the mesh fills its panel
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
         ax.set_title(name, fontsize=13)
@@ -451,7 +479,7 @@ def shaded_mesh_figure(
         described.append(f"{name} ({drawn} of {len(b)} faces drawn)")
     if title:
         fig.suptitle(title)
-    fig.subplots_adjust(left=0, right=1, bottom=0, top=0.88 if title else 0.95, wspace=0)
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=0.84 if title else 0.95, wspace=0)
     fig.alt_text = "Shaded renderings of a mesh: " + "; ".join(described) + "."  # type: ignore[attr-defined]
     return fig
 
@@ -482,7 +510,7 @@ def camera_direction(elev: float, azim: float) -> Any:
     return np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
 
 
-def _lit(brightness: Any, base: str = "#56B4E9") -> Any:
+def _lit(brightness: Any, base: str = SURFACE) -> Any:
     """Colours from black (0) through ``base`` to white (1) for brightness values."""
     import numpy as np
     from matplotlib.colors import LinearSegmentedColormap
@@ -589,7 +617,8 @@ def shading_figure(
     for k, (name, (polys, b)) in enumerate(panels.items()):
         ax = fig.add_subplot(1, 2, k + 1, projection="3d")
         ax.set_facecolor(FACECOLOR)
-        ax.add_collection3d(Poly3DCollection(polys, facecolors=_lit(b), edgecolors="none"))
+        lit = _lit(b)  # edges in the face colour: no seams between the small pieces
+        ax.add_collection3d(Poly3DCollection(polys, facecolors=lit, edgecolors=lit, linewidths=0.4))
         _cube_limits(ax, v)
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
@@ -657,10 +686,11 @@ def culling_figure(
     all_colours = colours(front)
     panels = [
         ("the camera's view", front, camera),
-        ("from the side: all faces", np.ones(len(f), bool), side),
-        ("from the side: back faces culled", front, side),
+        ("from the side:\nall faces", np.ones(len(f), bool), side),
+        ("from the side:\nback faces culled", front, side),
     ]
-    fig = plt.figure(figsize=(12, 4.6), facecolor=FACECOLOR)
+    # 10 inches: shown 1000 pixels wide, it fits a notebook on a 1280-pixel projector unscaled
+    fig = plt.figure(figsize=(10, 4.4), facecolor=FACECOLOR)
     for k, (name, keep, (el, az)) in enumerate(panels):
         ax = fig.add_subplot(1, 3, k + 1, projection="3d")
         ax.set_facecolor(FACECOLOR)
@@ -668,6 +698,7 @@ def culling_figure(
             Poly3DCollection(v[f[keep]], facecolors=all_colours[keep], edgecolors="none")
         )
         _cube_limits(ax, v)
+        ax.set_box_aspect((1, 1, 1), zoom=1.4)  # the mesh fills its panel
         ax.view_init(elev=el, azim=az)
         ax.set_axis_off()
         ax.set_title(name)
@@ -738,14 +769,15 @@ def normal_transform_figure(sx: float = 2.0, sy: float = 1.0, count: int = 16) -
         return np.degrees(np.abs(np.arcsin(np.clip(np.abs((u * tt).sum(1)), 0, 1))))
 
     err_wrong, err_right = off(wrong).max(), off(right).max()
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4.8), facecolor=FACECOLOR)
+    # 10 inches: shown 1000 pixels wide, it fits a notebook on a 1280-pixel projector unscaled
+    fig, axes = plt.subplots(1, 3, figsize=(10, 4.4), facecolor=FACECOLOR)
     stretch = f"x × {format_number(sx, 2, trim=True)}"
     if sy != 1:
         stretch += f", y × {format_number(sy, 2, trim=True)}"
     panels = [
-        ("the surface and its normals", p, n, ROLE_COLORS["N"], "-", np.ones(2)),
-        ("stretched, normals × M (wrong)", q, wrong, "#000000", "--", m),
-        ("stretched, normals × M⁻ᵀ (right)", q, right, ROLE_COLORS["N"], "-", m),
+        ("the surface\nand its normals", p, n, ROLE_COLORS["N"], "-", np.ones(2)),
+        ("stretched,\nnormals × M (wrong)", q, wrong, "#000000", "--", m),
+        ("stretched,\nnormals × M⁻ᵀ (right)", q, right, ROLE_COLORS["N"], "-", m),
     ]
     length = 0.45
     for ax, (name, pts, vecs, col, style, scale) in zip(axes, panels, strict=True):

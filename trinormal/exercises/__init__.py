@@ -15,8 +15,9 @@ Answers are compared exactly: ``0.5``, ``"1/2"``, ``Fraction(1, 2)``,
 ``Decimal("0.5")``, ``numpy.float64(0.5)`` and ``sympy.Rational(1, 2)`` are
 the same number. An exercise may state a tolerance (``tol``), and then a
 float within it counts, as does an irrational sympy value such as
-``sympy.sqrt(3) / 2`` or the string ``"sqrt(3)/2"``. Vectors can be tuples,
-lists, numpy arrays or sympy matrices.
+``sympy.sqrt(3) / 2`` or the string ``"sqrt(3)/2"`` (also typed the way the
+notebooks print it, ``"√3/2"``, with ``·`` for a product and ``−`` for minus).
+Vectors can be tuples, lists, numpy arrays or sympy matrices.
 
 Where the exercises live
 ------------------------
@@ -57,6 +58,7 @@ import difflib
 import html
 import importlib
 import math
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -407,8 +409,8 @@ def read_number(x: Any) -> Number:
     --------
     >>> read_number("5/3"), read_number(-2.5)
     (Fraction(5, 3), Fraction(-5, 2))
-    >>> round(read_number("sqrt(3)/2"), 6)
-    0.866025
+    >>> round(read_number("sqrt(3)/2"), 6), round(read_number("√3/2"), 6)
+    (0.866025, 0.866025)
     """
     if isinstance(x, bool) or x is None or type(x).__name__ == "bool_":
         raise AnswerError(f"expected a number, got {x!r}")
@@ -435,12 +437,21 @@ def _real(x: Any) -> Number:
     return float(x)
 
 
+def _sqrt_call(match: re.Match[str]) -> str:
+    """``√3`` → ``sqrt(3)``, ``√(`` → ``sqrt(``."""
+    return "sqrt(" if match[1] == "(" else f"sqrt({match[1]})"
+
+
 def _sympy_number(text: str, error: Exception) -> Number:
     """Read a string such as ``"sqrt(3)/2"`` with sympy, when it is installed."""
+    # the way the notebooks print math: √3/2, 1/√(2), 2√2, 2·3, 2×3, −1
+    code = re.sub(r"√\s*(\d+(?:\.\d+)?|\()", _sqrt_call, text)
+    code = code.replace("·", "*").replace("×", "*").replace("−", "-")
+    code = re.sub(r"(\d)\s*sqrt\(", r"\1*sqrt(", code)  # 2√2 is 2*sqrt(2)
     try:
         import sympy as sp
 
-        value = sp.sympify(text.strip(), rational=True)
+        value = sp.sympify(code.strip(), rational=True)
     except Exception:  # any failure means: not a number
         raise AnswerError(str(error)) from None
     if not getattr(value, "is_number", False):
@@ -534,7 +545,12 @@ def _compare(expected: Any, answer: Any, tol: float | None) -> tuple[bool, str]:
     if kind == "str":
         if not isinstance(answer, str):
             return False, "Answer with a word, in quotes."
-        return answer.strip().lower() == expected.strip().lower(), ""
+        words = answer.strip().lower().split()
+        if words[:1] == ["the"]:  # "the front" and "front face" say "front" too
+            words = words[1:]
+        if words[-1:] == ["face"]:
+            words = words[:-1]
+        return " ".join(words) == expected.strip().lower(), ""
     try:
         if kind == "vector":
             got, want = read_vector(answer), [read_number(x) for x in expected]

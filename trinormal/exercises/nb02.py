@@ -34,19 +34,31 @@ _NAMES = ("Ux", "Uy", "Uz", "Vx", "Vy", "Vz")
 
 
 def _nz_example() -> str:
-    return "Ux*Vy - Uy*Vx"
+    """Return the z component of V × U (order A → C → B), which the notebook never prints."""
+    return "Uy*Vx - Ux*Vy"
 
 
 def _check_nz(answer: Any) -> bool | tuple[bool, str]:
     import sympy as sp
+    from sympy.parsing.sympy_parser import (
+        implicit_multiplication,
+        parse_expr,
+        standard_transformations,
+    )
 
     from trinormal.symbolic import EDGE_SYMBOLS, normal_components
 
     symbols = {str(s): s for e in EDGE_SYMBOLS for s in e}
     # ux, U_x and u_x mean Ux too: match names without case or underscores
     loose = {name.lower(): symbols[name] for name in _NAMES}
+    # "Ux Vy - Uy Vx", written the way a textbook writes products, means Ux*Vy - Uy*Vx
+    transformations = (*standard_transformations, implicit_multiplication)
     try:
-        expr = sp.sympify(answer, locals=symbols) if isinstance(answer, str) else answer
+        if isinstance(answer, str):
+            text = answer.replace("·", "*").replace("×", "*").replace("−", "-")
+            expr = parse_expr(text, local_dict=dict(symbols), transformations=transformations)
+        else:
+            expr = answer
         expr = sp.sympify(expr)
         unknown = []
         for sym in expr.free_symbols:
@@ -55,29 +67,44 @@ def _check_nz(answer: Any) -> bool | tuple[bool, str]:
                 expr = expr.subs(sym, loose[key])
             else:
                 unknown.append(str(sym))
-    except (sp.SympifyError, TypeError, SyntaxError, AttributeError):
+    except Exception:  # any parse failure (SyntaxError, TokenError, SympifyError, ...)
         return False, "Your answer could not be read as an expression in Ux, Uy, Uz, Vx, Vy, Vz."
+    unknown.sort()
+    for name in unknown:  # "UxVy": two names run together
+        key = name.replace("_", "").lower()
+        if len(key) == 4 and key[:2] in loose and key[2:] in loose:
+            return False, (
+                f"{name} reads as one name: write a product with * or a space, "
+                f"as in {loose[key[:2]]}*{loose[key[2:]]}."
+            )
     if unknown:
         return False, (
-            f"Your answer uses {', '.join(sorted(unknown))}: write it with Ux, Uy, Uz, Vx, Vy, Vz "
-            "only."
+            f"Your answer uses {', '.join(unknown)}: write it with Ux, Uy, Uz, Vx, Vy, Vz only."
         )
     nz = normal_components("edges").z
-    if sp.expand(expr - nz) == 0:
+    if sp.expand(expr + nz) == 0:  # (V × U)_z = −(U × V)_z
         return True
-    if sp.expand(expr + nz) == 0:
-        return False, "You have the right terms with the opposite sign: which product comes first?"
+    if sp.expand(expr - nz) == 0:
+        return False, (
+            "That is N_z of U × V, the order A → B → C. V × U has its factors swapped: "
+            "what does that do to the sign?"
+        )
     used = {str(s) for s in expr.free_symbols}
     if used & {"Uz", "Vz"}:
-        return False, "N_z does not involve Uz or Vz: only the x and y components of U and V."
-    return False, "Use the x and y components of U and V: N_z = (one product) − (another)."
+        return False, (
+            "A z component does not involve Uz or Vz: only the x and y components of U and V."
+        )
+    return False, (
+        "Use the x and y components of U and V: the z component is (one product) − (another)."
+    )
 
 
 EXERCISES = (
     Exercise(
-        "02-nz-formula",
-        "Write N_z in terms of the edge components Ux, Uy, Uz, Vx, Vy, Vz "
-        "(a sympy expression or a string such as 'Ux*Vy - ...').",
+        "02-nz-reversed",
+        "Write the z component of V × U (the normal for the order A → C → B) in terms of the "
+        "edge components Ux, Uy, Uz, Vx, Vy, Vz (a sympy expression or a string such as "
+        "'Uy*Vz - ...').",
         checker=_check_nz,
         example=_nz_example,
     ),

@@ -96,6 +96,10 @@ EXERCISES = (
                 "whose size is twice the area.",
             ),
             (0, "A flat triangle in the xy-plane has its normal along z, so N_z is not 0."),
+            (
+                lambda: _flat_nz() / 2,
+                "That is the signed area of the triangle: the raw N_z is twice it.",
+            ),
         ),
     ),
 )

@@ -86,7 +86,10 @@ def _check_scale_area(answer: Any) -> bool | tuple[bool, str]:
         return False, "Each edge grows by that factor, but the area is a product of two edges."
     if value == SCALE_FACTOR**3:
         return False, "That is how a volume grows (three lengths); an area is two lengths."
-    return False, "Compare the area before and after, or think of what doubling did to N."
+    return False, (
+        "Compute the area before and after (triangle_normal(...).area, or the explorer's "
+        "readout) and divide the one by the other."
+    )
 
 
 def _on_the_line() -> tuple[Fraction, ...]:

@@ -33,10 +33,17 @@ EXERCISES = (
     ),
     Exercise(
         "06-float64-digits",
-        "About how many decimal digits does a float64 carry? (Answers within 0.5 count.)",
+        "About how many decimal digits does a float64 carry? (Answers within 1 count.)",
         expected=_float64_digits,
-        tol=0.5,
+        tol=1.0,
         hint="Each significand bit is worth log10(2), about 0.301 decimal digits.",
-        mistakes=((_float64_bits, "That is the number of bits: multiply it by log10(2)."),),
+        mistakes=(
+            (_float64_bits, "That is the number of bits: multiply it by log10(2)."),
+            (
+                17,
+                "17 digits are what it takes to write any float64 so that it reads back "
+                "exactly; the digits it carries are fewer: count log10(2) per significand bit.",
+            ),
+        ),
     ),
 )

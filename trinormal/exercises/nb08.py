@@ -45,6 +45,13 @@ EXERCISES = (
         tol=1e-3,
         hint="Angle weighting weighs each face by its corner angle: divide the sliver's angle "
         "by the sum of both.",
-        mistakes=((0.5, "One half is what uniform weighting gives; weigh by the angles."),),
+        mistakes=(
+            (0.5, "One half is what uniform weighting gives; weigh by the angles."),
+            (
+                Fraction(90, 92),
+                "That is the neighbour's share: the sliver gets the rest, its own angle over "
+                "the sum.",
+            ),
+        ),
     ),
 )

@@ -35,6 +35,11 @@ EXERCISES = (
                 (1 / 2, 1, 0),
                 "Right direction, but not a unit vector yet: divide by its length.",
             ),
+            (
+                lambda: unit((1, 1, 0)),
+                "That is the normal before the scale: stretching x tilts the plane, so its "
+                "normal changes too.",
+            ),
         ),
     ),
     Exercise(
