@@ -101,15 +101,17 @@ def _arrow_segments(start: Vec, vector: Vec, head: float) -> list[list[Vec]]:
     return segments
 
 
-def _inside(start: Vec, vector: Vec, divisor: int, half: float) -> bool:
-    """Say whether ``start + vector / divisor`` lies in the cube from -half to half."""
-    return all(abs(s + v / divisor) <= half for s, v in zip(start, vector, strict=True))
+def _inside(start: Vec, vector: Vec, divisor: int, centre: Vec, half: float) -> bool:
+    """Say whether ``start + vector / divisor`` lies in the cube of half-width ``half``."""
+    return all(
+        abs(s + v / divisor - c) <= half for s, v, c in zip(start, vector, centre, strict=True)
+    )
 
 
-def _nice_limit(x: float) -> float:
-    """Round up to the nearest 1, 2, 2.5 or 5 × 10**k (and to at least 1)."""
-    if not math.isfinite(x) or x <= 1.0:
-        return 1.0
+def _nice_limit(x: float, smallest: float = 1.0) -> float:
+    """Round up to the nearest 1, 2, 2.5 or 5 × 10**k (and to at least ``smallest``)."""
+    if not math.isfinite(x) or x <= smallest:
+        return smallest
     k = math.floor(math.log10(x))
     for m in (1.0, 2.0, 2.5, 5.0, 10.0):
         if m * 10.0**k >= x:
@@ -171,8 +173,8 @@ class Snapshot:
         renderer = canvas.get_renderer()
         width, height = renderer.width, renderer.height
         size = (width, height, self.figure.dpi)
-        half, top, title = self._view
-        keys = {"3d": (half, title, size), "n": (top, size), "u": size}
+        box, top, title = self._view
+        keys = {"3d": (box, title, size), "n": (top, size), "u": size}
         regions = [self._backgrounds[band].get(key) for band, key in keys.items()]
         if any(region is None for region in regions):
             shown = [(artist, artist.get_visible()) for _, artist in self._dynamic]
@@ -298,16 +300,30 @@ class Snapshot:
             float(grid[:, 0].get_position(fig).x1),
             float(0.5 * (bottom_right.y1 + top_right.y0)),
         )
-        self._view: tuple[float, float, str] = (0.0, 0.0, "")
+        self._view: tuple[tuple[Vec, float], float, str] = (((0.0, 0.0, 0.0), 0.0), 0.0, "")
         self._n_marker = "$N$"
         return fig, art
 
-    def _view_limit(self) -> float:
-        """Half-width of the 3D box: a 1-2-5 step that holds the vertices, within the range."""
+    def _view_box(self) -> tuple[Vec, float]:
+        """Choose the 3D box: a centre and a 1-2-5 half-width that frame the triangle.
+
+        The centre moves in steps of half the half-width, so small moves keep the
+        same box (and the cached background).
+        """
         r = self.result
-        reach = max(abs(x) for x in (*r.a, *r.b, *r.c))
+        points = (r.a, r.b, r.c)
+        lows = [min(p[i] for p in points) for i in range(3)]
+        highs = [max(p[i] for p in points) for i in range(3)]
+        extent = max(h - lo for h, lo in zip(highs, lows, strict=True))
         widest = max(abs(self.min), abs(self.max))
-        return min(_nice_limit(1.25 * reach), _nice_limit(widest))
+        half = min(_nice_limit(0.75 * extent, smallest=0.5), _nice_limit(widest))
+        grain = half / 2
+        centre = tuple(
+            round((h + lo) / 2 / grain) * grain for h, lo in zip(highs, lows, strict=True)
+        )
+        if not all(math.isfinite(c) for c in centre):
+            centre = (0.0, 0.0, 0.0)
+        return (centre[0], centre[1], centre[2]), half
 
     def update(self, result: TriangleNormal, precision: int) -> None:
         """Move every artist to show ``result`` (the axes are never rebuilt)."""
@@ -316,7 +332,8 @@ class Snapshot:
         r = self.result
         A, B, C = r.a, r.b, r.c
 
-        half = self._view_limit()
+        box = self._view_box()
+        centre, half = box
         centroid = _scaled(_add(_add(A, B), C), 1.0 / 3.0)
         span = 2.0 * half
         divisor = 1  # N is halved until it fits the view; its label says so
@@ -324,7 +341,7 @@ class Snapshot:
             r.magnitude / divisor > 0.4 * span
             or (
                 r.magnitude / divisor > 0.1 * span
-                and not _inside(centroid, r.normal, divisor, half)
+                and not _inside(centroid, r.normal, divisor, centre, half)
             )
         ):
             divisor *= 2
@@ -333,19 +350,20 @@ class Snapshot:
         else:
             title = f"{r.winding.label}: U, V from A; N from the centre"
         top = _nice_limit(1.3 * max(abs(x) for x in r.normal))
-        if (half, top, title) != self._view:
+        if (box, top, title) != self._view:
             ax3 = art["ax3"]
-            ax3.set_xlim(-half, half)
-            ax3.set_ylim(-half, half)
-            ax3.set_zlim(-half, half)
-            ticks = [-half, 0.0, half]
-            ax3.set_xticks(ticks)
-            ax3.set_yticks(ticks)
-            ax3.set_zticks(ticks)
+            for c, set_lim, set_ticks in zip(
+                centre,
+                (ax3.set_xlim, ax3.set_ylim, ax3.set_zlim),
+                (ax3.set_xticks, ax3.set_yticks, ax3.set_zticks),
+                strict=True,
+            ):
+                set_lim(c - half, c + half)
+                set_ticks([c - half / 2, c + half / 2])  # inner ticks: no clash at corners
             art["ax_n"].set_ylim(-top, top)
             art["ax_n"].set_yticks([-top, -top / 2, 0.0, top / 2, top])
             art["title3"].set_text(title)
-            self._view = (half, top, title)
+            self._view = (box, top, title)
 
         art["face"].set_verts([[A, B, C]])
         art["edges"].set_data_3d(*zip(A, B, C, A, strict=True))
