@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import math
+import pickle
 import random
 from decimal import Decimal
 from fractions import Fraction
@@ -58,6 +61,50 @@ def test_result_is_frozen_dataclass():
         r.area = 2.0  # type: ignore[misc]
     again = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0))
     assert r == again
+
+
+def test_results_are_returned_not_built():
+    """TriangleNormal is for type hints and isinstance: building one by hand is refused."""
+    r = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0))
+    with pytest.raises(TypeError, match=r"returned by triangle_normal\(a, b, c\)"):
+        TriangleNormal(*(getattr(r, f.name) for f in dataclasses.fields(r)))
+    with pytest.raises(TypeError, match="not built directly"):
+        dataclasses.replace(r, area=2.0)
+    # copies and pickles keep every method working
+    for same in (copy.copy(r), copy.deepcopy(r), pickle.loads(pickle.dumps(r))):
+        assert same == r and same.exact == r.exact and same.format() == r.format()
+        assert same.to_dict() == r.to_dict() and same.sine == r.sine
+
+
+@pytest.mark.parametrize(
+    ("tol", "fast"),
+    [
+        (DEFAULT_TOL, True),
+        (float("1e-12"), True),  # equal to the default, another object: the same path
+        (1e-12 * (1 + 2**-52), False),
+        (Fraction(DEFAULT_TOL), False),
+        ("1e-12", False),  # the decimal one trillionth, not the float
+        (0.0, False),
+    ],
+)
+def test_the_fast_path_is_chosen_by_what_the_inputs_are(monkeypatch, tol, fast):
+    """Plain floats and the default tolerance's value take the fast path; the result is the same."""
+    from trinormal import core
+
+    calls = []
+    real = core._fast_exact
+
+    def spy(*args):
+        calls.append(args)
+        return real(*args)
+
+    pts = ((0.1, 0.2, 0.3), (1.5, -2.0, 0.25), (-3.0, 0.5, 2.0))
+    careful = triangle_normal(*[[Fraction(x) for x in p] for p in pts], tol=tol)  # never fast
+    monkeypatch.setattr(core, "_fast_exact", spy)
+    r = triangle_normal(*pts, tol=tol)
+    assert bool(calls) is fast
+    assert r == careful and r.exact == careful.exact and r.tol == careful.tol
+    assert r.format(15) == careful.format(15) and r.to_dict() == careful.to_dict()
 
 
 # --------------------------------------------------------------------------- exact reading

@@ -179,3 +179,25 @@ def test_a_disagreement_is_caught():
     ).stdout
     with pytest.raises(AssertionError):
         compare(text.replace("area = |N| / 2 = 0.5", "area = |N| / 2 = 0.6"), good)
+
+
+def test_one_engine_behind_both():
+    """The CLI's steps are the engine's; sympy's solution takes its numbers from the engine."""
+    import trinormal.cli
+    import trinormal.steps
+    from trinormal import triangle_normal
+
+    assert trinormal.cli.steps is trinormal.steps.steps
+    rng = random.Random(7)
+    for _ in range(20):
+        pts = [tuple(Fraction(rng.randint(-9, 9), rng.randint(1, 6)) for _ in "xyz") for _ in "ABC"]
+        winding = rng.choice(["ABC", "ACB"])
+        w = trinormal.steps.working(triangle_normal(*pts, winding=winding))
+        s = solution(*pts, winding=winding)
+        assert s.a == tuple(sp.Rational(x) for x in w.a)
+        assert s.u == tuple(sp.Rational(x) for x in w.u)
+        assert s.normal == tuple(sp.Rational(x) for x in w.normal)
+        assert same(s.magnitude, sp.Rational(w.root) * sp.sqrt(w.radicand))
+        if w.unit_normal is not None:
+            for x, c in zip(s.unit_normal, w.unit_normal, strict=True):
+                assert same(x, sp.Rational(c) * sp.sqrt(w.radicand))

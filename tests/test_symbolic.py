@@ -239,8 +239,8 @@ def test_extreme_inputs_keep_exact_radicals(points):
     """
     r = triangle_normal(*points)
     s = solution(*points)
-    state = r._state
-    assert sp.Rational(state.S, state.D**4) == s.magnitude**2
+    m2 = r.exact.magnitude_squared
+    assert sp.Rational(m2.numerator, m2.denominator) == s.magnitude**2
     assert 4 * s.area**2 == s.magnitude**2
     assert s.unit_normal is not None and s.offset is not None
     assert sum(x**2 for x in s.unit_normal) == 1

@@ -27,11 +27,14 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any, NoReturn
 
-from trinormal.core import ARITHMETICS, TriangleNormal, Winding, triangle_normal
-from trinormal.display import exact_text, format_surd, radical, radical_text
+from trinormal import fields
+from trinormal.core import ARITHMETICS, TriangleNormal, triangle_normal
+from trinormal.steps import points_text, steps, working
 from trinormal.tolerances import DEFAULT_TOL
 from trinormal.validation import check_precision, check_tolerance, check_vertex, check_winding
 
+# ``steps`` is :func:`trinormal.steps.steps`, the one step-by-step engine, under the name
+# this module has always exported.
 __all__ = ["main", "steps"]
 
 _VALUE_OPTIONS = {"--winding", "--precision", "--tol", "--arithmetic"}
@@ -180,115 +183,14 @@ def _read_point(text: str, vertex: str) -> list[str]:
 # --------------------------------------------------------------------------- output
 
 
-def _vec(xs: Sequence[Fraction]) -> str:
-    return "(" + ", ".join(exact_text(x) for x in xs) + ")"
-
-
-def _term(q: Fraction) -> str:
-    """Write a number inside a formula: negative values and fractions in parentheses."""
-    text = exact_text(q)
-    return f"({text})" if q < 0 or "/" in text else text
-
-
-def steps(r: TriangleNormal, precision: int = 4) -> list[tuple[str, str]]:
-    """Write out the working for a result, step by step, with exact numbers.
-
-    Every value is exact: rationals as decimals or fractions, and |N|, the unit
-    normal and the plane offset as radicals (``√2/2``), followed by a rounded
-    decimal where the value is irrational.
-
-    Parameters
-    ----------
-    r : TriangleNormal
-        A result from :func:`trinormal.triangle_normal`.
-    precision : int, default 4
-        Decimal places for the rounded decimals.
-
-    Returns
-    -------
-    list of (str, str)
-        ``(label, working)`` pairs.
-
-    Examples
-    --------
-    >>> r = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
-    >>> for label, text in steps(r):
-    ...     print(f"{label} = {text}")
-    U = B − A = (2 − 1, 1 − 1, 1 − 1) = (1, 0, 0)
-    V = C − A = (1 − 1, 2 − 1, 2 − 1) = (0, 1, 1)
-    Nx = Uy·Vz − Uz·Vy = 0·1 − 0·1 = 0
-    Ny = Uz·Vx − Ux·Vz = 0·0 − 1·1 = -1
-    Nz = Ux·Vy − Uy·Vx = 1·1 − 0·0 = 1
-    N = (0, -1, 1)
-    |N|² = Nx² + Ny² + Nz² = 2
-    |N| = √2 ≈ 1.4142
-    area = |N| / 2 = √2/2 ≈ 0.7071
-    n̂ = N / |N| = (0, -√2/2, √2/2) ≈ (0.0000, -0.7071, 0.7071)
-    plane = n̂ · X = n̂ · A, so d = 0
-    """
-    e = r.exact
-    first, second = ("B", "C") if r.winding is Winding.ABC else ("C", "B")
-    p_first, p_second = (e.b, e.c) if r.winding is Winding.ABC else (e.c, e.b)
-    out: list[tuple[str, str]] = []
-    for name, vertex, p, vec in (("U", first, p_first, e.u), ("V", second, p_second, e.v)):
-        diffs = ", ".join(f"{_term(x)} − {_term(y)}" for x, y in zip(p, e.a, strict=True))
-        out.append((name, f"{vertex} − A = ({diffs}) = {_vec(vec)}"))
-    (ux, uy, uz), (vx, vy, vz) = e.u, e.v
-    t = _term
-    nx, ny, nz = (exact_text(x) for x in e.normal)
-    out.append(("Nx", f"Uy·Vz − Uz·Vy = {t(uy)}·{t(vz)} − {t(uz)}·{t(vy)} = {nx}"))
-    out.append(("Ny", f"Uz·Vx − Ux·Vz = {t(uz)}·{t(vx)} − {t(ux)}·{t(vz)} = {ny}"))
-    out.append(("Nz", f"Ux·Vy − Uy·Vx = {t(ux)}·{t(vy)} − {t(uy)}·{t(vx)} = {nz}"))
-    out.append(("N", _vec(e.normal)))
-    m2 = e.magnitude_squared
-    out.append(("|N|²", f"Nx² + Ny² + Nz² = {exact_text(m2)}"))
-
-    def approx(neg: bool, q: Fraction) -> str:
-        return format_surd(neg, q.numerator, q.denominator, precision)
-
-    # |N| = sqrt(S) / D², with S the integer |N|² · D⁴: splitting S (not the reduced
-    # fraction's numerator times its denominator) keeps the numbers small
-    state = r._state
-    k, m = radical(Fraction(state.S))
-    c = k / (state.D * state.D)
-    mag = radical_text(c, m)
-    suffix = "" if m == 1 else f" ≈ {approx(False, m2)}"
-    out.append(("|N|", f"{mag}{suffix}"))
-    area = radical_text(c / 2, m)
-    suffix = "" if m == 1 else f" ≈ {approx(False, m2 / 4)}"
-    out.append(("area", f"|N| / 2 = {area}{suffix}"))
-    if r.degenerate:
-        out.append(("n̂", f"undefined. Degenerate: {r.reason}"))
-        return out
-    # n_i = N_i / (c √m) = (N_i / (c m)) √m
-    unit = [radical_text(x / (c * m), m) for x in e.normal]
-    unit_text = "(" + ", ".join(unit) + ")"
-    if m != 1:
-        rounded = ", ".join(approx(x < 0, x * x / m2) for x in e.normal)
-        unit_text += f" ≈ ({rounded})"
-    out.append(("n̂", f"N / |N| = {unit_text}"))
-    dot = sum((x * y for x, y in zip(e.normal, e.a, strict=True)), Fraction(0))
-    d_text = radical_text(dot / (c * m), m)
-    if m != 1 and dot != 0:
-        d_text += f" ≈ {approx(dot < 0, dot * dot / m2)}"
-    out.append(("plane", f"n̂ · X = n̂ · A, so d = {d_text}"))
-    return out
-
-
 def _table(r: TriangleNormal, points: Sequence[str], precision: int) -> str:
+    """Write the table: the points as typed, the winding, one row per field, the verdict."""
     f = r.format(precision)
-    u_label, v_label = ("B − A", "C − A") if r.winding is Winding.ABC else ("C − A", "B − A")
     rows = [
         ("A, B, C", "   ".join("(" + ", ".join(_read_point(p, "?")) + ")" for p in points)),
         ("winding", r.winding.label + ("" if r.arithmetic == "exact" else f"   ({r.arithmetic})")),
-        (f"U = {u_label}", f["u"]),
-        (f"V = {v_label}", f["v"]),
-        ("N = U × V", f["normal"]),
-        ("|N|", f["magnitude"]),
-        ("area = |N|/2", f["area"]),
-        ("unit normal", f["unit_normal"]),
-        ("plane", f["plane"]),
     ]
+    rows += [(field.label_for(r.winding.value), f[field.key]) for field in fields.FIELDS]
     width = max(len(label) for label, _ in rows)
     lines = [f"{label.ljust(width)}   {value}" for label, value in rows]
     lines.append(f["status"])
@@ -371,7 +273,7 @@ def _render(r: TriangleNormal, args: argparse.Namespace, points: list[str], prec
             text = json.dumps(data, indent=2, ensure_ascii=True)
         return text
     if args.steps:
-        lines = [f"A = {_vec(r.exact.a)}, B = {_vec(r.exact.b)}, C = {_vec(r.exact.c)}"]
+        lines = [points_text(working(r))]
         lines.append(f"winding {r.winding.label}")
         if r.arithmetic != "exact":
             lines.append(f"(the working is exact; --arithmetic {r.arithmetic} affects the table)")

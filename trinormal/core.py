@@ -8,6 +8,14 @@ each reported float is then one correctly rounded division. Square roots use
 accurate at any scale, from 1e-300 to 1e300, with nothing overflowing on the
 way.
 
+Two paths compute the same result. The common call (plain tuples or lists of
+floats and ints, the default tolerance, exact arithmetic) takes a fast path
+written out in one function; it hands anything else (other types, strings, a
+degenerate or out-of-range triangle) to the careful path, which validates
+every input and explains degenerate triangles. The choice depends only on
+what the inputs are, and both paths build their result with the one
+constructor, ``_result``; users get results from :func:`triangle_normal`.
+
 The standard library is all this module needs.
 """
 
@@ -15,14 +23,16 @@ from __future__ import annotations
 
 import math
 import struct
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from decimal import Decimal
 from fractions import Fraction
 from functools import cached_property
 from typing import Any, Literal, NamedTuple
 
-from trinormal.display import format_surd, join_vector, plane_equation
+from trinormal import fields
+from trinormal.display import format_surd
+from trinormal.fields import Surd
 from trinormal.tolerances import DEFAULT_TOL
 from trinormal.validation import (
     _LIMIT as _INT_LIMIT,  # the size limit: the fast path takes plain ints below it
@@ -93,29 +103,10 @@ class Exact:
 def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     """Read one coordinate as an exact ratio ``(numerator, denominator)``, denominator > 0.
 
-    The rules are :func:`trinormal.validation.check_coordinate`'s: this is that
-    function under the name the core has always used.
-
-    Parameters
-    ----------
-    x : int, float, Fraction, Decimal, numpy or sympy real number, or str
-        The coordinate. A string holds a decimal (``"0.1"``, ``"-2.5e3"``) or a
-        fraction (``"1/3"``) and is read exactly.
-    name : str
-        How to name the value in an error message, such as ``"B.y"``.
-
-    Returns
-    -------
-    tuple of int
-        ``(n, d)`` with the value equal to ``n / d``.
-
-    Raises
-    ------
-    ValueError
-        NaN, an infinity, an empty or unreadable string, a zero denominator,
-        a value beyond the size limit.
-    TypeError
-        ``None``, ``bool``, complex numbers and other non-real types.
+    This is :func:`trinormal.validation.check_coordinate` under the name the
+    core has always used: the accepted types, the size limit, the return value
+    and the errors are described there. ``name`` says how to call the value in
+    an error message, such as ``"B.y"``.
 
     Examples
     --------
@@ -181,20 +172,30 @@ def _ratio_to_f32(n: int, d: int) -> float:
 # --------------------------------------------------------------------------- the result
 
 
-class _State(NamedTuple):
-    """Integers behind a result: coordinates times ``D``, N times ``D**2``."""
+class _Integers(NamedTuple):
+    """The exact values behind a result, as integers over one common denominator.
 
-    ints: tuple[int, ...]  # ax ay az bx by bz cx cy cz, each times D
-    D: int
+    Every coordinate is ``coords[i] / denominator``, U and V are
+    ``u / denominator`` and ``v / denominator``, N is ``normal / denominator**2``
+    and |N|² is ``norm_squared / denominator**4``.
+    """
+
+    coords: tuple[int, ...]  # ax ay az bx by bz cx cy cz, each times the denominator
+    denominator: int
     u: tuple[int, int, int]
     v: tuple[int, int, int]
-    n: tuple[int, int, int]
-    S: int  # |N|^2 times D**4
+    normal: tuple[int, int, int]
+    norm_squared: int  # nx² + ny² + nz²
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class TriangleNormal:
     """The normal of a triangle and everything derived from it.
+
+    Results are returned by :func:`triangle_normal`, not built directly: calling
+    ``TriangleNormal(...)`` raises :class:`TypeError`. The name is public for
+    type hints and ``isinstance`` checks. Results are immutable, compare equal
+    when every attribute below is equal, and can be copied and pickled.
 
     Attributes
     ----------
@@ -240,10 +241,24 @@ class TriangleNormal:
     unit_normal: Vec3 | None
     degenerate: bool
     plane: Plane | None
-    reason: str = ""
-    arithmetic: str = "exact"
-    tol: float = DEFAULT_TOL
-    _state: _State = field(default=None, repr=False, compare=False)  # type: ignore[assignment]
+    reason: str
+    arithmetic: str
+    tol: float
+    _integers: _Integers = field(repr=False, compare=False)
+
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        """Refuse direct construction: results come from :func:`triangle_normal`.
+
+        Examples
+        --------
+        >>> TriangleNormal((0, 0, 0), (1, 0, 0), (0, 1, 0))
+        Traceback (most recent call last):
+        ...
+        TypeError: TriangleNormal is returned by triangle_normal(a, b, c), not built directly
+        """
+        raise TypeError(
+            "TriangleNormal is returned by triangle_normal(a, b, c), not built directly"
+        )
 
     @cached_property
     def exact(self) -> Exact:
@@ -258,21 +273,21 @@ class TriangleNormal:
         >>> r.exact.normal
         (Fraction(0, 1), Fraction(0, 1), Fraction(1, 30))
         """
-        s = self._state
-        D, D2 = s.D, s.D * s.D
+        s = self._integers
+        D, D2 = s.denominator, s.denominator * s.denominator
 
         def fr(xs: Iterable[int], den: int) -> tuple[Fraction, Fraction, Fraction]:
             x, y, z = (Fraction(i, den) for i in xs)
             return x, y, z
 
         return Exact(
-            a=fr(s.ints[0:3], D),
-            b=fr(s.ints[3:6], D),
-            c=fr(s.ints[6:9], D),
+            a=fr(s.coords[0:3], D),
+            b=fr(s.coords[3:6], D),
+            c=fr(s.coords[6:9], D),
             u=fr(s.u, D),
             v=fr(s.v, D),
-            normal=fr(s.n, D2),
-            magnitude_squared=Fraction(s.S, D2 * D2),
+            normal=fr(s.normal, D2),
+            magnitude_squared=Fraction(s.norm_squared, D2 * D2),
         )
 
     @property
@@ -284,15 +299,18 @@ class TriangleNormal:
         >>> round(triangle_normal((0, 0, 0), (1, 0, 0), (1, 1, 0)).sine, 12)
         0.707106781187
         """
-        s = self._state
+        s = self._integers
         uu = sum(i * i for i in s.u)
         vv = sum(i * i for i in s.v)
         if uu == 0 or vv == 0:
             return 0.0
-        return _sqrt_ratio(s.S, uu * vv)
+        return _sqrt_ratio(s.norm_squared, uu * vv)
 
     def format(self, precision: int = 4, trim: bool = False) -> dict[str, str]:
-        """Display strings for every quantity, from the exact values.
+        """Display strings for every output field, from the exact values.
+
+        In ``float64``/``float32`` arithmetic the strings are those of the
+        computed floats, written exactly before rounding to ``precision``.
 
         Parameters
         ----------
@@ -304,8 +322,9 @@ class TriangleNormal:
         Returns
         -------
         dict of str
-            Keys ``u``, ``v``, ``normal``, ``magnitude``, ``area``,
-            ``unit_normal``, ``plane`` and ``status`` (one sentence).
+            One key per field of :data:`trinormal.fields.FIELDS` (``u``,
+            ``v``, ``normal``, ``magnitude``, ``area``, ``unit_normal``,
+            ``plane``) and ``status`` (one sentence).
 
         Examples
         --------
@@ -320,93 +339,126 @@ class TriangleNormal:
         >>> triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["unit_normal"]
         'undefined'
         """
-
-        def surd(neg: bool, num: int, den: int) -> str:
-            return format_surd(neg, num, den, precision, trim)
-
-        def rat(n: int, d: int) -> str:
-            return surd(n < 0, n * n, d * d)
-
+        spec = fields.FIELDS
         if self.arithmetic == "exact":
-            s = self._state
-            D, D2 = s.D, s.D * s.D
-            u = [rat(i, D) for i in s.u]
-            v = [rat(i, D) for i in s.v]
-            n = [rat(i, D2) for i in s.n]
-            magnitude = surd(False, s.S, D2 * D2)
-            area = surd(False, s.S, 4 * D2 * D2)
-            if not self.degenerate:
-                unit = [surd(i < 0, i * i, s.S) for i in s.n]
-                dot = sum(i * j for i, j in zip(s.n, s.ints[0:3], strict=True))
-                offset = surd(dot < 0, dot * dot, s.S * D2)
+            values = self._exact_fields()
         else:
-            u = [rat(*x.as_integer_ratio()) for x in self.u]
-            v = [rat(*x.as_integer_ratio()) for x in self.v]
-            n = [rat(*x.as_integer_ratio()) for x in self.normal]
-            magnitude = rat(*self.magnitude.as_integer_ratio())
-            area = rat(*self.area.as_integer_ratio())
-            if self.plane is not None:
-                unit = [rat(*x.as_integer_ratio()) for x in self.plane.normal]
-                offset = rat(*self.plane.offset.as_integer_ratio())
-        out = {
-            "u": join_vector(u),
-            "v": join_vector(v),
-            "normal": join_vector(n),
-            "magnitude": magnitude,
-            "area": area,
-        }
+            values = {f.key: _float_surds(f.kind, getattr(self, f.key)) for f in spec}
+        written: dict[Surd, str] = {}  # the unit normal's numbers recur in the plane
+
+        def number(x: Surd) -> str:
+            text = written.get(x)
+            if text is None:
+                text = written[x] = format_surd(x[0], x[1], x[2], precision, trim)
+            return text
+
+        out = {f.key: f.write(values[f.key], number) for f in spec}
         if self.degenerate:
-            out["unit_normal"] = "undefined"
-            out["plane"] = "undefined"
             out["status"] = f"Degenerate: {self.reason} No unit normal exists."
         else:
-            out["unit_normal"] = join_vector(unit)
-            out["plane"] = plane_equation((unit[0], unit[1], unit[2]), offset)
             out["status"] = "A proper triangle: the unit normal is defined."
         return out
 
-    def to_dict(self) -> dict[str, Any]:
-        """Every field as JSON-ready values: floats (non-finite as strings) and exact strings."""
+    def _exact_fields(self) -> dict[str, Any]:
+        """Compute the exact value of every output field, in the form its kind takes.
 
-        def num(x: float) -> float | str:
-            return x if math.isfinite(x) else str(x)
-
-        def vec(xs: Iterable[float]) -> list[float | str]:
-            return [num(x) for x in xs]
-
-        def exact_vec(xs: Iterable[Fraction]) -> list[str]:
-            return [str(x) for x in xs]
-
-        e = self.exact
+        Vectors are three :data:`trinormal.fields.Surd`, scalars one, the plane
+        ``(unit normal, offset)``; ``None`` where the value is undefined.
+        """
+        s = self._integers
+        D, D2, S = s.denominator, s.denominator * s.denominator, s.norm_squared
+        unit = plane = None
+        if not self.degenerate:
+            unit = tuple([(i < 0, i * i, S) for i in s.normal])
+            dot = sum(i * j for i, j in zip(s.normal, s.coords[0:3], strict=True))
+            plane = (unit, (dot < 0, dot * dot, S * D2))
         return {
-            "a": vec(self.a),
-            "b": vec(self.b),
-            "c": vec(self.c),
+            "u": tuple([_rational_surd(i, D) for i in s.u]),
+            "v": tuple([_rational_surd(i, D) for i in s.v]),
+            "normal": tuple([_rational_surd(i, D2) for i in s.normal]),
+            "magnitude": (False, S, D2 * D2),
+            "area": (False, S, 4 * D2 * D2),
+            "unit_normal": unit,
+            "plane": plane,
+        }
+
+    def to_dict(self) -> dict[str, Any]:
+        """Every field as JSON-ready values: floats (non-finite as strings) and exact strings.
+
+        The output fields (:data:`trinormal.fields.FIELDS`) appear under their
+        keys, between the inputs and the verdict.
+
+        Examples
+        --------
+        >>> d = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).to_dict()
+        >>> d["normal"], d["plane"], d["exact"]["area_squared"]
+        ([0.0, 0.0, 1.0], {'normal': [0.0, 0.0, 1.0], 'offset': 0.0}, '1/4')
+        """
+        e = self.exact
+        out: dict[str, Any] = {
+            "a": _json_vector(self.a),
+            "b": _json_vector(self.b),
+            "c": _json_vector(self.c),
             "winding": self.winding.value,
             "arithmetic": self.arithmetic,
             "tol": self.tol,
-            "u": vec(self.u),
-            "v": vec(self.v),
-            "normal": vec(self.normal),
-            "magnitude": num(self.magnitude),
-            "area": num(self.area),
-            "unit_normal": None if self.unit_normal is None else vec(self.unit_normal),
-            "plane": None
-            if self.plane is None
-            else {"normal": vec(self.plane.normal), "offset": num(self.plane.offset)},
-            "degenerate": self.degenerate,
-            "reason": self.reason,
-            "exact": {
-                "a": exact_vec(e.a),
-                "b": exact_vec(e.b),
-                "c": exact_vec(e.c),
-                "u": exact_vec(e.u),
-                "v": exact_vec(e.v),
-                "normal": exact_vec(e.normal),
-                "magnitude_squared": str(e.magnitude_squared),
-                "area_squared": str(e.magnitude_squared / 4),
-            },
         }
+        for f in fields.FIELDS:
+            out[f.key] = _json_value(f.kind, getattr(self, f.key))
+        out["degenerate"] = self.degenerate
+        out["reason"] = self.reason
+        out["exact"] = {
+            "a": _exact_strings(e.a),
+            "b": _exact_strings(e.b),
+            "c": _exact_strings(e.c),
+            "u": _exact_strings(e.u),
+            "v": _exact_strings(e.v),
+            "normal": _exact_strings(e.normal),
+            "magnitude_squared": str(e.magnitude_squared),
+            "area_squared": str(e.magnitude_squared / 4),
+        }
+        return out
+
+
+def _rational_surd(n: int, d: int) -> Surd:
+    """Write the rational ``n / d`` as a :data:`~trinormal.fields.Surd`."""
+    return (n < 0, n * n, d * d)
+
+
+def _float_surds(kind: str, value: Any) -> Any:
+    """Write a field's float value (by its kind) as exact :data:`~trinormal.fields.Surd`."""
+    if value is None:
+        return None
+    if kind == "scalar":
+        return _rational_surd(*value.as_integer_ratio())
+    if kind == "vector":
+        return tuple([_rational_surd(*x.as_integer_ratio()) for x in value])
+    normal, offset = value
+    return (_float_surds("vector", normal), _rational_surd(*offset.as_integer_ratio()))
+
+
+def _json_number(x: float) -> float | str:
+    return x if math.isfinite(x) else str(x)
+
+
+def _json_vector(xs: Iterable[float]) -> list[float | str]:
+    return [_json_number(x) for x in xs]
+
+
+def _json_value(kind: str, value: Any) -> Any:
+    """Write a field's float value (by its kind) as JSON-ready numbers; keep ``None``."""
+    if value is None:
+        return None
+    if kind == "scalar":
+        return _json_number(value)
+    if kind == "vector":
+        return _json_vector(value)
+    normal, offset = value
+    return {"normal": _json_vector(normal), "offset": _json_number(offset)}
+
+
+def _exact_strings(xs: Iterable[Fraction]) -> list[str]:
+    return [str(x) for x in xs]
 
 
 # --------------------------------------------------------------------------- arithmetic
@@ -438,16 +490,10 @@ def _sqrt_ratio(num: int, den: int) -> float:
     return _div(r, 1 << k)
 
 
-_common = check_common
-
-
-def _exact_state(coords: list[tuple[int, int]], winding: Winding) -> _State:
-    ints, D = _common(coords)
-    return _state_from_ints(ints, D, winding)
-
-
-def _state_from_ints(ints: tuple[int, ...], D: int, winding: Winding) -> _State:
-    ax, ay, az, bx, by, bz, cx, cy, cz = ints
+def _exact_integers(ratios: list[tuple[int, int]], winding: Winding) -> _Integers:
+    """Bring the nine ``(numerator, denominator)`` coordinates to one denominator; form U, V, N."""
+    coords, D = check_common(ratios)
+    ax, ay, az, bx, by, bz, cx, cy, cz = coords
     if winding is Winding.ABC:
         ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
     else:
@@ -455,12 +501,14 @@ def _state_from_ints(ints: tuple[int, ...], D: int, winding: Winding) -> _State:
     nx = uy * vz - uz * vy
     ny = uz * vx - ux * vz
     nz = ux * vy - uy * vx
-    return _State(ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), nx * nx + ny * ny + nz * nz)
+    return _Integers(
+        coords, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), nx * nx + ny * ny + nz * nz
+    )
 
 
-def _reason(ints: tuple[int, ...], zero_normal: bool, fmt: str = "exact") -> str:
-    """One sentence saying why a triangle is degenerate."""
-    a, b, c = ints[0:3], ints[3:6], ints[6:9]
+def _reason(coords: tuple[int, ...], zero_normal: bool, fmt: str = "exact") -> str:
+    """One sentence saying why a triangle is degenerate (``coords`` over one denominator)."""
+    a, b, c = coords[0:3], coords[3:6], coords[6:9]
     if a == b == c:
         return "A, B and C are the same point."
     for p, q, names in ((a, b, "A and B"), (a, c, "A and C"), (b, c, "B and C")):
@@ -561,21 +609,24 @@ def triangle_normal(
     ...
     ValueError: B.y is NaN
     """
+    # The common call (plain tuples or lists of floats and ints, the default tolerance,
+    # exact arithmetic) takes the fast path; it hands anything unusual to the careful one.
     if (
         arithmetic == "exact"
-        and tol is DEFAULT_TOL
+        and type(tol) is float
+        and tol == DEFAULT_TOL
         and isinstance(winding, str)
         and (winding == "ABC" or winding == "ACB")
         and type(a) in _SEQ
         and type(b) in _SEQ
         and type(c) in _SEQ
     ):
-        r = _fast_exact(a, b, c, winding == "ABC")  # type: ignore[arg-type]
+        r = _fast_exact(a, b, c, winding == "ABC")
         if r is not None:
             return r
     coords = check_vertex(a, "A") + check_vertex(b, "B") + check_vertex(c, "C")
     w = check_winding(winding)
-    tn, td = _DEFAULT_TOL_RATIO if tol is DEFAULT_TOL else check_tolerance(tol)
+    tn, td = check_tolerance(tol)
     if not isinstance(arithmetic, str) or arithmetic not in ARITHMETICS:
         raise ValueError(
             f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {_show(arithmetic)}"
@@ -591,6 +642,8 @@ _TWO53 = float(1 << 53)
 _frexp = math.frexp
 _pow2 = math.ldexp
 _new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
+_new_object = object.__new__
+_set = object.__setattr__
 #: The fast float path handles nonzero coordinates in [2**-400, 2**400): U, V, N and
 #: |N| then stay normal floats, so power-of-two scaling of them is exact.
 _LOW, _HIGH = 2.0**-400, 2.0**400
@@ -598,17 +651,15 @@ _TN, _TD = DEFAULT_TOL.as_integer_ratio()
 _tn_sq, _td_sq = _TN * _TN, _TD * _TD
 
 
-def _fast_exact(
-    a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], abc: bool
-) -> TriangleNormal | None:
+def _fast_exact(a: Any, b: Any, c: Any, abc: bool) -> TriangleNormal | None:
     """Compute the exact path for plain tuples/lists of floats and ints, with the default tol.
 
     Returns None (and the careful path takes over) for anything else: other
     types, NaN or infinities, wrong lengths, degenerate triangles, results
     beyond the float range. This is the same arithmetic as :func:`_exact` (and
-    repeats the cross product of :func:`_state_from_ints` on purpose), written out
-    in one function because most calls look like this and one more Python
-    function call costs about 8% of the time.
+    repeats the cross product of :func:`_exact_integers` on purpose), written out
+    in one function because most calls look like this and each extra Python
+    function call is a visible share of its few microseconds.
     """
     if len(a) != 3 or len(b) != 3 or len(c) != 3:
         return None
@@ -690,38 +741,30 @@ def _fast_exact(
             normal = (nx / D2, ny / D2, nz / D2)
             magnitude = r / (D2 << k)
         unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)
-        res = object.__new__(TriangleNormal)
-        object.__setattr__(
-            res,
-            "__dict__",
-            {
-                "a": a if floats else (float(a[0]), float(a[1]), float(a[2])),
-                "b": b if floats else (float(b[0]), float(b[1]), float(b[2])),
-                "c": c if floats else (float(c[0]), float(c[1]), float(c[2])),
-                "winding": Winding.ABC if abc else Winding.ACB,
-                "u": u,
-                "v": v,
-                "normal": normal,
-                "magnitude": magnitude,
-                "area": magnitude * 0.5 if scaled else r / (D * D << (k + 1)),
-                "unit_normal": unit,
-                "degenerate": False,
-                "plane": _new_tuple(Plane, (unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D))),
-                "reason": "",
-                "arithmetic": "exact",
-                "tol": DEFAULT_TOL,
-                "_state": _new_tuple(
-                    _State, (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S)
-                ),
-            },
+        return _result(
+            a if floats else (float(a[0]), float(a[1]), float(a[2])),
+            b if floats else (float(b[0]), float(b[1]), float(b[2])),
+            c if floats else (float(c[0]), float(c[1]), float(c[2])),
+            Winding.ABC if abc else Winding.ACB,
+            u,
+            v,
+            normal,
+            magnitude,
+            magnitude * 0.5 if scaled else r / (D * D << (k + 1)),
+            unit,
+            False,
+            _new_tuple(Plane, (unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D))),
+            "",
+            "exact",
+            DEFAULT_TOL,
+            _new_tuple(_Integers, (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S)),
         )
     except OverflowError:  # an int or a result beyond the float range
         return None
-    return res
 
 
 def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> TriangleNormal:
-    s = _exact_state(coords, w)
+    s = _exact_integers(coords, w)
     ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S = s
     D2 = D * D
     # degenerate <=> |N| <= tol |U||V| <=> S td² <= tn² |U|²|V|²  (all exact integers)
@@ -734,7 +777,7 @@ def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> Trian
         v = (vx / D, vy / D, vz / D)
         normal = (nx / D2, ny / D2, nz / D2)
     except OverflowError:
-        u, v, normal = _divide(s.u, D), _divide(s.v, D), _divide(s.n, D2)
+        u, v, normal = _divide(s.u, D), _divide(s.v, D), _divide(s.normal, D2)
     unit = plane = None
     reason = ""
     if S == 0:
@@ -755,7 +798,7 @@ def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> Trian
     else:
         unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)  # |unit| <= 1: no overflow
         plane = Plane(unit, _div((nx * ints[0] + ny * ints[1] + nz * ints[2]) << k, r * D))
-    return _make(
+    return _result(
         (floats[0], floats[1], floats[2]),
         (floats[3], floats[4], floats[5]),
         (floats[6], floats[7], floats[8]),
@@ -770,29 +813,59 @@ def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> Trian
         plane,
         reason,
         "exact",
-        _tol_float(tn, td),
+        tn / td,
         s,
     )
 
 
-_FIELDS = (
-    *("a", "b", "c", "winding", "u", "v", "normal", "magnitude", "area", "unit_normal"),
-    *("degenerate", "plane", "reason", "arithmetic", "tol", "_state"),
-)
+def _result(
+    a: Vec3,
+    b: Vec3,
+    c: Vec3,
+    winding: Winding,
+    u: Vec3,
+    v: Vec3,
+    normal: Vec3,
+    magnitude: float,
+    area: float,
+    unit_normal: Vec3 | None,
+    degenerate: bool,
+    plane: Plane | None,
+    reason: str,
+    arithmetic: str,
+    tol: float,
+    integers: _Integers,
+) -> TriangleNormal:
+    """Build a :class:`TriangleNormal`: the one constructor every path uses.
 
-
-def _make(*values: Any) -> TriangleNormal:
-    """Build a result without the frozen dataclass's field-by-field ``__init__`` (same fields)."""
-    r = object.__new__(TriangleNormal)
-    object.__setattr__(r, "__dict__", dict(zip(_FIELDS, values, strict=True)))
+    The arguments are the fields in order. The result is frozen: its attributes
+    are set once, here, as one dictionary (the dataclass's field-by-field
+    ``__init__`` would cost about 3 µs a call, a third of the whole calculation).
+    """
+    r = _new_object(TriangleNormal)
+    _set(
+        r,
+        "__dict__",
+        {
+            "a": a,
+            "b": b,
+            "c": c,
+            "winding": winding,
+            "u": u,
+            "v": v,
+            "normal": normal,
+            "magnitude": magnitude,
+            "area": area,
+            "unit_normal": unit_normal,
+            "degenerate": degenerate,
+            "plane": plane,
+            "reason": reason,
+            "arithmetic": arithmetic,
+            "tol": tol,
+            "_integers": integers,
+        },
+    )
     return r
-
-
-def _tol_float(tn: int, td: int) -> float:
-    return DEFAULT_TOL if (tn, td) == _DEFAULT_TOL_RATIO else tn / td
-
-
-_DEFAULT_TOL_RATIO = DEFAULT_TOL.as_integer_ratio()
 
 
 def _floating(
@@ -850,7 +923,7 @@ def _floating(
             )
     area = rnd(magnitude / 2)
     if degenerate:
-        ints = _common([x.as_integer_ratio() for x in vals])[0]
+        ints = check_common([x.as_integer_ratio() for x in vals])[0]
         nr = [x.as_integer_ratio() for x in n]
         reason = _reason(ints, all(p == 0 for p, _ in nr), fmt)
     else:
@@ -862,8 +935,7 @@ def _floating(
                 "points; use arithmetic='exact'"
             )
         plane = Plane(unit, d)
-    exact_state = _exact_state(coords, w)
-    return TriangleNormal(
+    return _result(
         (A[0], A[1], A[2]),
         (B[0], B[1], B[2]),
         (C[0], C[1], C[2]),
@@ -878,8 +950,8 @@ def _floating(
         plane,
         reason,
         fmt,
-        _tol_float(tn, td),
-        exact_state,
+        tn / td,
+        _exact_integers(coords, w),
     )
 
 
@@ -892,8 +964,8 @@ def _ldexp(x: float, e: int) -> float:
 
 def _degenerate_floats(u: Vec3, v: Vec3, n: Vec3, tn: int, td: int) -> bool:
     """Apply the sine test to float-computed U, V and N, evaluated exactly."""
-    uv, D = _common([x.as_integer_ratio() for x in (*u, *v)])
-    ni, Dn = _common([x.as_integer_ratio() for x in n])
+    uv, D = check_common([x.as_integer_ratio() for x in (*u, *v)])
+    ni, Dn = check_common([x.as_integer_ratio() for x in n])
     uu = sum(i * i for i in uv[0:3])
     vv = sum(i * i for i in uv[3:6])
     Sn = sum(i * i for i in ni)

@@ -165,8 +165,6 @@ def _raise_range_error(arr: npt.NDArray[Any], limit: int) -> None:
 
 def _check_tol(tol: float) -> float:
     """Return the tolerance as a float, checked by :func:`trinormal.validation.check_tolerance`."""
-    if tol is DEFAULT_TOL:
-        return DEFAULT_TOL
     n, d = check_tolerance(tol)
     return n / d  # 0 <= tol <= 1: no overflow
 
@@ -192,22 +190,47 @@ def _prepare(
 
 
 class _Block:
-    """Scratch arrays for one block of faces, reused block after block."""
+    """Scratch arrays for one block of ``n`` faces, reused block after block.
+
+    Attributes
+    ----------
+    corners : ndarray (3, n, 3)
+        The corners A, B, C of each face; the kernel then turns B and C into
+        the edges U = B − A and V = C − A in place.
+    corner_rows : ndarray (3, n)
+        The same memory seen as one 24-byte item per corner, for gathering.
+    normal : ndarray (n, 3)
+        N = U × V.
+    products : ndarray (n, 3)
+        Component-wise products (N·N, U·V, U·U) before they are summed.
+    norm : ndarray (n,)
+        |N|², then |N|.
+    dot : ndarray (n,)
+        U · V.
+    bound : ndarray (n,)
+        |U|²|V|², then tol²|U|²|V|² (the degeneracy bound), then |U|² − U·V.
+    temp : ndarray (n,)
+        One product at a time.
+    in_range, degenerate : ndarray of bool (n,)
+        Rows the fast arithmetic handles; rows whose sine is at most tol.
+    """
+
+    _ROWS = ("normal", "products", "norm", "dot", "bound", "temp", "in_range", "degenerate")
 
     def __init__(self, n: int) -> None:
         e = np.empty
-        self.g = e((3, n, 3))  # the corners A, B, C of each face; then A, U, V
-        self.gv = self.g.view(_ROW).reshape(3, n)  # the same memory, one item per corner
-        self.n, self.sq = e((n, 3)), e((n, 3))
-        self.ss, self.d, self.q, self.t = e(n), e(n), e(n), e(n)
-        self.b1, self.b2 = e(n, dtype=bool), e(n, dtype=bool)
+        self.corners = e((3, n, 3))
+        self.corner_rows = self.corners.view(_ROW).reshape(3, n)
+        self.normal, self.products = e((n, 3)), e((n, 3))
+        self.norm, self.dot, self.bound, self.temp = e(n), e(n), e(n), e(n)
+        self.in_range, self.degenerate = e(n, dtype=bool), e(n, dtype=bool)
 
     def view(self, n: int) -> _Block:
         """Return the first ``n`` rows of every scratch array (for the last, shorter block)."""
         out = object.__new__(_Block)
-        out.g = self.g[:, :n]
-        out.gv = self.gv[:, :n]
-        for name in ("n", "sq", "ss", "d", "q", "t", "b1", "b2"):
+        out.corners = self.corners[:, :n]
+        out.corner_rows = self.corner_rows[:, :n]
+        for name in self._ROWS:
             setattr(out, name, getattr(self, name)[:n])
         return out
 
@@ -305,10 +328,12 @@ def _face_rows(
             try:  # take checks the upper bound itself; it would wrap negative indices
                 if fb.min() < 0:
                     raise IndexError
-                np.take(rows_v, fb.T, out=w.gv)
+                np.take(rows_v, fb.T, out=w.corner_rows)
             except IndexError:
                 _raise_range_error(f, rows_v.shape[0])
-            g, n, sq, ss, d, q, t = w.g, w.n, w.sq, w.ss, w.d, w.q, w.t
+            # short local names for the block's arrays (see _Block): the kernel reads as formulas
+            g, n, sq, ss = w.corners, w.normal, w.products, w.norm
+            d, q, t = w.dot, w.bound, w.temp
             sub(g[1], g[0], out=g[1])  # U = B - A
             sub(g[2], g[0], out=g[2])  # V = C - A
             ux, uy, uz = g[1, :, 0], g[1, :, 1], g[1, :, 2]
@@ -336,14 +361,14 @@ def _face_rows(
             # (NaN fails every comparison, so it goes to the careful path too)
             careful = not (q.max() < _HI and ss.min() > _LO)
             if careful:
-                np.less(q, _HI, out=w.b1)
-                np.greater(ss, _LO, out=w.b2)
-                np.logical_and(w.b1, w.b2, out=w.b1)
+                np.less(q, _HI, out=w.in_range)
+                np.greater(ss, _LO, out=w.degenerate)
+                np.logical_and(w.in_range, w.degenerate, out=w.in_range)
             # degenerate: |N|² <= tol² |U|²|V|²
             mul(q, tol2, out=q)
-            np.less_equal(ss, q, out=w.b2)
+            np.less_equal(ss, q, out=w.degenerate)
             if deg_out is not None:
-                deg_out[s:e] = w.b2
+                deg_out[s:e] = w.degenerate
             np.sqrt(ss, out=ss)  # |N|
             if mag_out is not None:
                 mag_out[s:e] = ss
@@ -360,13 +385,13 @@ def _face_rows(
                 sub(math.pi, t, out=ang[:, 2])
             if unit_out is not None:
                 np.divide(1.0, ss, out=t)
-                if w.b2.any():
-                    t[w.b2] = 0.0
+                if w.degenerate.any():
+                    t[w.degenerate] = 0.0
                 out = unit_out[s:e]
                 for k in range(3):  # column by column: a broadcast over rows of 3 is slow
                     mul(n[:, k], t, out=out[:, k])
             if careful:
-                rows = np.flatnonzero(~w.b1)
+                rows = np.flatnonzero(~w.in_range)
                 uc, vc, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
                 at = s + rows
                 if deg_out is not None:

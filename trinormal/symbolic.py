@@ -4,7 +4,9 @@ Nothing here is typed in: the component formulas come from
 :meth:`sympy.Matrix.cross` applied to the edge vectors, the identities are
 proven by simplifying their two sides' difference to zero, and
 :func:`steps` substitutes a reader's own numbers into the derived formulas with
-exact rational arithmetic.
+exact rational arithmetic. The steps and their exact inputs are those of
+:mod:`trinormal.steps`, the engine behind the CLI's ``--steps`` too; this
+module writes them in LaTeX.
 
 The symbols are the guide's own: A = (x1, y1, z1), B = (x2, y2, z2),
 C = (x3, y3, z3), and the edges U = (Ux, Uy, Uz), V = (Vx, Vy, Vz).
@@ -33,8 +35,8 @@ from typing import Any, Literal, NamedTuple
 
 import sympy as sp
 
-from trinormal.core import Winding, triangle_normal
-from trinormal.display import radical
+from trinormal.core import TriangleNormal, Winding, triangle_normal
+from trinormal.steps import CROSS_TERMS, Working, working
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = [
@@ -311,7 +313,7 @@ class Step(NamedTuple):
 
 
 def _exact_vertex(p: Iterable[Fraction]) -> tuple[sp.Rational, sp.Rational, sp.Rational]:
-    x, y, z = (sp.Rational(f.numerator, f.denominator) for f in p)
+    x, y, z = (_rational(f) for f in p)
     return x, y, z
 
 
@@ -387,44 +389,48 @@ def solution(
     >>> solution(("0.1", 0, 0), (0, "1/3", 0), (0, 0, 0)).normal
     (0, 0, 1/30)
     """
-    r = triangle_normal(a, b, c, winding=winding, tol=tol)
-    e = r.exact
-    A, B, C = _exact_vertex(e.a), _exact_vertex(e.b), _exact_vertex(e.c)
-    P, Q = (C, B) if r.winding is Winding.ACB else (B, C)
-    u = _three(P[i] - A[i] for i in range(3))
-    v = _three(Q[i] - A[i] for i in range(3))
+    return _solve(triangle_normal(a, b, c, winding=winding, tol=tol))[0]
+
+
+def _solve(r: TriangleNormal) -> tuple[Solution, Working]:
+    """Compute :func:`solution` for a result; return it with the engine's working behind it."""
+    w = working(r)
+    A, B, C = _exact_vertex(w.a), _exact_vertex(w.b), _exact_vertex(w.c)
+    u, v = _exact_vertex(w.u), _exact_vertex(w.v)
     (ux, uy, uz), (vx, vy, vz) = EDGE_SYMBOLS
     values = {ux: u[0], uy: u[1], uz: u[2], vx: v[0], vy: v[1], vz: v[2]}
     n = _three(sp.Rational(f.subs(values)) for f in normal_components("edges"))
     dot = sum(n[i] * A[i] for i in range(3))
     unit = offset = None
-    state = r._state
-    if state.S.bit_length() <= _SYMPY_SQRT_BITS:
+    if r._integers.norm_squared.bit_length() <= _SYMPY_SQRT_BITS:
         mag = sp.sqrt(sum(x**2 for x in n))
         area = mag / 2
         if not r.degenerate:
             unit = _three(sp.radsimp(x / mag) for x in n)
             offset = sp.radsimp(dot / mag)
     else:
-        # |N| = sqrt(S) / D² with S = k² m: written as (k / D²) √m directly, because sympy
-        # would spend seconds proving a large radicand's factors prime
-        k, m = radical(Fraction(state.S))
-        D2 = state.D * state.D
+        # |N| = c·√m as the engine splits it, written directly, because sympy would
+        # spend seconds proving a large radicand's factors prime
+        m = w.radicand
         root = sp.Integer(1) if m == 1 else sp.Pow(sp.Integer(m), sp.S.Half, evaluate=False)
-        scale = sp.Rational(int(k), D2)
         # (no arithmetic on the root below: sympy would try to factor m again)
-        mag = _times_root(scale, root)
-        area = _times_root(scale / 2, root)
-        if not r.degenerate:
-            # x / (c √m) = x / (c m) · √m, the denominator rationalized as radsimp does
-            unit = _three(_times_root(x / (scale * m), root) for x in n)
-            offset = _times_root(dot / (scale * m), root)
-    return Solution(A, B, C, r.winding, u, v, n, mag, area, unit, offset, r.degenerate, r.reason)
+        mag = _times_root(_rational(w.root), root)
+        area = _times_root(_rational(w.root / 2), root)
+        if w.unit_normal is not None and w.offset is not None:
+            unit = _three(_times_root(_rational(x), root) for x in w.unit_normal)
+            offset = _times_root(_rational(w.offset), root)
+    s = Solution(A, B, C, r.winding, u, v, n, mag, area, unit, offset, r.degenerate, r.reason)
+    return s, w
 
 
-#: Up to this size of |N|²·D⁴ (in bits) sympy takes the square root itself; beyond it
-#: the root is built from trinormal's own split into a square and the rest.
+#: Up to this size of |N|²·D⁴ (in bits, D the common denominator of the coordinates)
+#: sympy takes the square root itself; beyond it the root is built from the split
+#: into a square and the rest that :mod:`trinormal.steps` makes.
 _SYMPY_SQRT_BITS = 600
+
+
+def _rational(q: Fraction) -> sp.Rational:
+    return sp.Rational(q.numerator, q.denominator)
 
 
 def _times_root(q: sp.Rational, root: sp.Expr) -> sp.Expr:
@@ -473,16 +479,16 @@ def steps(
     >>> steps((0, 0, 0), (1, 1, 1), (2, 2, 2))[-1].label
     'Degenerate'
     """
-    s = solution(a, b, c, winding=winding, tol=tol)
+    s, w = _solve(triangle_normal(a, b, c, winding=winding, tol=tol))
     A, B, C, u, v, n = s.a, s.b, s.c, s.u, s.v, s.normal
-    first, second = ("C", "B") if s.winding is Winding.ACB else ("B", "C")
     out = [
         Step(
             "Points",
             rf"A = {_tuple(A)},\quad B = {_tuple(B)},\quad C = {_tuple(C)}",
         )
     ]
-    for name, end, vec in (("U", first, u), ("V", second, v)):
+    for edge, vec in zip(w.edges, (u, v), strict=True):
+        name, end = edge.name, edge.end
         E = C if end == "C" else B
         diffs = ", ".join(f"{_tex(E[i])} - {_factor(A[i])}" for i in range(3))
         out.append(
@@ -491,15 +497,13 @@ def steps(
                 rf"\mathbf{{{name}}} = {end} - A = \left({diffs}\right) = {_tuple(vec)}",
             )
         )
-    # N_x = Uy Vz − Uz Vy, N_y = Uz Vx − Ux Vz, N_z = Ux Vy − Uy Vx (the derived order)
-    pairs = ((1, 2), (2, 0), (0, 1))
     axes = "xyz"
-    for k, (i, j) in enumerate(pairs):
+    for k, (axis, i, j) in enumerate(CROSS_TERMS):
         term = (
             f"U_{axes[i]} V_{axes[j]} - U_{axes[j]} V_{axes[i]} = "
             f"{_factor(u[i])} \\cdot {_factor(v[j])} - {_factor(u[j])} \\cdot {_factor(v[i])}"
         )
-        out.append(Step(f"N_{axes[k]}", f"N_{axes[k]} = {term} = {_tex(n[k])}"))
+        out.append(Step(f"N_{axis}", f"N_{axis} = {term} = {_tex(n[k])}"))
     out.append(Step("N", rf"\mathbf{{N}} = \mathbf{{U}} \times \mathbf{{V}} = {_tuple(n)}"))
     squares = " + ".join(f"{_base(x)}^{{2}}" for x in n)
     out.append(Step("|N|", rf"|\mathbf{{N}}| = \sqrt{{{squares}}} = {_tex(s.magnitude)}"))

@@ -21,9 +21,9 @@ from __future__ import annotations
 
 import html
 
+from trinormal import fields
 from trinormal.core import TriangleNormal, Winding
 from trinormal.display import format_vector
-from trinormal.fields import FIELDS
 
 __all__ = ["alt_text", "announcement", "readout_html", "readout_rows", "summary_text"]
 
@@ -53,7 +53,7 @@ def readout_rows(result: TriangleNormal, precision: int) -> list[dict[str, str]]
     """
     f = result.format(precision)
     w = result.winding.value
-    return [{"key": fd.key, "label": fd.label_for(w), "value": f[fd.key]} for fd in FIELDS]
+    return [{"key": fd.key, "label": fd.label_for(w), "value": f[fd.key]} for fd in fields.FIELDS]
 
 
 def announcement(result: TriangleNormal, precision: int) -> str:
@@ -127,13 +127,7 @@ def summary_text(result: TriangleNormal, precision: int) -> str:
             f"Triangle normal explorer, order {r.winding.label}, {_places(p)}",
             f"A = {format_vector(r.a, p)}  B = {format_vector(r.b, p)}  "
             f"C = {format_vector(r.c, p)}",
-            f"U = {f['u']}",
-            f"V = {f['v']}",
-            f"N = {f['normal']}",
-            f"|N| = {f['magnitude']}",
-            f"area = {f['area']}",
-            f"unit normal = {f['unit_normal']}",
-            f"plane: {f['plane']}",
+            *(fd.line(f[fd.key]) for fd in fields.FIELDS),
             f["status"],
         ]
     )
