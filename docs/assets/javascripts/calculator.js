@@ -1,7 +1,10 @@
 /*
  * The Calculator page: reads the nine coordinates, the winding and the precision,
  * computes with TrinormalCore (exact, the same strings as the Python package) on
- * every keystroke, draws the bar chart of N and keeps the state in the URL.
+ * every keystroke, draws the bar charts of N and of the unit normal and keeps the state
+ * in the URL. The bars' colours come from window.TRINORMAL_CONSTANTS (written at build
+ * time from trinormal.colors). The 3D view (explorer-site.js) follows the form through
+ * its input events and writes into it when a vertex is dragged.
  */
 (function () {
   "use strict";
@@ -19,7 +22,16 @@
   var DEFAULTS = { a: ["0", "0", "0"], b: ["1", "0", "0"], c: ["0", "1", "0"], w: "ABC", p: 4 };
   var DASH = "\u2014";
   var SVG_NS = "http://www.w3.org/2000/svg";
-  var COLORS = ["#D55E00", "#009E73", "#0072B2"]; // Okabe-Ito, as trinormal.plotting.AXIS_COLORS
+
+  /* The x, y, z colours of the package's colour code, for the page's current scheme. */
+  function axisColors() {
+    var palette = (window.TRINORMAL_CONSTANTS || {}).palette || {};
+    var dark = document.body.getAttribute("data-md-color-scheme") === "slate";
+    return ["x", "y", "z"].map(function (axis) {
+      var entry = palette[axis];
+      return entry ? (dark ? entry.dark : entry.light) : "currentColor";
+    });
+  }
 
   function $(id) {
     return document.getElementById(id);
@@ -134,22 +146,13 @@
     svg.appendChild(t);
   }
 
-  function drawChart(result) {
-    var svg = $("chart");
-    if (!result.ok) {
-      svg.setAttribute("aria-label", "Bar chart of the normal components: no chart, the input is not readable.");
-      clearChart(svg, "No chart: fix the input first.");
-      return;
-    }
-    var parts = result.out.normal.slice(1, -1).split(", ");
-    var names = ["Nx", "Ny", "Nz"];
-    var label = names
-      .map(function (n, i) {
-        return n + " = " + parts[i];
-      })
-      .join(", ");
-    svg.setAttribute("aria-label", "Bar chart of the normal components: " + label + ".");
+  /*
+   * One bar chart: values in [-1, 1] drawn as signed bars, with the printed strings beside them.
+   * names: the row labels; texts: the printed values.
+   */
+  function drawBars(svg, values, names, texts) {
     while (svg.firstChild) svg.removeChild(svg.firstChild);
+    var colors = axisColors();
     var width = 480;
     var rowH = 44;
     var left = 48;
@@ -162,7 +165,7 @@
     axis.setAttribute("y2", 3 * rowH + 4);
     axis.setAttribute("class", "tn-chart-axis");
     svg.appendChild(axis);
-    result.chart.forEach(function (value, i) {
+    values.forEach(function (value, i) {
       var y = i * rowH + 10;
       var name = document.createElementNS(SVG_NS, "text");
       name.setAttribute("x", 8);
@@ -170,13 +173,13 @@
       name.setAttribute("class", "tn-chart-label");
       name.textContent = names[i];
       svg.appendChild(name);
-      var len = Math.abs(value) * half;
+      var len = Math.min(Math.abs(value), 1) * half;
       var bar = document.createElementNS(SVG_NS, "rect");
       bar.setAttribute("x", value < 0 ? mid - len : mid);
       bar.setAttribute("y", y);
       bar.setAttribute("width", Math.max(len, 0));
       bar.setAttribute("height", 28);
-      bar.setAttribute("fill", COLORS[i]);
+      bar.setAttribute("fill", colors[i]);
       svg.appendChild(bar);
       var text = document.createElementNS(SVG_NS, "text");
       var right = value >= 0;
@@ -184,14 +187,79 @@
       text.setAttribute("y", y + 20);
       text.setAttribute("text-anchor", right ? "end" : "start");
       text.setAttribute("class", "tn-chart-value");
-      text.textContent = parts[i];
+      text.textContent = texts[i];
       svg.appendChild(text);
     });
   }
 
-  function update(pushUrl) {
+  function labelled(names, parts) {
+    return names
+      .map(function (n, i) {
+        return n + " = " + parts[i];
+      })
+      .join(", ");
+  }
+
+  function drawChart(result) {
+    var svg = $("chart");
+    if (!result.ok) {
+      svg.setAttribute("aria-label", "Bar chart of the normal components: no chart, the input is not readable.");
+      clearChart(svg, "No chart: fix the input first.");
+      return;
+    }
+    var parts = result.out.normal.slice(1, -1).split(", ");
+    var names = ["Nx", "Ny", "Nz"];
+    svg.setAttribute("aria-label", "Bar chart of the normal components: " + labelled(names, parts) + ".");
+    drawBars(svg, result.chart, names, parts);
+  }
+
+  /* The unit normal on a fixed scale from -1 to 1 (no chart when it is undefined). */
+  function drawUnitChart(result) {
+    var svg = $("chart-unit");
+    if (!svg) return;
+    var title = "Bar chart of the unit normal components: ";
+    if (!result.ok) {
+      svg.setAttribute("aria-label", title + "no chart, the input is not readable.");
+      clearChart(svg, "No chart: fix the input first.");
+      return;
+    }
+    if (result.degenerate || !result.floats || !result.floats.unit_normal) {
+      svg.setAttribute("aria-label", title + "none, the unit normal is undefined.");
+      clearChart(svg, "No unit normal: the triangle is degenerate.");
+      return;
+    }
+    var parts = result.out.unit_normal.slice(1, -1).split(", ");
+    var names = ["x", "y", "z"];
+    svg.setAttribute("aria-label", title + labelled(names, parts) + ".");
+    drawBars(svg, result.floats.unit_normal, names, parts);
+  }
+
+  /*
+   * While a vertex is dragged in the 3D view the boxes change every frame; the address then
+   * follows at most every URL_EVERY ms (and always ends on the last value), because each
+   * history update costs the browser a few milliseconds of a 16 ms frame.
+   */
+  var URL_EVERY = 100;
+  var urlTimer = 0;
+  var urlLast = 0;
+  function writeUrlSoon() {
+    var wait = urlLast + URL_EVERY - Date.now();
+    if (wait <= 0 && !urlTimer) {
+      urlLast = Date.now();
+      writeUrl(readForm());
+    } else if (!urlTimer) {
+      urlTimer = setTimeout(function () {
+        urlTimer = 0;
+        urlLast = Date.now();
+        writeUrl(readForm());
+      }, Math.max(wait, 0));
+    }
+  }
+
+  function update(pushUrl, fromView) {
     var state = readForm();
-    if (pushUrl) writeUrl(state);
+    if (pushUrl && fromView) writeUrlSoon();
+    else if (pushUrl) writeUrl(state);
     var status = $("out-status");
     var p = readPrecision(state.p);
     var result;
@@ -211,14 +279,32 @@
     status.setAttribute("data-state", !result.ok ? "error" : result.degenerate ? "degenerate" : "ok");
     setInvalid(result.ok ? null : fieldId(result.field));
     drawChart(result);
+    drawUnitChart(result);
+    lastResult = result;
+  }
+
+  var lastResult = null;
+  var themeObserver = null;
+
+  /* Redraw the charts in the other scheme's colours when the reader switches palettes. */
+  function followTheme() {
+    if (themeObserver) themeObserver.disconnect();
+    themeObserver = new MutationObserver(function () {
+      if (lastResult) {
+        drawChart(lastResult);
+        drawUnitChart(lastResult);
+      }
+    });
+    themeObserver.observe(document.body, { attributes: true, attributeFilter: ["data-md-color-scheme"] });
   }
 
   function init() {
     if (!$("tn-calculator") || !window.TrinormalCore) return;
     fillForm(stateFromUrl());
     FIELDS.concat(["precision"]).forEach(function (id) {
-      $(id).addEventListener("input", function () {
-        update(true);
+      $(id).addEventListener("input", function (event) {
+        // the 3D view marks the input events it sends while a vertex is moved
+        update(true, !!(event.detail && event.detail.fromView));
       });
     });
     $("winding").addEventListener("change", function () {
@@ -230,6 +316,7 @@
       update(true);
     });
     update(false);
+    followTheme();
     $("tn-calculator").setAttribute("data-ready", "true");
   }
 

@@ -1,0 +1,242 @@
+/*
+ * The 3D view on the site: the same ES module JupyterLab runs (assets/explorer/explorer.js),
+ * driven by a small model object instead of a Python kernel. The model's `state` is computed
+ * by TrinormalCore (exact, the same strings as the Python package); labels and colours come
+ * from window.TRINORMAL_CONSTANTS, which the build writes from the package.
+ *
+ * Mount points:
+ *   #tn-view inside the calculator: two-way synced with the form (typing moves the view,
+ *     dragging a vertex or pressing keys writes the inputs, the results and the URL).
+ *   .tn-explorer-live on the explorer notebook's page: a standalone view whose initial
+ *     values are in its data-explorer attribute (JSON).
+ */
+const BUNDLE = new URL("../explorer/explorer.js", import.meta.url).href;
+const KEYS = ["a", "b", "c", "winding", "precision"];
+
+function constants() {
+  return window.TRINORMAL_CONSTANTS || { fields: [], palette: {}, precision: { min: 0, max: 15 }, view: {} };
+}
+
+/** The `state` the view draws and prints, from the exact core (see the view contract). */
+export function computeState(a, b, c, winding, precision, maxPrecision) {
+  const C = constants();
+  const p = Number(precision);
+  const range = { ...(C.precision || { min: 0, max: 15 }) };
+  if (maxPrecision !== undefined) range.max = Math.min(range.max, maxPrecision);
+  if (!/^\s*\d{1,2}\s*$/.test(String(precision)) || p < range.min || p > range.max) {
+    const error = `Precision must be a whole number from ${range.min} to ${range.max}, got ${JSON.stringify(String(precision))}`;
+    return { ok: false, error, status: error, readout: readoutRows(null, winding), summary: error };
+  }
+  const r = window.TrinormalCore.compute(a, b, c, winding, p);
+  if (!r.ok) return { ok: false, error: r.status, status: r.status, field: r.field, readout: readoutRows(null, winding), summary: r.status };
+  const f = r.floats;
+  return {
+    ok: true,
+    error: null,
+    points: f.points,
+    u: f.u,
+    v: f.v,
+    normal: f.normal,
+    unit_normal: f.unit_normal,
+    degenerate: r.degenerate,
+    status: r.status,
+    readout: readoutRows(r.out, winding),
+    summary: r.degenerate ? r.status : `N = ${r.out.normal}, area ${r.out.area}.`,
+  };
+}
+
+function readoutRows(out, winding) {
+  return constants().fields.map((field) => ({
+    key: field.key,
+    label: winding === "ACB" ? field.label_acb : field.label,
+    value: out ? out[field.key] : "—",
+  }));
+}
+
+/**
+ * A model with anywidget's API (get, set, save_changes, on, off). `state` follows a, b, c,
+ * winding and precision. `onSave(changes)` receives what the view wrote ({key: value}).
+ */
+export function createModel(initial, onSave, maxPrecision) {
+  const C = constants();
+  const view = C.view || {};
+  const data = {
+    a: ["0", "0", "0"],
+    b: ["1", "0", "0"],
+    c: ["0", "1", "0"],
+    winding: "ABC",
+    precision: 4,
+    step: view.step || "0.1",
+    bounds: view.bounds || [-5, 5],
+    show_parallelogram: false,
+    show_unit_normal: false,
+    show_readout: true,
+    palette: C.palette || {},
+    ...initial,
+  };
+  const listeners = new Map();
+  let dirty = {};
+
+  function emit(key) {
+    for (const cb of [...(listeners.get("change:" + key) || [])]) cb({ name: key, new: data[key] });
+  }
+
+  function same(x, y) {
+    return JSON.stringify(x) === JSON.stringify(y);
+  }
+
+  function recompute() {
+    data.state = computeState(data.a, data.b, data.c, data.winding, data.precision, maxPrecision);
+    emit("state");
+  }
+
+  /** Change values without reporting them back to the host (the host's own updates). */
+  function update(values) {
+    const changed = Object.keys(values).filter((k) => !same(data[k], values[k]));
+    for (const k of changed) data[k] = values[k];
+    for (const k of changed) emit(k);
+    if (changed.some((k) => KEYS.includes(k))) recompute();
+    return changed.length > 0;
+  }
+
+  data.state = computeState(data.a, data.b, data.c, data.winding, data.precision, maxPrecision);
+  return {
+    get: (key) => data[key],
+    set(key, value) {
+      if (same(data[key], value)) return;
+      data[key] = value;
+      dirty[key] = value;
+      emit(key);
+      if (KEYS.includes(key)) recompute();
+    },
+    save_changes() {
+      const changes = dirty;
+      dirty = {};
+      if (Object.keys(changes).length && onSave) onSave(changes);
+    },
+    on(event, cb) {
+      if (!listeners.has(event)) listeners.set(event, new Set());
+      listeners.get(event).add(cb);
+    },
+    off(event, cb) {
+      if (!event) listeners.clear();
+      else if (!cb) listeners.delete(event);
+      else listeners.get(event)?.delete(cb);
+    },
+    update,
+  };
+}
+
+let bundle = null;
+function loadView() {
+  if (!bundle) bundle = import(BUNDLE).then((m) => m.default);
+  return bundle;
+}
+
+// ------------------------------------------------------------------ the calculator
+
+const FORM = { a: ["ax", "ay", "az"], b: ["bx", "by", "bz"], c: ["cx", "cy", "cz"] };
+
+function readCalculator() {
+  const $ = (id) => document.getElementById(id);
+  const values = {};
+  for (const [key, ids] of Object.entries(FORM)) values[key] = ids.map((id) => $(id).value);
+  values.winding = $("winding").value;
+  values.precision = $("precision").value;
+  return values;
+}
+
+/** The bounds a drag may use: the view's default range, widened to hold the typed values. */
+function boundsFor(values) {
+  const base = (constants().view || {}).bounds || [-5, 5];
+  let [lo, hi] = base;
+  for (const key of ["a", "b", "c"]) {
+    for (const s of values[key]) {
+      const x = Number(s);
+      if (Number.isFinite(x)) [lo, hi] = [Math.min(lo, Math.floor(x)), Math.max(hi, Math.ceil(x))];
+    }
+  }
+  return [lo, hi];
+}
+
+async function mountCalculator(host) {
+  const calc = document.getElementById("tn-calculator");
+  const values = readCalculator();
+  const model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
+    // the view moved a vertex or flipped the order: write the form, let the calculator update
+    let last = null;
+    for (const [key, value] of Object.entries(changes)) {
+      if (FORM[key]) {
+        FORM[key].forEach((id, i) => {
+          const input = document.getElementById(id);
+          if (input.value !== value[i]) {
+            input.value = value[i];
+            last = input;
+          }
+        });
+      } else if (key === "winding") {
+        const select = document.getElementById("winding");
+        select.value = value;
+        select.dispatchEvent(new Event("change", { bubbles: true }));
+      }
+    }
+    if (last) last.dispatchEvent(new CustomEvent("input", { bubbles: true, detail: { fromView: true } }));
+  }, Number(document.getElementById("precision").max));
+  const sync = () => {
+    const now = readCalculator();
+    model.update({ ...now, bounds: boundsFor(now) });
+  };
+  calc.addEventListener("input", sync);
+  calc.addEventListener("change", sync);
+  calc.addEventListener("click", (e) => {
+    if (e.target.closest("#tn-flip")) sync();
+  });
+  const view = await loadView();
+  host.textContent = "";
+  const cleanup = view.render({ model, el: host });
+  host.dataset.ready = "true";
+  return cleanup;
+}
+
+// ------------------------------------------------------------------ the explorer notebook page
+
+async function mountStandalone(host) {
+  let initial = {};
+  try {
+    initial = JSON.parse(host.dataset.explorer || "{}");
+  } catch (err) {
+    initial = {};
+  }
+  const model = createModel(initial, null);
+  const view = await loadView();
+  const fallback = host.querySelector(".tn-explorer-fallback");
+  if (fallback) fallback.hidden = true;
+  const mount = document.createElement("div");
+  mount.className = "tn-explorer-mount";
+  host.appendChild(mount);
+  const cleanup = view.render({ model, el: mount });
+  host.dataset.ready = "true";
+  return cleanup;
+}
+
+let cleanups = [];
+function init() {
+  cleanups.forEach((f) => f && f());
+  cleanups = [];
+  if (!window.TrinormalCore || !window.TRINORMAL_CONSTANTS) return;
+  const view = document.getElementById("tn-view");
+  if (view && document.getElementById("tn-calculator")) {
+    mountCalculator(view).then((f) => cleanups.push(f), (err) => console.error(err));
+  }
+  for (const host of document.querySelectorAll(".tn-explorer-live")) {
+    mountStandalone(host).then((f) => cleanups.push(f), (err) => console.error(err));
+  }
+}
+
+if (window.document$ && typeof window.document$.subscribe === "function") {
+  window.document$.subscribe(init);
+} else if (document.readyState === "loading") {
+  document.addEventListener("DOMContentLoaded", init);
+} else {
+  init();
+}

@@ -1,0 +1,54 @@
+// Build the 3D view into one ES module for JupyterLab (anywidget) and the site:
+//   node build.mjs [OUTDIR]      (default: ../../trinormal/explorer/static)
+// Writes explorer.js (three.js bundled in, CSS as a string, minified, deterministic) and
+// THIRD_PARTY_LICENSES.txt (three.js's licence, copied from node_modules, with its version).
+import { readFileSync, writeFileSync, mkdirSync } from "node:fs";
+import { dirname, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { build, transform } from "esbuild";
+
+const here = dirname(fileURLToPath(import.meta.url));
+const out = resolve(process.argv[2] || join(here, "../../trinormal/explorer/static"));
+mkdirSync(out, { recursive: true });
+
+// src/*.css: minified by esbuild, then bundled as a string (src/style.js injects it)
+const cssAsText = {
+  name: "css-as-text",
+  setup(b) {
+    b.onLoad({ filter: /\.css$/ }, async (args) => {
+      const { code } = await transform(readFileSync(args.path, "utf8"), { loader: "css", minify: true });
+      return { contents: code.trim(), loader: "text" };
+    });
+  },
+};
+
+const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.json"), "utf8"));
+
+await build({
+  absWorkingDir: here,
+  entryPoints: ["src/index.js"],
+  outfile: join(out, "explorer.js"),
+  bundle: true,
+  format: "esm",
+  target: "es2020",
+  minify: true,
+  legalComments: "none", // the licence travels in THIRD_PARTY_LICENSES.txt next to the bundle
+  charset: "utf8",
+  plugins: [cssAsText],
+  sourcemap: false,
+  metafile: false,
+  logLevel: "warning",
+  banner: {
+    js: `/* trinormal 3D view. Bundles three.js ${three.version} (MIT licence, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
+  },
+});
+
+const licence = readFileSync(join(here, "node_modules/three/LICENSE"), "utf8").replace(/\r\n/g, "\n");
+writeFileSync(
+  join(out, "THIRD_PARTY_LICENSES.txt"),
+  "explorer.js bundles the following third-party software.\n\n" +
+    `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
+    licence.trimEnd() +
+    "\n",
+);
+console.log(`built ${join(out, "explorer.js")} with three ${three.version}`);

@@ -1,0 +1,431 @@
+/*
+ * The trinormal 3D view: an anywidget-style module, `export default { render }`.
+ *
+ * render({ model, el }) draws the triangle described by the model into `el` and returns a
+ * cleanup function. It uses only model.get / set / save_changes / on / off, so the same
+ * module runs in JupyterLab (anywidget) and on the site (a small model fed by the site's
+ * exact core). The host computes every printed string (`state`); the view draws, and writes
+ * a vertex's coordinates (`a`, `b`, `c`) only when the user moves it.
+ */
+import { Vector3 } from "three";
+import { Drawing } from "./geometry.js";
+import { setupInteraction } from "./interaction.js";
+import { LabelLayer } from "./labels.js";
+import { niceCeil, parsePoint, powerOfTen, readStep, tickText } from "./numbers.js";
+import { createReadout } from "./readout.js";
+import { createStage, DEFAULT_DIRECTION } from "./scene.js";
+import { injectStyle } from "./style.js";
+import { isDark, roleColor, surface, watchTheme } from "./theme.js";
+
+const KEYS = ["a", "b", "c", "winding", "step", "bounds", "show_parallelogram", "show_unit_normal", "show_readout", "palette", "state"];
+const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
+const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
+
+/**
+ * Where the camera first looks from: the usual oblique view, unless it sees the triangle
+ * nearly edge-on or N nearly head-on; then the one of 24 views around the scene that sees
+ * the front face at about 50 degrees, so the faces, N and the parallelogram can all be seen.
+ */
+function startDirection(normal) {
+  if (!(normal.length() > 0)) return DEFAULT_DIRECTION.clone();
+  const n = normal.clone().normalize();
+  const cos = DEFAULT_DIRECTION.dot(n);
+  if (cos >= 0.35 && cos <= 0.8) return DEFAULT_DIRECTION.clone();
+  // aim for cos(angle to N) = 0.65: the front face well in view, N still clearly an arrow
+  let best = DEFAULT_DIRECTION.clone();
+  let miss = Math.abs(DEFAULT_DIRECTION.dot(n) - 0.65);
+  for (const elevation of [20, 35, 55]) {
+    for (let k = 0; k < 8; k++) {
+      const az = ((k * 45 + 37) * Math.PI) / 180;
+      const el = (elevation * Math.PI) / 180;
+      const d = new Vector3(Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el));
+      const m = Math.abs(d.dot(n) - 0.65);
+      if (m < miss - 1e-9) [best, miss] = [d, m];
+    }
+  }
+  return best;
+}
+
+function element(tag, className, text) {
+  const e = document.createElement(tag);
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+function button(text, label, onClick) {
+  const b = element("button", "tnx-button", text);
+  b.type = "button";
+  if (label) {
+    b.setAttribute("aria-label", label);
+    b.title = label;
+  }
+  b.addEventListener("click", onClick);
+  return b;
+}
+
+function render({ model, el }) {
+  injectStyle(el.ownerDocument || document);
+  const root = element("div", "tnx-root");
+  const main = element("div", "tnx-main");
+  const toolbar = element("div", "tnx-toolbar");
+  toolbar.setAttribute("role", "toolbar");
+  toolbar.setAttribute("aria-label", "3D view");
+  const stageEl = element("div", "tnx-stage");
+  const message = element("p", "tnx-message");
+  message.hidden = true;
+  const legend = element("p", "tnx-legend");
+  legend.hidden = true;
+  const hint = element(
+    "p",
+    "tnx-hint",
+    "Drag empty space to turn the view, scroll or pinch to zoom; x, y, z look along an axis. " +
+      "Drag A, B or C to move a point, or Tab to it and press the arrow keys (x, y) or " +
+      "Page Up/Page Down (z).",
+  );
+  main.append(toolbar, stageEl, hint);
+  root.appendChild(main);
+  el.appendChild(root);
+  const readout = createReadout(root);
+
+  let dark = isDark();
+  const get = (key) => model.get(key);
+  const colors = (role) => {
+    const s = surface(dark);
+    switch (role) {
+      case "edge":
+      case "paraEdge":
+      case "ring":
+      case "unit":
+        return s.text;
+      case "para":
+        return roleColor(get("palette"), "N", dark);
+      case "line":
+        return s.line;
+      default:
+        return roleColor(get("palette"), role, dark);
+    }
+  };
+
+  let stage;
+  try {
+    stage = createStage(stageEl, { onRender: () => labels.layout(stage.camera, stage.size()) });
+  } catch (err) {
+    stageEl.remove();
+    hint.remove();
+    main.appendChild(
+      element("p", "tnx-nogl", "This browser cannot draw the 3D view (WebGL is not available). The readout still follows the values."),
+    );
+    const show = () => {
+      readout.show(true);
+      readout.update(get("state"));
+    };
+    show();
+    model.on("change:state", show);
+    return () => {
+      model.off("change:state", show);
+      root.remove();
+    };
+  }
+  stageEl.append(message, legend);
+  const labels = new LabelLayer(stageEl);
+  const drawing = new Drawing(stage.scene);
+
+  // ------------------------------------------------------------------ toolbar
+  const flip = button("", null, () => {
+    const next = get("winding") === "ACB" ? "ABC" : "ACB";
+    written.winding = next;
+    model.set("winding", next);
+    model.save_changes();
+  });
+  const toggle = (key, text) =>
+    button(text, null, () => {
+      model.set(key, !get(key));
+      model.save_changes();
+    });
+  const para = toggle("show_parallelogram", "Parallelogram");
+  const unit = toggle("show_unit_normal", "N/|N|");
+  unit.setAttribute("aria-label", "Unit normal N/|N|");
+  unit.title = "Show the unit normal N/|N|";
+  para.title = "Show the parallelogram on U and V (area |N|)";
+  toolbar.append(
+    button("Reset view", "Reset the camera", () => stage.reset()),
+    button("x", "View along the x axis", () => stage.along("x")),
+    button("y", "View along the y axis", () => stage.along("y")),
+    button("z", "View along the z axis", () => stage.along("z")),
+    flip,
+    para,
+    unit,
+  );
+
+  // ------------------------------------------------------------------ vertex labels
+  const vertexEls = {};
+  for (const name of "ABC") {
+    const item = labels.label("v:" + name, "vertex", name);
+    const e = item.el;
+    e.dataset.vertex = name;
+    e.tabIndex = 0;
+    e.setAttribute("role", "button");
+    e.setAttribute("aria-roledescription", "movable point");
+    e.setAttribute("aria-keyshortcuts", "ArrowLeft ArrowRight ArrowUp ArrowDown PageUp PageDown");
+    vertexEls[name] = e;
+  }
+  for (const [id, text] of [["U", "U"], ["V", "V"], ["N", "N"], ["unit", "N/|N|"]]) labels.label("arrow:" + id, "arrow", text);
+  for (const a of "xyz") labels.label("axis:" + a, "axis", a);
+
+  // ------------------------------------------------------------------ geometry state
+  let frame = null; // { S, offset: Vector3, includeOrigin, radius, L, t }
+  let dragging = false;
+  let lastGood = null; // last drawable points (data floats)
+  const written = {}; // what the view itself last wrote, per key
+  let hostMoved = false; // the host (not a drag or a key here) changed the triangle
+  let display = null; // display-unit points of the last drawing
+
+  function dataPoints() {
+    const pts = [get("a"), get("b"), get("c")].map(parsePoint);
+    if (pts.every(Boolean)) return pts;
+    const st = get("state");
+    if (st && st.ok && st.points) {
+      const fromState = ["A", "B", "C"].map((k) => st.points[k]);
+      if (fromState.every((p) => Array.isArray(p) && p.every(Number.isFinite))) return fromState;
+    }
+    return lastGood;
+  }
+
+  function computeFrame(pts, winding) {
+    const ext = Math.max(...pts.flat().map(Math.abs));
+    const edges = [
+      [0, 1],
+      [0, 2],
+      [1, 2],
+    ].map(([i, j]) => Math.hypot(...pts[i].map((x, k) => x - pts[j][k])));
+    const size = Math.max(...edges);
+    const includeOrigin = size === 0 ? true : ext <= 6 * size;
+    const R = includeOrigin ? ext || size || 1 : size;
+    const S = powerOfTen(R);
+    const offset = includeOrigin
+      ? new Vector3()
+      : new Vector3(...[0, 1, 2].map((k) => Number(((pts[0][k] + pts[1][k] + pts[2][k]) / 3).toPrecision(3))));
+    const disp = pts.map((p) => new Vector3(p[0] - offset.x, p[1] - offset.y, p[2] - offset.z).divideScalar(S));
+    const extD = Math.max(...disp.map((p) => Math.max(Math.abs(p.x), Math.abs(p.y), Math.abs(p.z))));
+    const t = niceCeil(Math.max(extD, 1e-9) / 1.5); // a labelled tick every t, grid lines every t/2
+    const L = t * (Math.floor(extD / t + 1e-9) + 1.5);
+    // the framed box: the points, the tip of N as drawn, and the origin when it is in view
+    const box = disp.slice();
+    const [a, b, c] = disp;
+    const n = new Vector3().crossVectors(b.clone().sub(a), c.clone().sub(a));
+    const lMax = Math.max(a.distanceTo(b), a.distanceTo(c), b.distanceTo(c));
+    if (n.length() > 0) box.push(a.clone().add(b).add(c).divideScalar(3).add(n.setLength(Math.min(n.length(), 1.4 * lMax))));
+    if (includeOrigin) box.push(new Vector3());
+    const lo = box[0].clone();
+    const hi = box[0].clone();
+    for (const p of box) {
+      lo.min(p);
+      hi.max(p);
+    }
+    const center = lo.clone().add(hi).multiplyScalar(0.5);
+    const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+    return { S, offset, includeOrigin, radius, center, L, t, start: startDirection(winding === "ACB" ? n.negate() : n) };
+  }
+
+  function applyFrame(next, moveCamera) {
+    frame = next;
+    stage.frameSphere(next.center, next.radius * 1.05, moveCamera, next.start);
+    const r = frame.radius * 0.014;
+    const ticks = drawing.setAxes(next.L, next.t, r * 0.5, colors, next.includeOrigin);
+    drawing.setGrid(next.L, next.t, surface(dark), next.includeOrigin);
+    labels.hide("tick:");
+    ticks.forEach((tk, i) => {
+      const id = `tick:${tk.axis}:${i}`;
+      labels.label(id, "tick", tickText(tk.value * next.S));
+      labels.place(id, tk.position, { offset: 16, angle: tk.axis === "z" ? 0 : -Math.PI / 2 });
+    });
+    for (const a of "xyz") {
+      const tip = new Vector3(a === "x" ? next.L : 0, a === "y" ? next.L : 0, a === "z" ? next.L : 0);
+      labels.place("axis:" + a, tip, { away: new Vector3(), offset: 18, visible: next.includeOrigin });
+      labels.items.get("axis:" + a).el.style.color = colors(a);
+    }
+  }
+
+  function sameScale(a, b) {
+    return a && b && a.S === b.S && a.includeOrigin === b.includeOrigin && a.offset.equals(b.offset) &&
+      b.radius < a.radius * 1.6 && b.radius > a.radius / 2.5;
+  }
+
+  function readoutValue(key) {
+    const st = get("state");
+    const row = st && st.ok !== false && Array.isArray(st.readout) ? st.readout.find((r) => r.key === key) : null;
+    return row ? row.value : null;
+  }
+
+  function sync() {
+    const pts = dataPoints();
+    const st = get("state") || {};
+    const winding = get("winding") === "ACB" ? "ACB" : "ABC";
+    flip.textContent = `⇄ ${ORDER[winding]}`;
+    flip.setAttribute("aria-label", `Flip the order of the vertices, now ${ORDER[winding]}`);
+    flip.title = flip.getAttribute("aria-label");
+    para.setAttribute("aria-pressed", String(!!get("show_parallelogram")));
+    unit.setAttribute("aria-pressed", String(!!get("show_unit_normal")));
+    readout.show(!!get("show_readout"));
+    // beside the view when the readout is there (the view stays short enough for a projector)
+    const hintHome = get("show_readout") ? readout.el : main;
+    if (hint.parentNode !== hintHome) hintHome.appendChild(hint);
+    if (get("show_readout")) readout.update(st);
+    const problem = st.ok === false ? st.error || st.status : st.degenerate ? st.status : "";
+    message.hidden = !problem;
+    message.textContent = problem || "";
+    message.dataset.state = st.ok === false ? "error" : "degenerate";
+    for (const name of "ABC") {
+      const values = get(name.toLowerCase()) || [];
+      vertexEls[name].setAttribute(
+        "aria-label",
+        `Point ${name} at (${values.join(", ")}). Arrow keys move x and y, Page Up and Page Down move z.`,
+      );
+    }
+    if (!pts) {
+      drawing.root.visible = false;
+      stage.requestRender();
+      return;
+    }
+    drawing.root.visible = true;
+    lastGood = pts;
+    if (!dragging) {
+      const next = computeFrame(pts, winding);
+      if (!frame) applyFrame(next, true);
+      else if (hostMoved && stage.atHome() && next.start.angleTo(frame.start) > 0.01) {
+        applyFrame(next, true); // a new triangle from the host: face it, unless the user turned the view
+      } else if (!sameScale(frame, next)) applyFrame(next, "keep");
+      else {
+        if (next.L !== frame.L || next.t !== frame.t) applyFrame({ ...next, center: frame.center, radius: frame.radius }, false);
+        const shown = pts.map((p) => new Vector3(p[0] - frame.offset.x, p[1] - frame.offset.y, p[2] - frame.offset.z).divideScalar(frame.S));
+        if (!stage.inView(shown)) applyFrame(next, "keep"); // a typed value left the view: step back
+      }
+    }
+    hostMoved = false;
+    const { S, offset } = frame;
+    const [A, B, C] = pts.map((p) => new Vector3(p[0] - offset.x, p[1] - offset.y, p[2] - offset.z).divideScalar(S));
+    const [P, Q] = winding === "ABC" ? [B, C] : [C, B];
+    const centroid = A.clone().add(B).add(C).divideScalar(3);
+    const U = P.clone().sub(A);
+    const V = Q.clone().sub(A);
+    const n = new Vector3().crossVectors(U, V);
+    const nLen = n.length();
+    const degenerate = !!st.degenerate || !(nLen > 0) || !Number.isFinite(nLen);
+    const lMax = Math.max(U.length(), V.length(), 1e-9);
+    let nDraw = new Vector3();
+    if (!degenerate) nDraw = n.clone().setLength(Math.min(Math.max(nLen, 0.6 * lMax), 1.4 * lMax));
+    let unitDraw = null;
+    if (!degenerate && get("show_unit_normal")) {
+      unitDraw = n.clone().setLength(Math.min(Math.max(1 / S, 0.35 * lMax), 2 * lMax));
+    }
+    const r = frame.radius * 0.014;
+    const g = { A, B, C, P, Q, centroid, nDraw, unitDraw, degenerate, showParallelogram: !!get("show_parallelogram"), r };
+    drawing.update(g);
+    display = { A, B, C };
+
+    // labels: vertices beyond their points (and the arrow heads there), arrows beside their shafts
+    for (const name of "ABC") {
+      labels.place("v:" + name, g[name], { away: centroid, offset: 30, angle: VERTEX_ANGLE[name] });
+      vertexEls[name].style.color = colors(name);
+    }
+    labels.place("arrow:U", A.clone().lerp(P, 0.5), { away: centroid, offset: 20, visible: U.length() > 0 });
+    labels.place("arrow:V", A.clone().lerp(Q, 0.5), { away: centroid, offset: 20, visible: V.length() > 0 });
+    const nTip = centroid.clone().add(nDraw);
+    labels.place("arrow:N", nTip, { away: centroid, offset: 20, angle: 0, visible: !degenerate });
+    labels.place("arrow:unit", unitDraw ? centroid.clone().add(unitDraw) : null, {
+      away: centroid, offset: 20, angle: Math.PI, visible: !!unitDraw,
+    });
+    for (const [id, role] of [["U", "U"], ["V", "V"], ["N", "N"], ["unit", "unit"]]) {
+      labels.items.get("arrow:" + id).el.style.color = colors(role);
+    }
+    const magnitude = readoutValue("magnitude");
+    const area = readoutValue("area");
+    const showAreas = g.showParallelogram && !degenerate && magnitude !== null && area !== null;
+    legend.hidden = !showAreas;
+    if (showAreas) legend.textContent = `Parallelogram on U and V: area |N| = ${magnitude}. Triangle: area |N|/2 = ${area}.`;
+    stage.requestRender();
+  }
+
+  function repaint() {
+    root.classList.toggle("tnx-dark", dark);
+    stage.setBackground(surface(dark).background);
+    drawing.paint(colors);
+    if (frame) {
+      drawing.setGrid(frame.L, frame.t, surface(dark), frame.includeOrigin); // the grid's colours
+      for (const a of "xyz") labels.items.get("axis:" + a).el.style.color = colors(a);
+    }
+    sync();
+  }
+
+  const interaction = setupInteraction({
+    container: stageEl,
+    canvas: stage.canvas,
+    camera: stage.camera,
+    scale: () => frame?.S ?? 1,
+    grid: () => readStep(get("step")),
+    bounds: () => get("bounds"),
+    values: (name) => (get(name.toLowerCase()) || ["", "", ""]).map(String),
+    position: (name) => (display ? display[name] : null),
+    write(name, strings) {
+      written[name.toLowerCase()] = strings.join("\u0000");
+      model.set(name.toLowerCase(), strings);
+      model.save_changes();
+      flush();
+    },
+    dragging(on) {
+      dragging = on;
+      if (!on) sync();
+    },
+  });
+
+  // changes are gathered and drawn once; a drag draws in the frame that moved the vertex
+  let dirty = false;
+  const onChange = () => {
+    if (dirty) return;
+    dirty = true;
+    queueMicrotask(() => {
+      if (!dirty) return;
+      dirty = false;
+      sync();
+    });
+  };
+  const flush = () => {
+    dirty = false;
+    sync();
+    stage.renderNow();
+  };
+  const onPalette = () => repaint();
+  const handlers = {};
+  for (const key of KEYS) {
+    handlers[key] = key === "palette" ? onPalette : onChange;
+    if (key === "a" || key === "b" || key === "c" || key === "winding") {
+      handlers[key] = () => {
+        const now = [].concat(get(key)).join("\u0000");
+        if (written[key] !== now) hostMoved = true;
+        onChange();
+      };
+    }
+    model.on("change:" + key, handlers[key]);
+  }
+  const stopTheme = watchTheme((d) => {
+    dark = d;
+    repaint();
+  });
+
+  stage.resize();
+  repaint();
+
+  return () => {
+    for (const key of KEYS) model.off("change:" + key, handlers[key]);
+    stopTheme();
+    interaction();
+    labels.dispose();
+    drawing.dispose();
+    stage.dispose();
+    readout.dispose();
+    root.remove();
+  };
+}
+
+export default { render };

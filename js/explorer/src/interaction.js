@@ -1,0 +1,170 @@
+/*
+ * Moving a vertex: by dragging its label or its point (in the plane through it that faces
+ * the camera), or with the keyboard on its focused label. Values are snapped to the grid
+ * (`step`) and clamped to `bounds`; an axis the user did not move keeps its exact text.
+ * Dragging anywhere else is left to the orbit controls.
+ */
+import { Plane, Raycaster, Vector2, Vector3 } from "three";
+import { gridIndex, gridText, onGridAt, parseCoordinate } from "./numbers.js";
+
+const PICK_PX = 22;
+const KEYS = {
+  ArrowRight: [0, 1],
+  ArrowLeft: [0, -1],
+  ArrowUp: [1, 1],
+  ArrowDown: [1, -1],
+  PageUp: [2, 1],
+  PageDown: [2, -1],
+};
+
+/**
+ * view: { container, canvas, camera, size(), scale(), grid(), bounds(), values(name),
+ *         position(name) -> display Vector3, write(name, strings), dragging(bool) }
+ */
+export function setupInteraction(view) {
+  const raycaster = new Raycaster();
+  const ndc = new Vector2();
+  const plane = new Plane();
+  let drag = null;
+  let pending = null;
+  let frame = 0;
+
+  function rayAt(clientX, clientY) {
+    const rect = view.canvas.getBoundingClientRect();
+    ndc.set(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    raycaster.setFromCamera(ndc, view.camera);
+    return raycaster.ray;
+  }
+
+  function hitPlane(clientX, clientY) {
+    return rayAt(clientX, clientY).intersectPlane(plane, new Vector3());
+  }
+
+  /** The vertex whose point is within PICK_PX of the pointer, nearest first. */
+  function pick(clientX, clientY) {
+    const rect = view.canvas.getBoundingClientRect();
+    let best = null;
+    let bestD = PICK_PX;
+    for (const name of "ABC") {
+      const p = view.position(name);
+      if (!p) continue;
+      const q = p.clone().project(view.camera);
+      const x = rect.left + ((q.x + 1) / 2) * rect.width;
+      const y = rect.top + ((1 - q.y) / 2) * rect.height;
+      const d = Math.hypot(x - clientX, y - clientY);
+      if (d < bestD) [best, bestD] = [name, d];
+    }
+    return best;
+  }
+
+  function start(name, event) {
+    const origin = view.position(name);
+    if (!origin) return false;
+    const normal = view.camera.getWorldDirection(new Vector3());
+    plane.setFromNormalAndCoplanarPoint(normal, origin);
+    const hit = hitPlane(event.clientX, event.clientY);
+    if (!hit) return false;
+    const strings = view.values(name).slice();
+    drag = {
+      name,
+      pointerId: event.pointerId,
+      hit,
+      strings,
+      start: strings.map((s, i) => {
+        const x = parseCoordinate(s);
+        return Number.isFinite(x) ? x : origin.getComponent(i) * view.scale();
+      }),
+    };
+    view.container.setPointerCapture(event.pointerId);
+    view.container.classList.add("tnx-dragging");
+    view.dragging(true, name);
+    return true;
+  }
+
+  function apply() {
+    frame = 0;
+    if (!drag || !pending) return;
+    const hit = hitPlane(pending.clientX, pending.clientY);
+    pending = null;
+    if (!hit) return;
+    const delta = hit.sub(drag.hit).multiplyScalar(view.scale());
+    const grid = view.grid();
+    const next = drag.strings.map((s, i) => {
+      const d = delta.getComponent(i);
+      if (Math.abs(d) < grid.value / 2) return s; // not moved along this axis: keep the exact text
+      const k = gridIndex(drag.start[i] + d, grid, view.bounds());
+      return onGridAt(drag.start[i], k, grid) ? s : gridText(k, grid); // clamped back: keep it
+    });
+    const now = view.values(drag.name);
+    if (next.some((s, i) => s !== now[i])) view.write(drag.name, next);
+  }
+
+  function onPointerDown(event) {
+    if (drag || event.button > 0) return;
+    const target = event.target.closest?.("[data-vertex]");
+    const name = target ? target.dataset.vertex : event.target === view.canvas ? pick(event.clientX, event.clientY) : null;
+    if (!name) return;
+    if (start(name, event)) {
+      event.preventDefault();
+      event.stopPropagation(); // the orbit controls do not see this press
+      if (target) target.focus({ preventScroll: true });
+    }
+  }
+
+  function onPointerMove(event) {
+    if (!drag) {
+      if (event.target === view.canvas && event.buttons === 0) {
+        view.canvas.style.cursor = pick(event.clientX, event.clientY) ? "grab" : "";
+      }
+      return;
+    }
+    if (event.pointerId !== drag.pointerId) return;
+    event.preventDefault();
+    pending = { clientX: event.clientX, clientY: event.clientY };
+    if (!frame) frame = requestAnimationFrame(apply);
+  }
+
+  function onPointerUp(event) {
+    if (!drag || event.pointerId !== drag.pointerId) return;
+    if (pending) {
+      cancelAnimationFrame(frame);
+      apply();
+    }
+    const name = drag.name;
+    drag = null;
+    view.container.classList.remove("tnx-dragging");
+    if (view.container.hasPointerCapture?.(event.pointerId)) view.container.releasePointerCapture(event.pointerId);
+    view.dragging(false, name);
+  }
+
+  function onKeyDown(event) {
+    const target = event.target.closest?.("[data-vertex]");
+    if (!target || !(event.key in KEYS) || event.altKey || event.ctrlKey || event.metaKey) return;
+    event.preventDefault();
+    const name = target.dataset.vertex;
+    const [axis, sign] = KEYS[event.key];
+    const strings = view.values(name).slice();
+    const grid = view.grid();
+    let x = parseCoordinate(strings[axis]);
+    if (!Number.isFinite(x)) x = (view.position(name)?.getComponent(axis) ?? 0) * view.scale();
+    const k = gridIndex(x + sign * grid.value, grid, view.bounds());
+    if (onGridAt(x, k, grid)) return; // at the edge of the range: nothing moves, nothing is written
+    strings[axis] = gridText(k, grid);
+    if (strings[axis] !== view.values(name)[axis]) view.write(name, strings);
+  }
+
+  const c = view.container;
+  c.addEventListener("pointerdown", onPointerDown, { capture: true });
+  c.addEventListener("pointermove", onPointerMove);
+  c.addEventListener("pointerup", onPointerUp);
+  c.addEventListener("pointercancel", onPointerUp);
+  c.addEventListener("keydown", onKeyDown);
+  return () => {
+    if (frame) cancelAnimationFrame(frame);
+    c.removeEventListener("pointerdown", onPointerDown, { capture: true });
+    c.removeEventListener("pointermove", onPointerMove);
+    c.removeEventListener("pointerup", onPointerUp);
+    c.removeEventListener("pointercancel", onPointerUp);
+    c.removeEventListener("keydown", onKeyDown);
+  };
+}

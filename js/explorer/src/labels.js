@@ -1,0 +1,121 @@
+/*
+ * HTML labels over the canvas: the vertices A, B and C (focusable, draggable, with
+ * data-vertex), the arrows U, V, N and the unit normal, the axes and their ticks.
+ * Each frame they are placed by projecting their 3D anchor to the screen; vertex
+ * labels are pushed away from the triangle's centre so they sit beyond the arrow heads.
+ */
+import { Vector3 } from "three";
+
+const v = new Vector3();
+
+function project(point, camera, size) {
+  v.copy(point).project(camera);
+  return {
+    x: ((v.x + 1) / 2) * size.width,
+    y: ((1 - v.y) / 2) * size.height,
+    behind: v.z > 1 || v.z < -1,
+  };
+}
+
+export class LabelLayer {
+  constructor(container) {
+    this.el = document.createElement("div");
+    this.el.className = "tnx-labels";
+    container.appendChild(this.el);
+    this.items = new Map();
+  }
+
+  /** Create (or return) a label. kind: "vertex", "arrow", "axis", "tick", "note". */
+  label(id, kind, text) {
+    let item = this.items.get(id);
+    if (!item) {
+      const el = document.createElement("div");
+      el.className = "tnx-label tnx-" + kind;
+      this.el.appendChild(el);
+      item = { el, kind, anchor: null, away: null, offset: 0, visible: true, text: null };
+      this.items.set(id, item);
+    }
+    if (text !== undefined && item.text !== text) {
+      item.el.textContent = text;
+      item.text = text;
+    }
+    return item;
+  }
+
+  /** Anchor a label at a 3D point; `away` is a 3D point it is pushed away from (or a fixed angle). */
+  place(id, anchor, { away = null, offset = 0, angle = null, visible = true } = {}) {
+    const item = this.items.get(id);
+    if (!item) return;
+    item.anchor = anchor ? anchor.clone() : null;
+    item.away = away ? away.clone() : null;
+    item.offset = offset;
+    item.angle = angle;
+    item.visible = visible && !!anchor;
+  }
+
+  hide(prefix) {
+    for (const [id, item] of this.items) if (id.startsWith(prefix)) item.visible = false;
+  }
+
+  /** Move every label to its projected place. */
+  layout(camera, size) {
+    const placed = [];
+    for (const item of this.items.values()) {
+      if (!item.visible || !item.anchor) {
+        item.el.hidden = true;
+        continue;
+      }
+      const p = project(item.anchor, camera, size);
+      if (p.behind) {
+        item.el.hidden = true;
+        continue;
+      }
+      let dx = 0;
+      let dy = 0;
+      if (item.offset) {
+        let ux = 0;
+        let uy = 0;
+        if (item.away) {
+          const q = project(item.away, camera, size);
+          ux = p.x - q.x;
+          uy = p.y - q.y;
+        }
+        const len = Math.hypot(ux, uy);
+        if (len < 8 && item.angle !== null) {
+          ux = Math.cos(item.angle);
+          uy = -Math.sin(item.angle);
+        } else if (len < 1e-6) {
+          ux = 0;
+          uy = -1;
+        } else {
+          ux /= len;
+          uy /= len;
+        }
+        dx = ux * item.offset;
+        dy = uy * item.offset;
+      }
+      let x = p.x + dx;
+      let y = p.y + dy;
+      // vertex labels that would sit on top of each other (points close on screen) fan out
+      if (item.kind === "vertex") {
+        for (const other of placed) {
+          if (Math.hypot(other.x - x, other.y - y) < 30 && item.angle !== null) {
+            x = p.x + Math.cos(item.angle) * item.offset * 1.4;
+            y = p.y - Math.sin(item.angle) * item.offset * 1.4;
+          }
+        }
+        // keep the whole label inside the view, so it can always be grabbed
+        x = Math.min(Math.max(x, 20), size.width - 20);
+        y = Math.min(Math.max(y, 20), size.height - 20);
+        placed.push({ x, y });
+      }
+      item.el.hidden = false;
+      item.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
+    }
+  }
+
+  dispose() {
+    this.el.remove();
+    this.items.clear();
+  }
+}

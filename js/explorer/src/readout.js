@@ -1,0 +1,60 @@
+/*
+ * The readout panel: the host's rows (label and value, in FIELDS order), the status
+ * sentence, and a polite live region with the one-line summary for screen readers.
+ * Every string comes from `state`: the view prints nothing it computed itself.
+ */
+
+export function createReadout(parent) {
+  const panel = document.createElement("section");
+  panel.className = "tnx-readout";
+  panel.setAttribute("aria-label", "Readout");
+  const table = document.createElement("table");
+  const body = document.createElement("tbody");
+  table.appendChild(body);
+  const status = document.createElement("p");
+  status.className = "tnx-status";
+  const live = document.createElement("p");
+  live.className = "tnx-summary";
+  live.setAttribute("aria-live", "polite");
+  live.setAttribute("role", "status");
+  panel.append(table, status, live);
+  parent.appendChild(panel);
+  let timer = 0;
+
+  function update(state) {
+    const rows = Array.isArray(state?.readout) ? state.readout : [];
+    while (body.rows.length > rows.length) body.deleteRow(-1);
+    rows.forEach((row, i) => {
+      const tr = body.rows[i] || body.insertRow();
+      if (tr.cells.length === 0) {
+        const th = document.createElement("th");
+        th.scope = "row";
+        tr.append(th, document.createElement("td"));
+        tr.cells[1].className = "tnx-value";
+      }
+      tr.dataset.key = row.key;
+      tr.cells[0].textContent = row.label;
+      tr.cells[1].textContent = state.ok === false ? "—" : row.value;
+    });
+    status.textContent = (state?.ok === false ? state.error : state?.status) || "";
+    status.dataset.state = state?.ok === false ? "error" : state?.degenerate ? "degenerate" : "ok";
+    // announce once the values settle (a drag changes them every frame)
+    clearTimeout(timer);
+    const text = state?.ok === false ? state.error || "" : state?.summary || state?.status || "";
+    timer = setTimeout(() => {
+      if (live.textContent !== text) live.textContent = text;
+    }, 350);
+  }
+
+  return {
+    el: panel,
+    update,
+    show(on) {
+      panel.hidden = !on;
+    },
+    dispose() {
+      clearTimeout(timer);
+      panel.remove();
+    },
+  };
+}

@@ -1,0 +1,166 @@
+/*
+ * The stage: renderer, camera (z up), orbit controls, resizing and rendering on demand.
+ */
+import { Color, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from "three";
+import { OrbitControls } from "three/addons/controls/OrbitControls.js";
+
+export const DEFAULT_DIRECTION = new Vector3(1.0, 0.75, 0.65).normalize();
+const FOV = 40;
+
+/**
+ * True when WebGL runs on the CPU (SwiftShader, llvmpipe: no usable GPU). Multisampling then
+ * costs more than it gives, so the view turns it off and keeps its frame rate.
+ */
+function softwareRendering() {
+  try {
+    const gl = document.createElement("canvas").getContext("webgl2");
+    if (!gl) return false;
+    const info = gl.getExtension("WEBGL_debug_renderer_info");
+    const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : "";
+    gl.getExtension("WEBGL_lose_context")?.loseContext();
+    return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+  } catch (err) {
+    return false;
+  }
+}
+
+export function createStage(container, { onRender }) {
+  const renderer = new WebGLRenderer({ antialias: !softwareRendering() });
+  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+  const canvas = renderer.domElement;
+  canvas.className = "tnx-canvas";
+  container.appendChild(canvas);
+
+  const scene = new Scene();
+  const camera = new PerspectiveCamera(FOV, 1, 0.01, 1000);
+  camera.up.set(0, 0, 1);
+  camera.position.copy(DEFAULT_DIRECTION).multiplyScalar(6);
+
+  const controls = new OrbitControls(camera, canvas);
+  controls.enableDamping = false;
+  controls.zoomToCursor = false;
+
+  let frame = 0;
+  let width = 1;
+  let height = 1;
+  const home = {
+    target: new Vector3(),
+    distance: 6,
+    radius: 1,
+    direction: DEFAULT_DIRECTION.clone(), // where the camera looks from now
+    start: DEFAULT_DIRECTION.clone(), // where "Reset view" looks from
+  };
+  let atHome = true; // the camera is where reset or a view button put it (the user has not moved it)
+
+  function draw() {
+    frame = 0;
+    onRender();
+    renderer.render(scene, camera);
+  }
+
+  function requestRender() {
+    if (!frame) frame = requestAnimationFrame(draw);
+  }
+
+  /** Draw at once (from inside an animation frame, so the picture is in this frame). */
+  function renderNow() {
+    if (frame) cancelAnimationFrame(frame);
+    draw();
+  }
+
+  function resize() {
+    const w = Math.max(1, Math.round(container.clientWidth));
+    const h = Math.max(1, Math.round(container.clientHeight));
+    if (w === width && h === height) return;
+    width = w;
+    height = h;
+    renderer.setSize(w, h, false);
+    camera.aspect = w / h;
+    camera.updateProjectionMatrix();
+    home.distance = fitDistance(home.radius);
+    if (atHome) look(home.direction);
+    requestRender();
+  }
+
+  /** The distance at which a sphere of this radius fits the narrower side of the view. */
+  function fitDistance(radius) {
+    const vHalf = ((FOV / 2) * Math.PI) / 180;
+    const hHalf = Math.atan(Math.tan(vHalf) * camera.aspect);
+    return (Math.max(radius, 1e-6) / Math.sin(Math.min(vHalf, hHalf))) * 1.05;
+  }
+
+  const observer = new ResizeObserver(resize);
+  observer.observe(container);
+  controls.addEventListener("change", requestRender);
+  controls.addEventListener("start", () => {
+    atHome = false;
+  });
+
+  /**
+   * Remember a framing (centre, radius) as home. go: true moves the camera there along the
+   * default direction, "keep" along its current direction, false leaves it where it is.
+   */
+  function frameSphere(center, radius, go = true, start = null) {
+    if (start) home.start.copy(start);
+    home.target.copy(center);
+    home.radius = radius;
+    home.distance = fitDistance(radius);
+    camera.near = home.distance / 200;
+    camera.far = home.distance * 50;
+    camera.updateProjectionMatrix();
+    if (go === "keep") look(camera.position.clone().sub(controls.target));
+    else if (go) look(home.start);
+  }
+
+  /** True when every point (display units) projects inside the view, with a margin. */
+  function inView(points, margin = 0.92) {
+    camera.updateMatrixWorld();
+    return points.every((p) => {
+      const q = p.clone().project(camera);
+      return Math.abs(q.x) <= margin && Math.abs(q.y) <= margin && q.z < 1;
+    });
+  }
+
+  /** Look at home's centre from a direction (unit vector), at home's distance. */
+  function look(direction) {
+    home.direction.copy(direction);
+    atHome = true;
+    const d = direction.clone().normalize();
+    if (Math.abs(d.z) > 0.999) d.set(0, -1e-3, Math.sign(d.z)).normalize();
+    controls.target.copy(home.target);
+    camera.position.copy(home.target).addScaledVector(d, home.distance);
+    camera.lookAt(home.target);
+    controls.update();
+    requestRender();
+  }
+
+  return {
+    renderer,
+    canvas,
+    scene,
+    camera,
+    controls,
+    requestRender,
+    renderNow,
+    resize,
+    frameSphere,
+    inView,
+    reset: () => look(home.start),
+    atHome: () => atHome,
+    // along x: y to the right; along y: x to the right; along z: from above, x right, y up
+    along: (axis) => look(new Vector3(axis === "x" ? 1 : 0, axis === "y" ? -1 : 0, axis === "z" ? 1 : 0)),
+    setBackground: (color) => {
+      scene.background = new Color(color);
+      requestRender();
+    },
+    size: () => ({ width, height }),
+    dispose() {
+      if (frame) cancelAnimationFrame(frame);
+      observer.disconnect();
+      controls.dispose();
+      renderer.dispose();
+      renderer.forceContextLoss?.();
+      canvas.remove();
+    },
+  };
+}

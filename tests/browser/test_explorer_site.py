@@ -1,0 +1,336 @@
+"""The 3D view on the site: a real WebGL canvas, orbit, vertex drag, keys, degenerate, themes.
+
+The view is the same ES module JupyterLab runs (``assets/explorer/explorer.js``), driven on
+the calculator page by the form and the site's exact core. What a reader relies on: turning
+the view never changes the numbers; dragging a vertex or pressing an arrow key changes that
+vertex's boxes, the results (the same strings as Python) and the address; a degenerate
+triangle is explained, never drawn with NaN; both palettes render; nothing leaves the site.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+from urllib.parse import parse_qs, urlsplit
+
+import pytest
+from PIL import Image
+
+from trinormal import triangle_normal
+from trinormal.fields import FIELDS as FIELDS_SPEC
+
+FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
+OUTPUTS = {
+    "u": "#out-u",
+    "v": "#out-v",
+    "normal": "#out-normal",
+    "magnitude": "#out-magnitude",
+    "area": "#out-area",
+    "unit_normal": "#out-unit",
+    "plane": "#out-plane",
+}
+GRID_TEXT = re.compile(r"-?\d+\.\d")  # a value the view wrote: on the 0.1 grid, one decimal
+URL_SHOWS_A = """() => {
+  const a = ['ax', 'ay', 'az'].map(id => document.getElementById(id).value).join(',');
+  return new URLSearchParams(location.search).get('a') === a && a !== '0,0,0';
+}"""
+
+
+def open_view(page, url: str) -> None:
+    page.goto(url)
+    page.wait_for_selector("#tn-calculator[data-ready='true']")
+    page.wait_for_selector("#tn-view[data-ready='true']")
+    page.wait_for_load_state("networkidle")
+    page.locator("#tn-view canvas").evaluate("c => c.scrollIntoView({block: 'center'})")
+    settle(page)
+
+
+def settle(page) -> None:
+    """Wait until the view has drawn what it was asked to (two animation frames)."""
+    page.evaluate(
+        "() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(() => r())))"
+    )
+
+
+@pytest.fixture
+def view(page, server, traffic):
+    page.set_viewport_size({"width": 1280, "height": 900})
+    open_view(page, server + "calculator/")
+    yield page
+    assert not traffic.problems()
+    assert not traffic.off_origin
+
+
+def inputs(page) -> list[str]:
+    return [page.locator("#" + f).input_value() for f in FIELDS]
+
+
+def outputs(page) -> dict[str, str]:
+    return {key: page.locator(sel).inner_text() for key, sel in OUTPUTS.items()}
+
+
+def python_outputs(values: list[str], winding: str = "ABC", precision: int = 4) -> dict[str, str]:
+    a, b, c = values[0:3], values[3:6], values[6:9]
+    f = triangle_normal(a, b, c, winding=winding).format(precision)
+    return {key: f[key] for key in OUTPUTS}
+
+
+def canvas_png(page) -> bytes:
+    settle(page)
+    return page.locator("#tn-view canvas").screenshot()
+
+
+def centre(page, selector: str) -> tuple[float, float]:
+    box = page.locator(selector).bounding_box()
+    assert box is not None, selector
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+
+def query(page) -> dict[str, list[str]]:
+    return parse_qs(urlsplit(page.evaluate("location.href")).query)
+
+
+def test_the_calculator_has_a_webgl_view_served_from_the_site(view, traffic):
+    canvas = view.locator("#tn-view canvas")
+    assert canvas.count() == 1
+    kind = canvas.evaluate(
+        "c => c.getContext('webgl2') ? 'webgl2' : c.getContext('webgl') ? 'webgl' : null"
+    )
+    assert kind in ("webgl2", "webgl")
+    size = canvas.bounding_box()
+    assert size is not None and size["width"] >= 480 and size["height"] >= 300
+    assert any(u.endswith("/assets/explorer/explorer.js") for u in traffic.requests)
+    # labels A, B, C are HTML over their points: visible, focusable, at least 14 px
+    for name in "ABC":
+        label = view.locator(f'[data-vertex="{name}"]')
+        assert label.is_visible()
+        assert label.get_attribute("tabindex") == "0"
+        assert name in label.get_attribute("aria-label")
+        px = label.evaluate("e => parseFloat(getComputedStyle(e).fontSize)")
+        assert px >= 14
+    # the toolbar is made of real buttons
+    buttons = view.locator("#tn-view .tnx-toolbar button")
+    names = buttons.evaluate_all("bs => bs.map(b => b.getAttribute('aria-label') || b.textContent)")
+    for name in ("Reset the camera", "View along the x axis", "View along the y axis"):
+        assert name in names
+    assert "View along the z axis" in names
+
+
+def test_orbiting_changes_the_picture_but_not_the_numbers(view):
+    before_inputs, before_out, before_url = inputs(view), outputs(view), view.url
+    before = canvas_png(view)
+    box = view.locator("#tn-view canvas").bounding_box()
+    assert box is not None
+    x, y = box["x"] + 30, box["y"] + 30  # a corner: empty space, far from A, B and C
+    view.mouse.move(x, y)
+    view.mouse.down()
+    view.mouse.move(x + 160, y + 60, steps=12)
+    view.mouse.up()
+    after = canvas_png(view)
+    assert after != before, "dragging empty space did not turn the view"
+    assert inputs(view) == before_inputs
+    assert outputs(view) == before_out
+    assert view.url == before_url
+    # reset brings the first picture back
+    view.get_by_role("button", name="Reset the camera").click()
+    assert canvas_png(view) == before
+
+
+def test_dragging_vertex_a_moves_a_and_updates_results_and_url(view):
+    assert inputs(view)[:3] == ["0", "0", "0"]
+    x, y = centre(view, '#tn-view [data-vertex="A"]')
+    view.mouse.move(x, y)
+    view.mouse.down()
+    view.mouse.move(x - 40, y + 50, steps=6)
+    # during the drag: the boxes already follow
+    view.wait_for_function("['ax','ay','az'].some(id => document.getElementById(id).value !== '0')")
+    view.mouse.move(x - 90, y + 110, steps=10)
+    # the address follows too (at most every 100 ms while the boxes change every frame)
+    view.wait_for_function(URL_SHOWS_A)
+    view.mouse.up()
+    view.wait_for_function(URL_SHOWS_A)
+    values = inputs(view)
+    a, rest = values[:3], values[3:]
+    assert a != ["0", "0", "0"]
+    assert rest == ["1", "0", "0", "0", "1", "0"], "only A may move"
+    for text in a:
+        assert text == "0" or GRID_TEXT.fullmatch(text), f"A moved off the 0.1 grid: {text!r}"
+    assert outputs(view) == python_outputs(values)
+    assert query(view)["a"] == [",".join(a)]
+    assert query(view)["b"] == ["1,0,0"] and query(view)["c"] == ["0,1,0"]
+
+
+def test_arrow_keys_move_the_focused_vertex_one_step(view):
+    label = view.locator('#tn-view [data-vertex="B"]')
+    label.focus()
+    label.press("ArrowRight")
+    assert view.locator("#bx").input_value() == "1.1"
+    label.press("ArrowUp")
+    assert view.locator("#by").input_value() == "0.1"
+    label.press("PageDown")
+    assert view.locator("#bz").input_value() == "-0.1"
+    label.press("ArrowLeft")
+    label.press("ArrowLeft")
+    assert view.locator("#bx").input_value() == "0.9"
+    values = inputs(view)
+    assert values[3:6] == ["0.9", "0.1", "-0.1"]
+    assert values[:3] == ["0", "0", "0"] and values[6:] == ["0", "1", "0"]
+    assert outputs(view) == python_outputs(values)
+    view.wait_for_function("() => new URLSearchParams(location.search).get('b') === '0.9,0.1,-0.1'")
+
+
+def test_a_typed_value_moves_the_view_and_keeps_its_exact_text(view):
+    before = canvas_png(view)
+    view.fill("#cz", "1/3")
+    after = canvas_png(view)
+    assert after != before
+    # a key press on another axis of C leaves the exact 1/3 alone
+    label = view.locator('#tn-view [data-vertex="C"]')
+    label.focus()
+    label.press("ArrowRight")
+    assert inputs(view)[6:] == ["0.1", "1", "1/3"]
+    assert outputs(view) == python_outputs(inputs(view))
+
+
+def test_a_degenerate_triangle_is_explained_without_nan(view):
+    view.fill("#cx", "2")
+    view.fill("#cy", "0")  # C on the line through A and B
+    settle(view)
+    message = view.locator("#tn-view .tnx-message")
+    assert message.is_visible()
+    status = view.locator("#out-status").inner_text()
+    assert status.startswith("Degenerate: A, B and C are collinear")
+    assert message.inner_text() == status
+    text = view.locator("#tn-view").inner_text()
+    labels = view.locator("#tn-view [aria-label]").evaluate_all(
+        "els => els.map(e => e.getAttribute('aria-label')).join(' ')"
+    )
+    for word in ("NaN", "Infinity", "undefined"):
+        assert word not in text and word not in labels
+    assert not view.locator("#tn-view .tnx-arrow", has_text=re.compile(r"^N$")).is_visible()
+    # moving C off the line brings the normal back
+    label = view.locator('#tn-view [data-vertex="C"]')
+    label.focus()
+    label.press("ArrowUp")
+    assert view.locator("#cy").input_value() == "0.1"
+    assert not message.is_visible()
+    assert outputs(view) == python_outputs(inputs(view))
+
+
+def _corner(png: bytes) -> tuple[int, int, int]:
+    img = Image.open(io.BytesIO(png)).convert("RGB")
+    return img.getpixel((4, img.height - 4))
+
+
+def test_light_and_dark_palettes_both_render(view):
+    light = canvas_png(view)
+    view.evaluate("document.body.setAttribute('data-md-color-scheme', 'slate')")
+    dark = canvas_png(view)
+    assert light != dark
+    assert sum(_corner(light)) > 3 * 200, "the light view is not light"
+    assert sum(_corner(dark)) < 3 * 80, "the dark view is not dark"
+    # the vertex labels take the dark palette's colours (from trinormal.colors)
+    from trinormal.colors import palette
+
+    colour = view.locator('#tn-view [data-vertex="B"]').evaluate("e => getComputedStyle(e).color")
+    want = palette()["B"]["dark"]
+    rgb = tuple(int(want[i : i + 2], 16) for i in (1, 3, 5))
+    assert colour == f"rgb({rgb[0]}, {rgb[1]}, {rgb[2]})"
+    view.evaluate("document.body.setAttribute('data-md-color-scheme', 'default')")
+    assert sum(_corner(canvas_png(view))) > 3 * 200, "switching back did not restore the light view"
+
+
+def test_the_explorer_notebook_page_has_a_live_view(page, server, traffic):
+    page.goto(server + "notebooks/05_explorer/")
+    page.wait_for_selector(".tn-explorer-live[data-ready='true']")
+    live = page.locator(".tn-explorer-live").first
+    assert live.locator("canvas").count() == 1
+    assert live.locator("noscript").count() == 1  # the picture stays for readers without scripts
+    start = json.loads(live.get_attribute("data-explorer") or "{}")
+    f = triangle_normal(start["a"], start["b"], start["c"], winding=start["winding"]).format(
+        start.get("precision", 4)
+    )
+    rows = live.locator(".tnx-readout tr").evaluate_all(
+        "rs => rs.map(r => [r.dataset.key, r.cells[1].textContent])"
+    )
+    assert [key for key, _ in rows] == [field.key for field in FIELDS_SPEC]
+    assert all(value == f[key] for key, value in rows)
+    # a key press moves the page's own triangle and its readout follows, exactly
+    label = live.locator('[data-vertex="C"]')
+    label.focus()
+    label.press("ArrowRight")
+    moved = triangle_normal(start["a"], start["b"], _right(start["c"]), winding=start["winding"])
+    value = live.locator(".tnx-readout tr[data-key='u'] td").inner_text()
+    assert value == moved.format(start.get("precision", 4))["u"]
+    assert not traffic.problems()
+
+
+def _right(point: list[str]) -> list[str]:
+    """A point after one ArrowRight on the 0.1 grid (for values already on it)."""
+    x = round(float(point[0]) * 10) + 1
+    return [f"{x / 10:.1f}", *point[1:]]
+
+
+def test_the_views_order_button_flips_the_calculator(view):
+    button = view.locator("#tn-view").get_by_role("button", name=re.compile("^Flip the order"))
+    assert button.inner_text() == "⇄ A→B→C"
+    button.click()
+    assert view.locator("#winding").input_value() == "ACB"
+    assert button.inner_text() == "⇄ A→C→B"
+    assert outputs(view) == python_outputs(inputs(view), winding="ACB")
+    assert query(view)["w"] == ["ACB"]
+    # and the form's own flip turns the view back
+    view.click("#tn-flip")
+    assert button.inner_text() == "⇄ A→B→C"
+
+
+@pytest.mark.parametrize("width", [360, 1280])
+def test_results_sit_beside_the_inputs_on_wide_screens_and_under_them_on_phones(
+    page, server, traffic, width
+):
+    page.set_viewport_size({"width": width, "height": 800})
+    open_view(page, server + "calculator/")
+    assert page.evaluate("document.documentElement.scrollWidth") <= width, "horizontal scroll"
+    form = page.locator(".tn-form").bounding_box()
+    results = page.locator(".tn-calc-results").bounding_box()
+    assert form is not None and results is not None
+    if width >= 1280:
+        assert results["x"] >= form["x"] + form["width"] - 1  # to the right of the inputs
+        assert results["y"] < form["y"] + form["height"]  # level with them
+    else:
+        assert results["y"] >= form["y"] + form["height"] - 1  # directly below
+        assert results["y"] - (form["y"] + form["height"]) < 80
+    n_chart = page.locator("#chart").bounding_box()
+    unit_chart = page.locator("#chart-unit").bounding_box()
+    assert n_chart is not None and unit_chart is not None
+    if width >= 1280:
+        assert abs(unit_chart["y"] - n_chart["y"]) < 2  # the unit normal's chart beside N's
+    assert (
+        page.locator("#chart-unit").get_attribute("aria-label")
+    ) == "Bar chart of the unit normal components: x = 0.0000, y = 0.0000, z = 1.0000."
+    assert not traffic.problems()
+
+
+def test_without_javascript_the_explorer_page_shows_the_picture(browser, server):
+    context = browser.new_context(java_script_enabled=False)
+    try:
+        page = context.new_page()
+        page.goto(server + "notebooks/05_explorer/")
+        picture = page.locator(".tn-explorer-live img[src$='assets/images/explorer.png']")
+        assert picture.count() >= 1
+        assert picture.first.is_visible()
+        assert picture.first.get_attribute("alt")
+    finally:
+        context.close()
+
+
+def test_keys_stop_at_the_range_and_never_rewrite_a_value(view):
+    view.fill("#bx", "5")  # the edge of the view's range, -5 to 5
+    label = view.locator('#tn-view [data-vertex="B"]')
+    label.focus()
+    label.press("ArrowRight")
+    assert view.locator("#bx").input_value() == "5"  # not "5.0", not "5.1"
+    label.press("ArrowLeft")
+    assert view.locator("#bx").input_value() == "4.9"
+    assert outputs(view) == python_outputs(inputs(view))
