@@ -111,8 +111,10 @@ def test_precision_change(calc):
     assert calc.locator("#out-area").inner_text() == "1e-01"
     calc.fill("#precision", "10")
     assert calc.locator("#out-area").inner_text() == "0.1250000000"
-    calc.fill("#precision", "11")
-    assert "0 to 10" in status(calc)
+    calc.fill("#precision", "15")
+    assert calc.locator("#out-area").inner_text() == "0.125000000000000"
+    calc.fill("#precision", "16")
+    assert status(calc) == "precision must be from 0 to 15, got 16"
     assert set(outputs(calc).values()) == {DASH}
     calc.fill("#precision", "3")
     assert calc.locator("#out-area").inner_text() == "0.125"

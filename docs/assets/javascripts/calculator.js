@@ -83,7 +83,11 @@
     }
     if ("p" in params) {
       var p = decodePart(params.p).trim();
-      if (/^\d{1,2}$/.test(p) && Number(p) <= 10) state.p = Number(p);
+      try {
+        state.p = window.TrinormalCore.checkPrecision(p);
+      } catch (e) {
+        /* a bad precision in a link keeps the default */
+      }
     }
     return state;
   }
@@ -114,12 +118,6 @@
     if (window.location.search !== query) {
       window.history.replaceState(null, "", window.location.pathname + query + window.location.hash);
     }
-  }
-
-  function readPrecision(text) {
-    var s = String(text).trim();
-    if (!/^\d{1,2}$/.test(s) || Number(s) > 10) return null;
-    return Number(s);
   }
 
   function setInvalid(field) {
@@ -261,17 +259,8 @@
     if (pushUrl && fromView) writeUrlSoon();
     else if (pushUrl) writeUrl(state);
     var status = $("out-status");
-    var p = readPrecision(state.p);
-    var result;
-    if (p === null) {
-      result = {
-        ok: false,
-        field: "precision",
-        status: "Precision must be a whole number from 0 to 10, got " + JSON.stringify(String(state.p)),
-      };
-    } else {
-      result = window.TrinormalCore.compute(state.a, state.b, state.c, state.w, p);
-    }
+    // the core checks the precision (0 to 15, the same rule and message as Python)
+    var result = window.TrinormalCore.compute(state.a, state.b, state.c, state.w, String(state.p));
     Object.keys(OUTPUTS).forEach(function (key) {
       $(OUTPUTS[key]).textContent = result.ok ? result.out[key] : DASH;
     });
