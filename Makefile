@@ -16,7 +16,7 @@ UV_DEP :=
 endif
 RUN := $(UV) run --locked --no-sync
 
-.PHONY: env lab test lint types unit notebooks nbval docs docs-build browser bench clean
+.PHONY: env lab lab-env test lint types unit notebooks nbval docs docs-build browser bench js clean
 
 .tools/bin/uv:
 	$(PYTHON) -m venv .tools
@@ -27,11 +27,20 @@ env: $(UV_DEP)
 	$(UV) sync --locked --all-groups --python "$$(command -v $(PYTHON))"
 
 ## lab: open JupyterLab on the notebooks (the main job)
-# No news feed or update check: nothing is fetched from the internet. Root needs --allow-root.
+# Installs only the lab group (the package, numpy, sympy, matplotlib, widgets, JupyterLab), not the
+# docs, browser-test or benchmark tools; --inexact keeps those if `make env` installed them before.
+# No bytecode compiling up front (about 30 s here): Python compiles what the lab imports, once.
+# No news feed, no news question, no update check: the server fetches nothing (news_url, the
+# update checker) and .jupyter/overrides.json answers "never" for the browser side.
+# Root needs --allow-root.
 LAB_FLAGS := --LabApp.news_url=None --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate \
+	--LabApp.app_settings_dir="$(CURDIR)/.jupyter" \
 	$(if $(filter 0,$(shell id -u)),--allow-root)
 
-lab: env
+lab-env: $(UV_DEP)
+	UV_COMPILE_BYTECODE=0 $(UV) sync --locked --inexact --no-default-groups --group lab --python "$$(command -v $(PYTHON))"
+
+lab: lab-env
 	$(RUN) jupyter lab notebooks $(LAB_FLAGS)
 
 ## test: lint, types, unit/property/doctests, notebooks (nbval), the site and its browser tests
@@ -52,7 +61,7 @@ nbval: env
 
 ## notebooks: re-execute every notebook top to bottom from a clean kernel, storing outputs
 notebooks: env
-	$(RUN) jupyter nbconvert --to notebook --execute --inplace notebooks/*.ipynb
+	$(RUN) jupyter nbconvert --to notebook --execute --inplace --NotebookClient.store_widget_state=False notebooks/*.ipynb
 
 ## docs: build the site and serve it on 127.0.0.1:8000
 docs: env
@@ -67,6 +76,10 @@ browser: env docs-build
 ## bench: the performance figures, each against a peer measured in the same run
 bench: env
 	for f in benchmarks/bench_*.py; do $(RUN) python $$f || exit 1; done
+
+## js: rebuild the 3D view (trinormal/explorer/static/explorer.js) from js/explorer/ and its lockfile
+js:
+	cd js/explorer && npm ci --no-audit --no-fund && node build.mjs
 
 clean:
 	rm -rf .venv .tools site .cache .pytest_cache .mypy_cache .ruff_cache

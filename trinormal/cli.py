@@ -33,7 +33,7 @@ from trinormal.steps import points_text, steps, working
 from trinormal.tolerances import DEFAULT_TOL
 from trinormal.validation import check_precision, check_tolerance, check_vertex, check_winding
 
-# ``steps`` is :func:`trinormal.steps.steps`, the one step-by-step engine, under the name
+# ``steps`` is `trinormal.steps.steps`, the one step-by-step engine, under the name
 # this module has always exported.
 __all__ = ["main", "steps"]
 

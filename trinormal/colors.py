@@ -76,7 +76,7 @@ def color(role: str, dark: bool = False) -> str:
     Parameters
     ----------
     role : str
-        One of :data:`ROLES`: ``"A"``, ``"B"``, ``"C"``, ``"U"``, ``"V"``,
+        One of `ROLES`: ``"A"``, ``"B"``, ``"C"``, ``"U"``, ``"V"``,
         ``"N"``, ``"front"``, ``"back"``, ``"x"``, ``"y"`` or ``"z"``.
     dark : bool, default False
         The variant for a dark background.

@@ -4,7 +4,7 @@ Every coordinate is read as an exact rational number (a float is its exact
 binary value, the string ``"0.1"`` is exactly 1/10). All nine are brought to a
 common denominator ``D`` so the cross product runs on plain Python integers;
 each reported float is then one correctly rounded division. Square roots use
-:func:`math.isqrt` on integers scaled by a power of two, so results stay
+`math.isqrt` on integers scaled by a power of two, so results stay
 accurate at any scale, from 1e-300 to 1e300, with nothing overflowing on the
 way.
 
@@ -14,7 +14,8 @@ written out in one function; it hands anything else (other types, strings, a
 degenerate or out-of-range triangle) to the careful path, which validates
 every input and explains degenerate triangles. The choice depends only on
 what the inputs are, and both paths build their result with the one
-constructor, ``_result``; users get results from :func:`triangle_normal`.
+constructor, ``_result``; users get results from
+[`triangle_normal`][trinormal.core.triangle_normal].
 
 The standard library is all this module needs.
 """
@@ -68,8 +69,8 @@ ARITHMETICS: tuple[str, ...] = ("exact", "float64", "float32")
 class FloatRangeError(ValueError, OverflowError):
     """A value leaves the float64 or float32 range in ``arithmetic="float64"``/``"float32"``.
 
-    It is a :class:`ValueError` (the inputs cannot be computed in that format)
-    and, for code written before it existed, an :class:`OverflowError`.
+    It is a `ValueError` (the inputs cannot be computed in that format)
+    and, for code written before it existed, an `OverflowError`.
     """
 
 
@@ -82,7 +83,7 @@ class Plane(NamedTuple):
 
 @dataclass(frozen=True)
 class Exact:
-    """Exact rational values behind a result (:class:`fractions.Fraction`).
+    """Exact rational values behind a result (`fractions.Fraction`).
 
     ``magnitude_squared`` is |N|² (|N| itself is usually irrational); ``area``
     squared is ``magnitude_squared / 4``.
@@ -103,7 +104,8 @@ class Exact:
 def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     """Read one coordinate as an exact ratio ``(numerator, denominator)``, denominator > 0.
 
-    This is :func:`trinormal.validation.check_coordinate` under the name the
+    This is [`trinormal.validation.check_coordinate`][trinormal.validation.check_coordinate] under
+    the name the
     core has always used: the accepted types, the size limit, the return value
     and the errors are described there. ``name`` says how to call the value in
     an error message, such as ``"B.y"``.
@@ -192,8 +194,9 @@ class _Integers(NamedTuple):
 class TriangleNormal:
     """The normal of a triangle and everything derived from it.
 
-    Results are returned by :func:`triangle_normal`, not built directly: calling
-    ``TriangleNormal(...)`` raises :class:`TypeError`. The name is public for
+    Results are returned by [`triangle_normal`][trinormal.core.triangle_normal], not built directly:
+    calling
+    ``TriangleNormal(...)`` raises `TypeError`. The name is public for
     type hints and ``isinstance`` checks. Results are immutable, compare equal
     when every attribute below is equal, and can be copied and pickled.
 
@@ -201,7 +204,7 @@ class TriangleNormal:
     ----------
     a, b, c : tuple of float
         The vertices, correctly rounded to float (the exact values are in
-        :attr:`exact`).
+        [`exact`][trinormal.core.TriangleNormal.exact]).
     winding : Winding
         ``ABC``: U = B − A, V = C − A. ``ACB``: U = C − A, V = B − A.
     u, v : tuple of float
@@ -226,7 +229,7 @@ class TriangleNormal:
     arithmetic : str
         ``"exact"``, ``"float64"`` or ``"float32"``.
     tol : float
-        The sine threshold used for :attr:`degenerate`.
+        The sine threshold used for `degenerate`.
     """
 
     a: Vec3
@@ -247,7 +250,7 @@ class TriangleNormal:
     _integers: _Integers = field(repr=False, compare=False)
 
     def __init__(self, *args: object, **kwargs: object) -> None:
-        """Refuse direct construction: results come from :func:`triangle_normal`.
+        """Refuse direct construction: results come from `triangle_normal`.
 
         Examples
         --------
@@ -315,14 +318,15 @@ class TriangleNormal:
         Parameters
         ----------
         precision : int, default 4
-            Decimal places, 0 to 15 (see :func:`trinormal.format_number`).
+            Decimal places, 0 to 15 (see
+            [`trinormal.format_number`][trinormal.display.format_number]).
         trim : bool, default False
             Drop trailing zeros, as the guide's table does.
 
         Returns
         -------
         dict of str
-            One key per field of :data:`trinormal.fields.FIELDS` (``u``,
+            One key per field of `trinormal.fields.FIELDS` (``u``,
             ``v``, ``normal``, ``magnitude``, ``area``, ``unit_normal``,
             ``plane``) and ``status`` (one sentence).
 
@@ -362,7 +366,7 @@ class TriangleNormal:
     def _exact_fields(self) -> dict[str, Any]:
         """Compute the exact value of every output field, in the form its kind takes.
 
-        Vectors are three :data:`trinormal.fields.Surd`, scalars one, the plane
+        Vectors are three `trinormal.fields.Surd`, scalars one, the plane
         ``(unit normal, offset)``; ``None`` where the value is undefined.
         """
         s = self._integers
@@ -385,7 +389,7 @@ class TriangleNormal:
     def to_dict(self) -> dict[str, Any]:
         """Every field as JSON-ready values: floats (non-finite as strings) and exact strings.
 
-        The output fields (:data:`trinormal.fields.FIELDS`) appear under their
+        The output fields (`trinormal.fields.FIELDS`) appear under their
         keys, between the inputs and the verdict.
 
         Examples
@@ -421,12 +425,12 @@ class TriangleNormal:
 
 
 def _rational_surd(n: int, d: int) -> Surd:
-    """Write the rational ``n / d`` as a :data:`~trinormal.fields.Surd`."""
+    """Write the rational ``n / d`` as a `Surd`."""
     return (n < 0, n * n, d * d)
 
 
 def _float_surds(kind: str, value: Any) -> Any:
-    """Write a field's float value (by its kind) as exact :data:`~trinormal.fields.Surd`."""
+    """Write a field's float value (by its kind) as exact `Surd`."""
     if value is None:
         return None
     if kind == "scalar":
@@ -541,13 +545,13 @@ def triangle_normal(
         numpy real scalar, sympy ``Integer``/``Rational``/``Float``, or a string
         holding a decimal (``"0.1"``, ``"−2.5e3"``) or a fraction (``"1/3"``),
         read exactly. The rules and size limits are
-        :mod:`trinormal.validation`'s.
+        [`trinormal.validation`][trinormal.validation]'s.
     winding : {"ABC", "ACB"} or Winding, default "ABC"
         ``"ABC"``: U = B − A, V = C − A. ``"ACB"``: U = C − A, V = B − A.
         N = U × V, so the two orders give opposite normals.
     tol : real, default 1e-12
         Degeneracy threshold on the sine of the angle between U and V, from 0
-        to 1 (see :mod:`trinormal.tolerances`). ``0`` flags only exactly
+        to 1 (see [`trinormal.tolerances`][trinormal.tolerances]). ``0`` flags only exactly
         collinear or coincident points.
     arithmetic : {"exact", "float64", "float32"}, default "exact"
         ``"exact"`` computes with rationals and rounds once at the end.
@@ -565,7 +569,7 @@ def triangle_normal(
         NaN or infinite coordinates, a vertex without exactly 3 coordinates, an
         unreadable string, a value beyond the size limit, an unknown winding or
         arithmetic, a tol outside 0 to 1; in ``float64``/``float32`` arithmetic,
-        a value beyond that format's range (:class:`FloatRangeError`).
+        a value beyond that format's range ([`FloatRangeError`][trinormal.core.FloatRangeError]).
     TypeError
         ``None``, ``bool``, complex or other non-real coordinates; a vertex
         that is not a sized, ordered sequence (a set, dict, string or iterator).
@@ -656,8 +660,8 @@ def _fast_exact(a: Any, b: Any, c: Any, abc: bool) -> TriangleNormal | None:
 
     Returns None (and the careful path takes over) for anything else: other
     types, NaN or infinities, wrong lengths, degenerate triangles, results
-    beyond the float range. This is the same arithmetic as :func:`_exact` (and
-    repeats the cross product of :func:`_exact_integers` on purpose), written out
+    beyond the float range. This is the same arithmetic as `_exact` (and
+    repeats the cross product of `_exact_integers` on purpose), written out
     in one function because most calls look like this and each extra Python
     function call is a visible share of its few microseconds.
     """
@@ -836,7 +840,7 @@ def _result(
     tol: float,
     integers: _Integers,
 ) -> TriangleNormal:
-    """Build a :class:`TriangleNormal`: the one constructor every path uses.
+    """Build a `TriangleNormal`: the one constructor every path uses.
 
     The arguments are the fields in order. The result is frozen: its attributes
     are set once, here, as one dictionary (the dataclass's field-by-field

@@ -106,7 +106,7 @@ def format_surd(negative: bool, num: int, den: int, precision: int, trim: bool =
     return f"{sign}{mantissa}e{'-' if e < 0 else '+'}{abs(e):02d}"
 
 
-#: The largest numerator or denominator, in bits, :func:`format_number` accepts (about
+#: The largest numerator or denominator, in bits, `format_number` accepts (about
 #: 3900 digits: Python prints integers of at most 4300 digits).
 _FORMAT_BITS = 13_000
 
@@ -114,7 +114,8 @@ _FORMAT_BITS = 13_000
 def exact_ratio(x: object) -> tuple[int, int]:
     """Return ``(numerator, denominator)`` of a finite real number, exactly.
 
-    Any number :func:`trinormal.validation.check_coordinate` reads (sympy
+    Any number [`trinormal.validation.check_coordinate`][trinormal.validation.check_coordinate]
+    reads (sympy
     numbers too), with numerator and denominator of up to about 3900 digits.
 
     Examples
@@ -200,7 +201,7 @@ def format_number(
 def format_vector(
     xs: Iterable[float | int | Fraction | Decimal], precision: int = 4, trim: bool = False
 ) -> str:
-    """Format a vector as ``(x, y, z)`` with :func:`format_number`.
+    """Format a vector as ``(x, y, z)`` with [`format_number`][trinormal.display.format_number].
 
     Examples
     --------

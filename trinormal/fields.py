@@ -2,15 +2,17 @@
 
 The CLI table, the explorer's readout, the summary sentence, the site's
 calculator and its 3D view all list the same rows in the same order with the
-same labels. They read them from :data:`FIELDS`; the site receives them through
+same labels. They read them from `FIELDS`; the site receives them through
 the constants file the mkdocs hook writes from this module at build time.
 
 Each field's value is the string ``TriangleNormal.format(precision)[key]``;
-its ``kind`` says how that string is written (:meth:`Field.text`), and the same
+its ``kind`` says how that string is written ([`Field.text`][trinormal.fields.Field.text]), and the
+same
 key names the float value in ``TriangleNormal.to_dict()``.
 
-Adding an output is one entry in :data:`FIELDS` plus its computation in
-:mod:`trinormal.core`: the attribute of :class:`~trinormal.TriangleNormal` of
+Adding an output is one entry in `FIELDS` plus its computation in
+[`trinormal.core`][trinormal.core]: the attribute of
+[`TriangleNormal`][trinormal.core.TriangleNormal] of
 the same name (the float value) and its entry in ``TriangleNormal._exact_fields``
 (the exact value the text is rounded from). Code that reads the fields looks
 them up as ``fields.FIELDS`` when it runs, never copies them.
@@ -38,7 +40,7 @@ __all__ = ["FIELDS", "KINDS", "Field", "Surd", "field_labels", "fields_spec"]
 Surd = tuple[bool, int, int]
 
 #: The kinds of value a field holds, and the exact value each is computed as:
-#: ``"vector"``, three :data:`Surd`; ``"scalar"``, one; ``"equation"``, the plane's
+#: ``"vector"``, three `Surd`; ``"scalar"``, one; ``"equation"``, the plane's
 #: unit normal (three) and its offset (one). ``None`` stands for "undefined".
 KINDS: tuple[str, ...] = ("vector", "scalar", "equation")
 
@@ -56,9 +58,13 @@ class Field:
     meaning : str
         A short phrase for readers and screen readers.
     kind : {"vector", "scalar", "equation"}
-        What the value looks like when written (see :data:`KINDS`).
+        What the value looks like when written (see `KINDS`).
     short : str
         The name in a one-line summary, such as ``"area"`` in ``area = 0.5000``.
+    page_label : str
+        The row's heading on the site's calculator page, for a reader.
+    output_id : str
+        The ``id`` of the calculator page's ``<output>`` that shows the value.
     label_acb : str, optional
         The label for the order A→C→B, where it differs from ``label``.
     """
@@ -68,6 +74,8 @@ class Field:
     meaning: str
     kind: str
     short: str
+    page_label: str
+    output_id: str
     label_acb: str = ""
 
     def label_for(self, winding: str) -> str:
@@ -101,7 +109,8 @@ class Field:
     def write(self, value: Any, number: Callable[[Surd], str]) -> str:
         """Write an exact value of this field's kind, each number written by ``number``.
 
-        :meth:`text` with a number formatter chosen by the caller, such as one
+        [`text`][trinormal.fields.Field.text] with a number formatter chosen by the caller, such as
+        one
         that remembers numbers several fields share (the unit normal and the
         plane's coefficients).
         """
@@ -130,14 +139,35 @@ class Field:
 
 #: Every output row, in the order readouts show them.
 FIELDS: tuple[Field, ...] = (
-    Field("u", "U = B − A", "the first edge, from A", "vector", "U", label_acb="U = C − A"),
-    Field("v", "V = C − A", "the second edge, from A", "vector", "V", label_acb="V = B − A"),
-    Field("normal", "N = U × V", "the normal, the cross product of the edges", "vector", "N"),
-    Field("magnitude", "|N|", "the length of N, twice the area", "scalar", "|N|"),
-    Field("area", "area = |N|/2", "the area of the triangle", "scalar", "area"),
-    Field("unit_normal", "unit normal", "N divided by its length", "vector", "unit normal"),
-    Field("plane", "plane", "the plane through A, B and C", "equation", "plane"),
-)
+    Field(
+        "u", "U = B − A", "the first edge, from A", "vector", "U",
+        "Edge U", "out-u", label_acb="U = C − A",
+    ),
+    Field(
+        "v", "V = C − A", "the second edge, from A", "vector", "V",
+        "Edge V", "out-v", label_acb="V = B − A",
+    ),
+    Field(
+        "normal", "N = U × V", "the normal, the cross product of the edges", "vector", "N",
+        "Normal N = U × V", "out-normal",
+    ),
+    Field(
+        "magnitude", "|N|", "the length of N, twice the area", "scalar", "|N|",
+        "Length |N|", "out-magnitude",
+    ),
+    Field(
+        "area", "area = |N|/2", "the area of the triangle", "scalar", "area",
+        "Area |N| / 2", "out-area",
+    ),
+    Field(
+        "unit_normal", "unit normal", "N divided by its length", "vector", "unit normal",
+        "Unit normal N / |N|", "out-unit",
+    ),
+    Field(
+        "plane", "plane", "the plane through A, B and C", "equation", "plane",
+        "Plane n · x = n · A", "out-plane",
+    ),
+)  # fmt: skip
 
 
 def field_labels(winding: str = "ABC") -> list[tuple[str, str]]:
@@ -167,6 +197,8 @@ def fields_spec() -> list[dict[str, str]]:
             "meaning": f.meaning,
             "kind": f.kind,
             "short": f.short,
+            "page_label": f.page_label,
+            "output_id": f.output_id,
         }
         for f in FIELDS
     ]

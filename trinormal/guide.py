@@ -3,7 +3,8 @@ r"""The guide's inputs and published numbers, and the same numbers rebuilt by tr
 The guide that trinormal teaches prints a worked example, a four-row comparison
 table and a table of floating-point precisions. This module keeps what the
 guide *publishes* (as data, exactly as printed) next to functions that
-*recompute* every value from :func:`trinormal.triangle_normal`, so a test can
+*recompute* every value from [`trinormal.triangle_normal`][trinormal.core.triangle_normal], so a
+test can
 check one against the other and the documentation site can show numbers
 generated at build time instead of typed in.
 
@@ -87,7 +88,7 @@ def worked_example(precision: int = 4, trim: bool = True) -> dict[str, str]:
     Parameters
     ----------
     precision : int, default 4
-        Decimal places (see :func:`trinormal.format_number`).
+        Decimal places (see [`trinormal.format_number`][trinormal.display.format_number]).
     trim : bool, default True
         Drop trailing zeros, as the guide prints its numbers.
 
@@ -200,8 +201,10 @@ def comparison_table_cells(
 ) -> list[list[str]]:
     """Recompute the guide's comparison table: a header row, then one row per triangle.
 
-    Every number is computed by :func:`trinormal.triangle_normal` from the
-    row's vertices and formatted by :meth:`TriangleNormal.format` with
+    Every number is computed by [`trinormal.triangle_normal`][trinormal.core.triangle_normal] from
+    the
+    row's vertices and formatted by [`TriangleNormal.format`][trinormal.core.TriangleNormal.format]
+    with
     trailing zeros trimmed; nothing is copied from the published cells.
 
     Examples

@@ -3,13 +3,13 @@
 A mesh is two arrays: ``vertices`` of shape (V, 3), one point per row, and
 ``faces`` of shape (F, 3), three row indices into ``vertices`` per triangle.
 Face ``(i, j, k)`` has the normal ``N = (v[j] - v[i]) × (v[k] - v[i])``, the
-same formula and the same winding as :func:`trinormal.triangle_normal`.
+same formula and the same winding as [`trinormal.triangle_normal`][trinormal.core.triangle_normal].
 
 The promises, for every function here:
 
 * No NaN and no ``RuntimeWarning``, whatever the input. A degenerate face (the
   sine of the angle between its edges is at most ``tol``, the scale-invariant
-  test of :mod:`trinormal.tolerances`) gets a zero normal; a vertex that
+  test of [`trinormal.tolerances`][trinormal.tolerances]) gets a zero normal; a vertex that
   touches only degenerate faces gets a zero vertex normal.
 * Coordinates near 1e-200 or 1e200 still give correct unit normals: rows that
   would underflow or overflow are redone with their edges scaled by powers of
@@ -17,15 +17,16 @@ The promises, for every function here:
 * float32 vertices are computed in float64 (the product of two float32 numbers
   is exact in float64) and the result comes back as float32. Any other real
   input is computed and returned in float64.
-* Bad input raises a :class:`ValueError` that names the first bad row.
+* Bad input raises a `ValueError` that names the first bad row.
 
 Speed comes from plain numpy: the coordinates are split into three contiguous
 arrays, faces are processed in blocks of a few thousand so that every
 temporary stays in the CPU cache, and every operation writes in place. There
 is no Python loop over faces (only over blocks of them).
 
-The small meshes :func:`cube`, :func:`icosphere`, :func:`torus` and
-:func:`terrain` are generated in code, outward-facing and consistently wound.
+The small meshes [`cube`][trinormal.mesh.cube], [`icosphere`][trinormal.mesh.icosphere],
+[`torus`][trinormal.mesh.torus] and
+[`terrain`][trinormal.mesh.terrain] are generated in code, outward-facing and consistently wound.
 
 Examples
 --------
@@ -70,7 +71,7 @@ IntArray = npt.NDArray[np.intp]
 BoolArray = npt.NDArray[np.bool_]
 Weighting = Literal["angle", "area", "uniform"]
 
-#: The vertex-normal weightings :func:`vertex_normals` accepts.
+#: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 
 #: Faces per block: small enough that the block's temporaries stay in cache.
@@ -164,7 +165,7 @@ def _raise_range_error(arr: npt.NDArray[Any], limit: int) -> None:
 
 
 def _check_tol(tol: float) -> float:
-    """Return the tolerance as a float, checked by :func:`trinormal.validation.check_tolerance`."""
+    """Return the tolerance as a float, checked by `trinormal.validation.check_tolerance`."""
     n, d = check_tolerance(tol)
     return n / d  # 0 <= tol <= 1: no overflow
 
@@ -498,7 +499,8 @@ def degenerate_faces(
 ) -> BoolArray:
     """Which faces are degenerate: the sine of the angle between their edges is at most ``tol``.
 
-    The test ``|N| <= tol · |U| · |V|`` is the one :func:`trinormal.triangle_normal`
+    The test ``|N| <= tol · |U| · |V|`` is the one
+    [`trinormal.triangle_normal`][trinormal.core.triangle_normal]
     uses; it does not depend on the mesh's scale or position's units.
 
     Parameters
@@ -703,7 +705,8 @@ def consistent_winding(faces: npt.ArrayLike) -> bool:
     Returns
     -------
     bool
-        True when no directed edge appears twice (see :func:`inconsistent_edges`).
+        True when no directed edge appears twice (see
+        [`inconsistent_edges`][trinormal.mesh.inconsistent_edges]).
 
     Examples
     --------

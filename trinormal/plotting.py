@@ -1,11 +1,11 @@
 """Figures for the notebooks and the site: one colour code, legible from the back of a room.
 
-Every helper returns a :class:`matplotlib.figure.Figure` with an opaque white
+Every helper returns a `matplotlib.figure.Figure` with an opaque white
 background and a short text alternative in ``fig.alt_text``. The colours are
-the roles of :mod:`trinormal.colors` (A, B, C, U, V, N, front and back faces,
+the roles of [`trinormal.colors`][trinormal.colors] (A, B, C, U, V, N, front and back faces,
 the x, y and z axes), the same code the 3D explorer and the site use. Text is
-at least 12 pt and lines at least 1.5 px at the size :func:`show` displays a
-figure (100 pixels per inch of figure), and :func:`show` stores the picture at
+at least 12 pt and lines at least 1.5 px at the size [`show`][trinormal.plotting.show] displays a
+figure (100 pixels per inch of figure), and [`show`][trinormal.plotting.show] stores the picture at
 twice that resolution for high-DPI screens and projectors.
 """
 
@@ -51,7 +51,7 @@ PALETTE: dict[str, str] = {
     "black": "#000000",
 }
 
-#: Colours for the x, y and z components: the roles ``x``, ``y``, ``z`` of :mod:`trinormal.colors`.
+#: Colours for the x, y and z components: the roles ``x``, ``y``, ``z`` of `trinormal.colors`.
 AXIS_COLORS: tuple[str, str, str] = (ROLE_COLORS["x"], ROLE_COLORS["y"], ROLE_COLORS["z"])
 
 #: The colour of a lit surface in the shading figures: a warm grey, so that the role colours
@@ -86,7 +86,7 @@ F = TypeVar("F", bound=Callable[..., Any])
 
 
 def _styled(fn: F) -> F:
-    """Build the figure under :data:`STYLE`."""
+    """Build the figure under `STYLE`."""
 
     @functools.wraps(fn)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
@@ -110,7 +110,7 @@ def show(fig: Figure, alt: str | None = None) -> None:
 
     Notes
     -----
-    The PNG is stored at :data:`SAVE_DPI` and shown :data:`DISPLAY_DPI` pixels
+    The PNG is stored at `SAVE_DPI` and shown `DISPLAY_DPI` pixels
     per inch of figure wide, so a 12 pt label is 12 pt on screen and every
     pixel of the picture is two pixels of a high-DPI screen. Displaying
     explicitly (instead of ending a cell with ``fig``) shows the image once,
@@ -162,7 +162,7 @@ def right_hand_rule_figure(
     Parameters
     ----------
     a, b, c : sequence of 3 numbers
-        The vertices (anything :func:`trinormal.triangle_normal` reads).
+        The vertices (anything [`trinormal.triangle_normal`][trinormal.core.triangle_normal] reads).
     winding : {"ABC", "ACB"}, default "ABC"
         Which edge is U and which is V.
     title : str, optional
@@ -578,7 +578,8 @@ def shading_figure(
     light : sequence of 3 floats
         Direction towards the light (normalised here).
     weighting : {"angle", "area", "uniform"}
-        How :func:`trinormal.mesh.vertex_normals` averages the face normals.
+        How [`trinormal.mesh.vertex_normals`][trinormal.mesh.vertex_normals] averages the face
+        normals.
     subdivisions : int
         How finely each triangle is cut for the smooth panel.
     elev, azim : float
@@ -659,7 +660,7 @@ def culling_figure(
     matplotlib.figure.Figure
         Three panels: the camera's view of the front faces; all faces from the
         side, front faces in the ``front`` colour and back faces in the ``back``
-        colour of :mod:`trinormal.colors`; the front faces alone from the side.
+        colour of [`trinormal.colors`][trinormal.colors]; the front faces alone from the side.
     """
     import matplotlib.pyplot as plt
     import numpy as np

@@ -1,10 +1,10 @@
 """The worked solution, step by step: one engine for the CLI, the notebooks and sympy.
 
-:func:`working` gathers every exact value a worked solution shows for one
+[`working`][trinormal.steps.working] gathers every exact value a worked solution shows for one
 result: the points, the edges, N and its three cross-product terms, |N|² and
 |N| = c·√m (a rational times the square root of an integer), the area, the
-unit normal and the plane's offset. :func:`steps` writes them out as plain
-text (the CLI's ``--steps``); :func:`trinormal.symbolic.steps` writes the same
+unit normal and the plane's offset. [`steps`][trinormal.cli.steps] writes them out as plain
+text (the CLI's ``--steps``); [`trinormal.symbolic.steps`][trinormal.symbolic.steps] writes the same
 steps in LaTeX for the notebooks. Both read their numbers and the order of the
 cross-product terms from here.
 
@@ -66,7 +66,7 @@ class Working:
     Irrational values are written ``coefficient · √radicand`` with one
     radicand shared by all of them: |N| = ``root``·√m, the area =
     ``root``/2·√m, each unit-normal component ``unit_normal[i]``·√m and the
-    plane's offset ``offset``·√m (m is :attr:`radicand`, free of small squares).
+    plane's offset ``offset``·√m (m is `radicand`, free of small squares).
 
     Attributes
     ----------
@@ -122,7 +122,8 @@ def working(result: TriangleNormal) -> Working:
     Parameters
     ----------
     result : TriangleNormal
-        A result from :func:`trinormal.triangle_normal` (in any arithmetic:
+        A result from [`trinormal.triangle_normal`][trinormal.core.triangle_normal] (in any
+        arithmetic:
         the working is always exact).
 
     Returns
@@ -204,7 +205,7 @@ def steps(r: TriangleNormal, precision: int = 4) -> list[tuple[str, str]]:
     Parameters
     ----------
     r : TriangleNormal
-        A result from :func:`trinormal.triangle_normal`.
+        A result from [`trinormal.triangle_normal`][trinormal.core.triangle_normal].
     precision : int, default 4
         Decimal places for the rounded decimals.
 

@@ -1,11 +1,12 @@
 r"""The normal of a triangle, derived and proven with sympy.
 
 Nothing here is typed in: the component formulas come from
-:meth:`sympy.Matrix.cross` applied to the edge vectors, the identities are
+`sympy.Matrix.cross` applied to the edge vectors, the identities are
 proven by simplifying their two sides' difference to zero, and
-:func:`steps` substitutes a reader's own numbers into the derived formulas with
+[`steps`][trinormal.symbolic.steps] substitutes a reader's own numbers into the derived formulas
+with
 exact rational arithmetic. The steps and their exact inputs are those of
-:mod:`trinormal.steps`, the engine behind the CLI's ``--steps`` too; this
+[`trinormal.steps`][trinormal.steps], the engine behind the CLI's ``--steps`` too; this
 module writes them in LaTeX.
 
 The symbols are the guide's own: A = (x1, y1, z1), B = (x2, y2, z2),
@@ -80,7 +81,7 @@ def _vec(symbols: Sequence[Any]) -> sp.Matrix:
 
 
 def cross(u: Iterable[Any], v: Iterable[Any]) -> sp.Matrix:
-    """Return the cross product ``u × v`` of two 3-vectors, by :meth:`sympy.Matrix.cross`.
+    """Return the cross product ``u × v`` of two 3-vectors, by `sympy.Matrix.cross`.
 
     Examples
     --------
@@ -377,9 +378,10 @@ def solution(
 ) -> Solution:
     """Compute every value of the worked solution exactly, with sympy.
 
-    The coordinates are read exactly by :func:`trinormal.triangle_normal`
+    The coordinates are read exactly by
+    [`trinormal.triangle_normal`][trinormal.core.triangle_normal]
     (whose verdict on degeneracy is used), and N comes from substituting the
-    edges into the formulas :func:`normal_components` derived.
+    edges into the formulas [`normal_components`][trinormal.symbolic.normal_components] derived.
 
     Examples
     --------
@@ -393,7 +395,7 @@ def solution(
 
 
 def _solve(r: TriangleNormal) -> tuple[Solution, Working]:
-    """Compute :func:`solution` for a result; return it with the engine's working behind it."""
+    """Compute `solution` for a result; return it with the engine's working behind it."""
     w = working(r)
     A, B, C = _exact_vertex(w.a), _exact_vertex(w.b), _exact_vertex(w.c)
     u, v = _exact_vertex(w.u), _exact_vertex(w.v)
@@ -425,7 +427,7 @@ def _solve(r: TriangleNormal) -> tuple[Solution, Working]:
 
 #: Up to this size of |N|²·D⁴ (in bits, D the common denominator of the coordinates)
 #: sympy takes the square root itself; beyond it the root is built from the split
-#: into a square and the rest that :mod:`trinormal.steps` makes.
+#: into a square and the rest that `trinormal.steps` makes.
 _SYMPY_SQRT_BITS = 600
 
 
@@ -450,24 +452,25 @@ def steps(
 
     Coordinates are read exactly (``"0.1"`` is 1/10, ``"1/3"`` is one third; a
     float is its exact binary value), substituted into the formulas derived
-    by :func:`normal_components`, and kept exact: rationals stay fractions and
+    by [`normal_components`][trinormal.symbolic.normal_components], and kept exact: rationals stay
+    fractions and
     square roots stay radicals where sympy keeps them (``√2/2``).
 
     Parameters
     ----------
     a, b, c : sequence of 3 real numbers or strings
-        The vertices, as for :func:`trinormal.triangle_normal`.
+        The vertices, as for [`trinormal.triangle_normal`][trinormal.core.triangle_normal].
     winding : {"ABC", "ACB"}, default "ABC"
         ``"ACB"`` takes U = C − A and V = B − A, flipping N.
     tol : real, default 1e-12
-        Degeneracy threshold, as for :func:`trinormal.triangle_normal`.
+        Degeneracy threshold, as for [`trinormal.triangle_normal`][trinormal.core.triangle_normal].
 
     Returns
     -------
     list of Step
         ``(label, latex)`` pairs: the points, U, V, N's three components, N,
         |N|, the area, then the unit normal and the plane, or the degenerate
-        verdict. The values behind them are :func:`solution`'s.
+        verdict. The values behind them are [`solution`][trinormal.symbolic.solution]'s.
 
     Examples
     --------

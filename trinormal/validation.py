@@ -8,8 +8,8 @@ what these functions say about them, and both sides are tested against it.
 
 The rules
 ---------
-* A **coordinate** is an ``int``, ``float``, :class:`~fractions.Fraction`,
-  :class:`~decimal.Decimal`, numpy real scalar, sympy ``Integer``,
+* A **coordinate** is an ``int``, ``float``, `Fraction`,
+  `Decimal`, numpy real scalar, sympy ``Integer``,
   ``Rational`` or ``Float``, or a string holding a decimal (``"0.1"``,
   ``"-2.5e3"``, ``".5"``, ``"5."``) or a fraction (``"1/3"``). It is read as
   an exact ratio. A sympy ``Float`` is its exact binary value; an exact sympy
@@ -19,13 +19,13 @@ The rules
   ``"1_000"`` and ``"0x10"``); the minus sign may be ``-`` or the Unicode minus
   ``−`` (as printed text uses it); spaces around the number, a byte order mark
   and Unicode spaces such as the no-break space are ignored. At most
-  :data:`MAX_TEXT_LENGTH` characters.
+  `MAX_TEXT_LENGTH` characters.
 * **One size limit for every type**: the value, as a fraction in lowest terms,
-  has a numerator and a denominator of at most :data:`MAX_DIGITS` digits each
+  has a numerator and a denominator of at most `MAX_DIGITS` digits each
   (every float qualifies). It is checked before any large arithmetic, so an
   input such as ``Decimal("1e1000000")`` is refused at once. The nine
   coordinates of a triangle together must also fit over one common
-  denominator with at most :data:`MAX_COMMON_DIGITS` digits in it and in every
+  denominator with at most `MAX_COMMON_DIGITS` digits in it and in every
   numerator. Within these limits every result can be printed, turned into
   JSON and worked step by step.
 * A **vertex** is a sized, ordered sequence of exactly three coordinates: a
@@ -428,7 +428,8 @@ def check_common(coords: list[tuple[int, int]]) -> tuple[tuple[int, ...], int]:
     Parameters
     ----------
     coords : list of (int, int)
-        Up to nine ratios ``(n, d)`` with ``d > 0``, as :func:`check_coordinate`
+        Up to nine ratios ``(n, d)`` with ``d > 0``, as
+        [`check_coordinate`][trinormal.validation.check_coordinate]
         returns them, in the order ``A.x`` … ``C.z`` (that is how messages name them).
 
     Returns
@@ -442,7 +443,7 @@ def check_common(coords: list[tuple[int, int]]) -> tuple[tuple[int, ...], int]:
     ------
     ValueError
         When ``D`` or a numerator over it would need more than
-        :data:`MAX_COMMON_DIGITS` digits; the message names the coordinate
+        `MAX_COMMON_DIGITS` digits; the message names the coordinate
         that made it so.
 
     Examples
@@ -503,7 +504,8 @@ def check_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
     Returns
     -------
     list of (int, int)
-        The three exact ratios, as :func:`check_coordinate` reads them.
+        The three exact ratios, as [`check_coordinate`][trinormal.validation.check_coordinate] reads
+        them.
 
     Raises
     ------
@@ -558,7 +560,7 @@ _WINDINGS = {"ABC": Winding.ABC, "ACB": Winding.ACB}
 
 
 def check_winding(winding: object, name: str = "winding") -> Winding:
-    """Read a winding: ``"ABC"``, ``"ACB"`` or a :class:`Winding`.
+    """Read a winding: ``"ABC"``, ``"ACB"`` or a [`Winding`][trinormal.core.Winding].
 
     Parameters
     ----------
@@ -664,7 +666,8 @@ def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     Parameters
     ----------
     tol : real or str
-        Any type :func:`check_coordinate` reads, so ``Decimal("1e400")`` is
+        Any type [`check_coordinate`][trinormal.validation.check_coordinate] reads, so
+        ``Decimal("1e400")`` is
         refused at once rather than overflowing.
     name : str, default "tol"
         How messages name it (the command line says ``--tol``).
@@ -677,10 +680,11 @@ def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     Raises
     ------
     ValueError
-        A value outside 0 to 1, or one :func:`check_coordinate` refuses; the
+        A value outside 0 to 1, or one [`check_coordinate`][trinormal.validation.check_coordinate]
+        refuses; the
         message then ends with the rule.
     TypeError
-        A type :func:`check_coordinate` refuses.
+        A type [`check_coordinate`][trinormal.validation.check_coordinate] refuses.
 
     Examples
     --------

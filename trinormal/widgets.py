@@ -1,4 +1,4 @@
-"""Compatibility: the explorer now lives in :mod:`trinormal.explorer`.
+"""Compatibility: the explorer now lives in [`trinormal.explorer`][trinormal.explorer].
 
 ``from trinormal.widgets import Explorer`` keeps working.
 

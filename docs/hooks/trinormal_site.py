@@ -5,14 +5,23 @@
   API reference), so a page can never disagree with the code.
 * The Notebooks section of the navigation lists every ``notebooks/*.ipynb``.
 * Notebook pages are post-processed: MathJax and widget loaders that point at a
-  CDN are removed (the site loads its own MathJax), and each widget output is
+  CDN are removed, and each widget output is
   replaced by a note, a picture of the explorer and its plain-text readout,
   because a static page has no kernel to drive the sliders.
 * ``assets/images/explorer.png`` is drawn from :class:`trinormal.widgets.Explorer`.
+* The 3D view (``trinormal/explorer/static/``: the bundle built from ``js/explorer/``
+  and its licence file) is copied to ``assets/explorer/``, and
+  ``assets/javascripts/trinormal-constants.js`` is written from the package: the
+  output fields, the colour code, the precision range and the view's grid and range.
+  On the explorer notebook's page the explorer's output becomes that live view.
+* Pages with math (and only those) get KaTeX (``assets/vendor/katex/``, copied from
+  npm by ``js/vendor/copy-vendor.mjs``) and ``assets/javascripts/math.js``; the search
+  index gets its math as plain text (``on_post_build``).
 """
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import copy
 import html
@@ -25,7 +34,7 @@ import shlex
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeGuard
 
 from mkdocs.config.defaults import MkDocsConfig
 from mkdocs.structure.files import File, Files
@@ -39,6 +48,9 @@ EXPLORER_PNG = "assets/images/explorer.png"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
 PLACEHOLDER = re.compile(r"\{\{\s*trinormal:(\w+)((?:\s+[^}]*?)?)\s*\}\}")
+EXPLORER_STATIC = ROOT / "trinormal" / "explorer" / "static"
+EXPLORER_ASSETS = "assets/explorer"
+CONSTANTS_JS = "assets/javascripts/trinormal-constants.js"
 
 # --------------------------------------------------------------------------- notebooks
 
@@ -103,9 +115,14 @@ def widget_note(text_plain: str) -> str:
 
 
 def static_notebook(path: Path) -> dict[str, Any]:
-    """A copy of a notebook with every widget output replaced by a static note."""
+    """A copy of a notebook with every widget output replaced by a static note.
+
+    On the explorer notebook's page the explorer's output is replaced by the live
+    3D view instead (see :func:`explorer_outputs`), with the note as its fallback.
+    """
     nb = json.loads(path.read_text(encoding="utf-8"))
     nb = copy.deepcopy(nb)
+    live = explorer_outputs(nb, path)
     nb.get("metadata", {}).pop("widgets", None)
     for cell in nb.get("cells", []):
         outputs = cell.get("outputs")
@@ -114,7 +131,15 @@ def static_notebook(path: Path) -> dict[str, Any]:
         new = []
         for out in outputs:
             data = out.get("data") or {}
-            if WIDGET_VIEW in data or WIDGET_STATE in data:
+            if id(out) in live:
+                new.append(
+                    {
+                        "output_type": "display_data",
+                        "metadata": {},
+                        "data": {"text/html": live_explorer_html(live[id(out)])},
+                    }
+                )
+            elif WIDGET_VIEW in data or WIDGET_STATE in data:
                 plain = data.get("text/plain", "")
                 if isinstance(plain, list):
                     plain = "".join(plain)
@@ -173,6 +198,233 @@ def install_notebook_filter() -> None:
 
     nb2html._trinormal = True  # type: ignore[attr-defined]
     convert.nb2html = nb2html
+
+
+# --------------------------------------------------------------------------- the live 3D view
+
+#: The keys of an ExplorerView's stored widget state that the site's view reads.
+EXPLORER_KEYS = (
+    "a",
+    "b",
+    "c",
+    "winding",
+    "precision",
+    "step",
+    "bounds",
+    "show_parallelogram",
+    "show_unit_normal",
+)
+
+
+def view_defaults() -> dict[str, Any]:
+    """The view's grid step and coordinate range, as the package's ExplorerView sets them."""
+    from trinormal.explorer.view import ExplorerView
+
+    traits = ExplorerView.class_traits()
+    return {
+        "step": str(traits["step"].default()),
+        "bounds": [float(x) for x in traits["bounds"].default()],
+        "a": list(traits["a"].default()),
+        "b": list(traits["b"].default()),
+        "c": list(traits["c"].default()),
+    }
+
+
+def site_constants() -> dict[str, Any]:
+    """Everything the site's hand-written JavaScript must not list itself."""
+    from trinormal.colors import palette
+    from trinormal.display import MAX_PRECISION
+    from trinormal.fields import fields_spec
+
+    view = view_defaults()
+    return {
+        "fields": fields_spec(),
+        "palette": palette(),
+        "precision": {"min": 0, "max": MAX_PRECISION},
+        "view": {"step": view["step"], "bounds": view["bounds"]},
+    }
+
+
+def constants_js() -> str:
+    """``assets/javascripts/trinormal-constants.js``: :func:`site_constants` as one object."""
+    body = json.dumps(site_constants(), ensure_ascii=False, indent=1)
+    return (
+        "/* Written at build time by docs/hooks/trinormal_site.py from the trinormal package\n"
+        " * (trinormal.fields, .colors, .display and .explorer): do not edit. */\n"
+        f"window.TRINORMAL_CONSTANTS = {body};\n"
+    )
+
+
+def _widget_models(nb: dict[str, Any]) -> dict[str, Any]:
+    meta = nb.get("metadata", {}).get("widgets", {}).get(WIDGET_STATE, {})
+    models = meta.get("state", {}) if isinstance(meta, dict) else {}
+    return models if isinstance(models, dict) else {}
+
+
+def _is_explorer_view(model: Any) -> bool:
+    if not isinstance(model, dict):
+        return False
+    state = model.get("state") or {}
+    names = (str(state.get("_anywidget_id", "")), str(model.get("model_name", "")))
+    if any(n.endswith("ExplorerView") for n in names):
+        return True
+    return model.get("model_module") == "anywidget" and {"a", "b", "c", "winding"} <= set(state)
+
+
+def _find_explorer(models: dict[str, Any], model_id: str, seen: set[str]) -> dict[str, Any] | None:
+    """The ExplorerView's state under a widget (itself or a child, at any depth)."""
+    if model_id in seen or model_id not in models:
+        return None
+    seen.add(model_id)
+    model = models[model_id]
+    if _is_explorer_view(model):
+        return dict(model.get("state") or {})
+    state = model.get("state") or {}
+    children = state.get("children") or []
+    for child in children if isinstance(children, list) else []:
+        if isinstance(child, str) and child.startswith("IPY_MODEL_"):
+            found = _find_explorer(models, child[len("IPY_MODEL_") :], seen)
+            if found is not None:
+                return found
+    return None
+
+
+def _literal_kwargs(call: ast.Call) -> dict[str, Any]:
+    found: dict[str, Any] = {}
+    for kw in call.keywords:
+        if kw.arg in EXPLORER_KEYS:
+            with contextlib.suppress(ValueError, TypeError, SyntaxError):
+                found[kw.arg] = ast.literal_eval(kw.value)
+    return found
+
+
+def _is_explorer_call(node: object) -> TypeGuard[ast.Call]:
+    if not isinstance(node, ast.Call):
+        return False
+    name = getattr(node.func, "id", None) or getattr(node.func, "attr", None)
+    return name == "Explorer"
+
+
+def _explorer_shown(source: str, known: dict[str, dict[str, Any]]) -> dict[str, Any] | None:
+    """What a cell shows of an explorer, from its source: the literal arguments, or None.
+
+    ``known`` maps variable names to the explorers made so far (``ex = Explorer(...)``,
+    updated by ``ex.set(...)``); the cell's assignments and calls update it. The cell shows
+    an explorer when its last line is ``Explorer(...)``, a known name or an attribute of one
+    (``ex``, ``ex.view``), or when it calls ``Explorer(...)`` anywhere (``display(...)``).
+    """
+    try:
+        tree = ast.parse(source)
+    except SyntaxError:
+        return None
+    for stmt in tree.body:
+        value = getattr(stmt, "value", None)
+        if isinstance(stmt, ast.Assign) and _is_explorer_call(value):
+            for target in stmt.targets:
+                if isinstance(target, ast.Name):
+                    known[target.id] = _literal_kwargs(value)
+        elif (
+            isinstance(stmt, ast.Expr)
+            and isinstance(value, ast.Call)
+            and isinstance(value.func, ast.Attribute)
+            and value.func.attr == "set"
+            and isinstance(value.func.value, ast.Name)
+            and value.func.value.id in known
+        ):
+            known[value.func.value.id] = {
+                **known[value.func.value.id],
+                **_literal_kwargs(value),
+            }
+    last = tree.body[-1] if tree.body else None
+    if isinstance(last, ast.Expr):
+        node = last.value
+        if _is_explorer_call(node):
+            return _literal_kwargs(node)
+        while isinstance(node, ast.Attribute):
+            node = node.value
+        if isinstance(node, ast.Name) and node.id in known:
+            return dict(known[node.id])
+    for node in ast.walk(tree):
+        if _is_explorer_call(node):
+            return _literal_kwargs(node)
+    return None
+
+
+def _view_init(values: dict[str, Any]) -> dict[str, Any]:
+    """Initial values for the site's view: the explorer's own defaults, then ``values``."""
+    from trinormal.explorer.state import coordinate_text
+
+    init: dict[str, Any] = {k: v for k, v in view_defaults().items()}
+    for key in EXPLORER_KEYS:
+        if key not in values:
+            continue
+        value = values[key]
+        if key in ("a", "b", "c"):
+            try:
+                value = [
+                    coordinate_text(x, f"{key.upper()}.{'xyz'[i]}") for i, x in enumerate(value)
+                ]
+            except (TypeError, ValueError):
+                continue
+            if len(value) != 3:
+                continue
+        init[key] = value
+    init["show_readout"] = True
+    return init
+
+
+def explorer_outputs(nb: dict[str, Any], path: Path) -> dict[int, dict[str, Any]]:
+    """The outputs of a notebook that show an explorer, by ``id()``, with the view's initial values.
+
+    An output shows an explorer when the widget it displays is, or contains, an
+    ``ExplorerView`` in the notebook's stored widget state; its stored values
+    start the live view. On the explorer notebook (``*explorer*.ipynb``) with no
+    ExplorerView in its stored widget state (``make notebooks`` stores none), the first
+    widget output of each cell that shows an explorer (see :func:`_explorer_shown`) is
+    used, started from the literal arguments in the notebook's code (or the explorer's
+    defaults).
+    """
+    models = _widget_models(nb)
+    found: dict[int, dict[str, Any]] = {}
+    has_view = any(_is_explorer_view(m) for m in models.values())
+    is_explorer_notebook = "explorer" in path.stem and not has_view
+    known: dict[str, dict[str, Any]] = {}
+    for cell in nb.get("cells", []):
+        if cell.get("cell_type") != "code":
+            continue
+        source = cell.get("source", "")
+        source = "".join(source) if isinstance(source, list) else str(source)
+        call = _explorer_shown(source, known) if is_explorer_notebook else None
+        for out in cell.get("outputs") or []:
+            data = out.get("data") or {}
+            view = data.get(WIDGET_VIEW)
+            if not isinstance(view, dict):
+                continue
+            state = _find_explorer(models, str(view.get("model_id", "")), set())
+            if state is not None:
+                found[id(out)] = _view_init(state)
+            elif call is not None:
+                found[id(out)] = _view_init(call)
+                call = None  # one live view per cell
+    return found
+
+
+def live_explorer_html(init: dict[str, Any]) -> str:
+    """The live 3D view (mounted by explorer-site.js), with the picture as its fallback."""
+    data = html.escape(json.dumps(init, ensure_ascii=False), quote=True)
+    return (
+        f'<div class="tn-explorer-live" data-explorer="{data}">'
+        '<p class="tn-explorer-caption">This is the notebook\'s explorer, live in your browser: '
+        "turn the view, drag A, B or C, flip the order, show the parallelogram. There is no "
+        "Python kernel here: this page computes with its own exact arithmetic, which prints the "
+        "same numbers as the package. The notebook's sliders and text boxes are not shown.</p>"
+        '<noscript><div class="admonition note tn-widget-note tn-explorer-fallback">'
+        '<p class="admonition-title">Interactive widget</p>'
+        "<p>With JavaScript on, this page shows the explorer live. Here is a picture of it.</p>"
+        f'<p><img src="../../{EXPLORER_PNG}" alt="{html.escape(explorer_alt())}" '
+        'width="720" loading="lazy"></p>'
+        "</div></noscript></div>"
+    )
 
 
 # --------------------------------------------------------------------------- the explorer picture
@@ -278,16 +530,19 @@ def _api(args: list[str], page: Page, config: MkDocsConfig) -> str:
         "guide": "The guide's numbers",
         "exercises": "Exercises",
         "cli": "Command line",
+        "explorer": "The 3D explorer",
     }
     order = list(titles)
     mods = sorted(
-        (p.stem for p in (ROOT / "trinormal").glob("*.py") if not p.stem.startswith("_")),
+        [p.stem for p in (ROOT / "trinormal").glob("*.py") if not p.stem.startswith("_")]
+        + [p.parent.name for p in (ROOT / "trinormal").glob("*/__init__.py")],  # packages too
         key=lambda m: (order.index(m) if m in order else len(order), m),
     )
     parts = []
     for mod in mods:
         title = titles.get(mod, mod)
-        parts.append(f"## {title}: `trinormal.{mod}`\n\n::: trinormal.{mod}\n")
+        anchor = f"{{ #trinormal.{mod} }}"  # [`trinormal.mod`][trinormal.mod] links here
+        parts.append(f"## {title}: `trinormal.{mod}` {anchor}\n\n::: trinormal.{mod}\n")
     return "\n".join(parts)
 
 
@@ -339,7 +594,20 @@ def on_config(config: MkDocsConfig) -> MkDocsConfig:
 
 def on_files(files: Files, config: MkDocsConfig) -> Files:
     files.append(File.generated(config, EXPLORER_PNG, content=explorer_png()))
+    add_explorer_assets(files, config)
     return files
+
+
+def add_explorer_assets(files: Files, config: MkDocsConfig) -> None:
+    """The 3D view's bundle and licence under ``assets/explorer/``, and the constants file."""
+    static = sorted(p for p in EXPLORER_STATIC.glob("*") if p.is_file())
+    if not any(p.name == "explorer.js" for p in static):
+        raise FileNotFoundError(f"{EXPLORER_STATIC / 'explorer.js'} is missing: run `make js`")
+    for path in static:
+        files.append(
+            File.generated(config, f"{EXPLORER_ASSETS}/{path.name}", abs_src_path=str(path))
+        )
+    files.append(File.generated(config, CONSTANTS_JS, content=constants_js()))
 
 
 def on_page_markdown(markdown: str, page: Page, config: MkDocsConfig, files: Files) -> str:
@@ -350,3 +618,207 @@ def on_page_markdown(markdown: str, page: Page, config: MkDocsConfig, files: Fil
         return HANDLERS[name](shlex.split(rest), page, config)
 
     return PLACEHOLDER.sub(replace, markdown)
+
+
+# --------------------------------------------------------------------------- math and search
+# KaTeX is added only to pages that have math; every other page loads no math engine.
+
+KATEX = "assets/vendor/katex/"
+MATH_SCRIPTS = (KATEX + "katex.min.js", KATEX + "auto-render.min.js", "assets/javascripts/math.js")
+_TEX_IN_MARKDOWN = re.compile(r"\$|\\\(|\\\[")
+
+
+def notebook_has_math(path: Path) -> bool:
+    """True when a notebook has TeX in a Markdown cell or a ``text/latex`` output (sympy)."""
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    for cell in nb.get("cells", []):
+        if cell.get("cell_type") == "markdown" and _TEX_IN_MARKDOWN.search(
+            "".join(cell.get("source", []))
+        ):
+            return True
+        if any("text/latex" in (o.get("data") or {}) for o in cell.get("outputs", [])):
+            return True
+    return False
+
+
+def page_has_math(output: str, page: Page) -> bool:
+    """True when the rendered page holds math for KaTeX to render."""
+    if 'class="arithmatex"' in output:
+        return True
+    src = page.file.abs_src_path
+    return bool(src and src.endswith(".ipynb") and notebook_has_math(Path(src)))
+
+
+def relative_root(page: Page) -> str:
+    """The way from a page's URL back to the site root (``guide/method/`` -> ``../../``)."""
+    return "../" * page.url.count("/")
+
+
+def add_math_engine(output: str, page: Page) -> str:
+    """Link KaTeX's stylesheet in the head and its scripts (deferred) at the end of the body."""
+    root = relative_root(page)
+    link = f'<link rel="stylesheet" href="{root}{KATEX}katex.min.css">'
+    scripts = "".join(f'<script defer src="{root}{src}"></script>' for src in MATH_SCRIPTS)
+    output = output.replace("</head>", link + "</head>", 1)
+    end = output.rfind("</body>")
+    return output[:end] + scripts + output[end:]
+
+
+def on_post_page(output: str, page: Page, config: MkDocsConfig) -> str:
+    if page_has_math(output, page):
+        output = add_math_engine(output, page)
+    return output
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789+-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻")
+_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_TEX_SYMBOLS = {
+    "times": "×",
+    "cdot": "·",
+    "cdots": "⋯",
+    "ldots": "…",
+    "dots": "…",
+    "theta": "θ",
+    "alpha": "α",
+    "beta": "β",
+    "gamma": "γ",
+    "epsilon": "ε",
+    "varepsilon": "ε",
+    "lambda": "λ",
+    "pi": "π",
+    "Rightarrow": "⇒",
+    "rightarrow": "→",
+    "to": "→",
+    "approx": "≈",
+    "le": "≤",
+    "leq": "≤",
+    "ge": "≥",
+    "geq": "≥",
+    "ne": "≠",
+    "neq": "≠",
+    "pm": "±",
+    "infty": "∞",
+    "perp": "⊥",
+    "in": "∈",
+    "lVert": "‖",
+    "rVert": "‖",
+    "|": "‖",
+    "{": "{",
+    "}": "}",
+    "qquad": "  ",
+    "quad": " ",
+    ",": " ",
+    ";": " ",
+    ":": " ",
+    "!": "",
+    " ": " ",
+    "\\": "; ",
+}
+_TEX_DROP = {"left", "right", "displaystyle", "big", "Big", "bigl", "bigr", "Bigl", "Bigr"}
+
+
+def tex_to_text(tex: str) -> str:
+    r"""TeX as readable plain text for search snippets.
+
+    >>> tex_to_text(r"N = U \times V,\quad \hat n = N / |N|")
+    'N = U × V, n̂ = N / |N|'
+    >>> tex_to_text(r"\frac{|\mathbf{N}|^2}{4} = \sqrt{x_{1}^{2}}")
+    '|N|²/4 = √(x₁²)'
+    >>> tex_to_text(r"|U|\,|V|\,\sin\theta")
+    '|U| |V| sin θ'
+    """
+    s = re.sub(r"\\(?:begin|end)\{[a-z*]+\}", " ", tex)
+    for _ in range(6):  # innermost first: no braces inside the arguments
+        s = re.sub(
+            r"\\(?:mathbf|mathrm|mathit|text|textbf|operatorname|boldsymbol)\{([^{}]*)\}", r"\1", s
+        )
+        s = re.sub(r"\\(?:hat|widehat)\{([^{}]*)\}", "\\1\u0302", s)
+        s = re.sub(r"\\vec\{([^{}]*)\}", "\\1\u20d7", s)
+        s = re.sub(r"\\sqrt\{([^{}]*)\}", r"√(\1)", s)
+        s = re.sub(
+            r"\\[dt]?frac\{([^{}]*)\}\{([^{}]*)\}",
+            lambda m: "/".join(p if re.fullmatch(r"[^ +\-]*", p) else f"({p})" for p in m.groups()),
+            s,
+        )
+        s = re.sub(r"\^\{([0-9+\-]+)\}", lambda m: m.group(1).translate(_SUPERSCRIPTS), s)
+        s = re.sub(r"_\{([0-9]+)\}", lambda m: m.group(1).translate(_SUBSCRIPTS), s)
+    s = re.sub(r"\\hat\s*([A-Za-z])", "\\1\u0302", s)
+    s = re.sub(r"\\(sin|cos|tan|log|exp|det)\s*(?=[\\A-Za-z])", r"\1 ", s)  # sin θ, not sinθ
+    s = re.sub(r"\^([0-9])", lambda m: m.group(1).translate(_SUPERSCRIPTS), s)
+    s = re.sub(r"_([0-9])", lambda m: m.group(1).translate(_SUBSCRIPTS), s)
+
+    def command(m: re.Match[str]) -> str:
+        name = m.group(1)
+        if name in _TEX_DROP:
+            return ""
+        return _TEX_SYMBOLS.get(name, name)
+
+    s = re.sub(r"\\([A-Za-z]+|.)", command, s)
+    s = s.replace("&", "").replace("{", "").replace("}", "").replace("~", " ")
+    return " ".join(s.split())
+
+
+_SEARCH_MATH = re.compile(r"\\\((.+?)\\\)|\\\[(.+?)\\\]|\$\$(.+?)\$\$|\$([^$]+?)\$", re.S)
+_SEARCH_CODE = re.compile(r"(<pre>.*?</pre>|<code>.*?</code>)", re.S)
+_NOTEBOOK_PROMPT = re.compile(r"(?:In|Out)\xa0\[\d*\]:\s*(?:Copied!\s*)?")
+
+
+def _math_as_text(m: re.Match[str]) -> str:
+    tex = html.unescape(next(g for g in m.groups() if g is not None))
+    return html.escape(tex_to_text(tex), quote=False)
+
+
+def _drop_repeated_code(text: str) -> str:
+    """Drop the flattened copy of a code cell that follows its ``<pre>`` in notebook text."""
+
+    def repl(m: re.Match[str]) -> str:
+        code, after = m.group(1), m.group(2)
+        same = " ".join(after.split()) and " ".join(after.split()) == " ".join(code.split())
+        return m.group(0)[: -len(after)] + " " if same else m.group(0)
+
+    return re.sub(r"<pre>(.*?)</pre>([^<]*)", repl, text, flags=re.S)
+
+
+def readable_search_text(text: str, notebook: bool = False) -> str:
+    r"""Search-index text with its math as plain text (code left alone).
+
+    >>> readable_search_text(r"<p>Then \(N = U \times V\).</p> <code>\(x\)</code>")
+    '<p>Then N = U × V.</p> <code>\\(x\\)</code>'
+    >>> readable_search_text("<pre>a = 1\n</pre> a = 1 <p>next</p>", notebook=True)
+    '<pre>a = 1\n</pre> <p>next</p>'
+    """
+    if notebook:
+        text = _drop_repeated_code(text)
+    parts = _SEARCH_CODE.split(text)
+    for i in range(0, len(parts), 2):  # the even parts are outside code
+        part = parts[i]
+        if notebook:
+            part = _NOTEBOOK_PROMPT.sub("", part)
+        parts[i] = _SEARCH_MATH.sub(_math_as_text, part)
+    return "".join(parts)
+
+
+def on_post_build(config: MkDocsConfig) -> None:
+    index = Path(config.site_dir) / "search" / "search_index.json"
+    if index.is_file():
+        data = json.loads(index.read_text(encoding="utf-8"))
+        for doc in data.get("docs", []):
+            notebook = str(doc.get("location", "")).startswith("notebooks/")
+            for key in ("title", "text"):
+                if isinstance(doc.get(key), str):
+                    doc[key] = readable_search_text(doc[key], notebook)
+            if isinstance(doc.get("title"), str):
+                doc["title"] = doc["title"].rstrip("¶").rstrip()  # a notebook heading's link mark
+        index.write_text(json.dumps(data, ensure_ascii=False), encoding="utf-8")
+
+
+def _config_url(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``config_url repo_url|site_url [suffix]``: a URL from mkdocs.yml (no page hard-codes one)."""
+    key, *rest = args
+    url = str(config[key] or "").rstrip("/")
+    if not url:
+        raise ValueError(f"{page.file.src_uri}: mkdocs.yml sets no {key}")
+    return url + (rest[0] if rest else "")
+
+
+HANDLERS["config_url"] = _config_url

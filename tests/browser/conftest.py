@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -100,15 +101,37 @@ class _QuietHandler(SimpleHTTPRequestHandler):
         pass
 
 
+def _site_path(site_dir: Path) -> str:
+    """The path the site is built for (``/trinormal/`` for site_url .../trinormal/), from its sitemap."""
+    sitemap = site_dir / "sitemap.xml"
+    text = sitemap.read_text(encoding="utf-8") if sitemap.is_file() else ""
+    m = re.search(r"<loc>\s*[a-z]+://[^/<]+(/[^<]*?)\s*</loc>", text)
+    path = m.group(1) if m else "/"
+    return path if path.endswith("/") else path + "/"
+
+
+class _PrefixHandler(_QuietHandler):
+    """Serve the site under its own path, as a static host would (its 404 page needs that)."""
+
+    prefix = "/"
+
+    def translate_path(self, path: str) -> str:
+        if not path.startswith(self.prefix):
+            return str(Path(self.directory) / "does-not-exist")
+        return super().translate_path("/" + path[len(self.prefix) :])
+
+
 @pytest.fixture(scope="session")
 def server(site_dir: Path) -> Iterator[str]:
-    """Serve the built site on 127.0.0.1 (a free port); yield its base URL."""
-    handler = functools.partial(_QuietHandler, directory=str(site_dir))
+    """Serve the built site on 127.0.0.1 (a free port) under its path; yield its base URL."""
+    prefix = _site_path(site_dir)
+    handler_class = type("Handler", (_PrefixHandler,), {"prefix": prefix})
+    handler = functools.partial(handler_class, directory=str(site_dir))
     httpd = ThreadingHTTPServer(("127.0.0.1", 0), handler)
     thread = threading.Thread(target=httpd.serve_forever, daemon=True)
     thread.start()
     try:
-        yield f"http://127.0.0.1:{httpd.server_address[1]}/"
+        yield f"http://127.0.0.1:{httpd.server_address[1]}{prefix}"
     finally:
         httpd.shutdown()
         httpd.server_close()

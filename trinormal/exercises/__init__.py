@@ -1,7 +1,8 @@
-"""Exercises for the notebooks: ask, answer, and :func:`check`.
+"""Exercises for the notebooks: ask, answer, and [`check`][trinormal.exercises.check].
 
 Each notebook ends with a few exercises. A student writes an answer in place
-of ``...`` and runs :func:`check`, which says whether the answer is right and,
+of ``...`` and runs [`check`][trinormal.exercises.check], which says whether the answer is right
+and,
 when it is not, gives a hint that is true for that answer. It never shows the
 solution; a teacher (or a student who has tried) gets it on purpose with
 ``get(name).solution()``.
@@ -23,13 +24,13 @@ Where the exercises live
 ------------------------
 One module per notebook, ``trinormal/exercises/nbNN.py``, holds that
 notebook's exercises in a tuple named ``EXERCISES``. The list of modules is
-:data:`NOTEBOOK_MODULES`; the registry is built from it the first time an
+`NOTEBOOK_MODULES`; the registry is built from it the first time an
 exercise is looked up. Nothing is registered as a side effect of importing
 another module. To add a notebook's exercises, write its module and add its
-name to :data:`NOTEBOOK_MODULES`.
+name to `NOTEBOOK_MODULES`.
 
 For a quick exercise of your own (in a notebook or a course module),
-:func:`exercise` registers one by hand:
+[`exercise`][trinormal.exercises.exercise] registers one by hand:
 
 >>> _ = exercise(
 ...     "99-demo-area",
@@ -174,7 +175,8 @@ class Exercise:
         Common wrong answers (values or functions of no arguments) and the
         hint each one gets: a hint written for that answer.
     example : object
-        For a checked exercise, one right answer (what :meth:`solution` returns).
+        For a checked exercise, one right answer (what
+        [`solution`][trinormal.exercises.Exercise.solution] returns).
     """
 
     name: str
@@ -225,7 +227,7 @@ _REGISTRY: dict[str, Exercise] = {}
 
 
 def _load() -> dict[str, Exercise]:
-    """Import every module of :data:`NOTEBOOK_MODULES` and index its ``EXERCISES``."""
+    """Import every module of `NOTEBOOK_MODULES` and index its ``EXERCISES``."""
     if not _NOTEBOOKS:
         found: dict[str, Exercise] = {}
         for module in NOTEBOOK_MODULES:
@@ -268,7 +270,7 @@ def exercise(
     """Register an exercise by hand, or (without ``expected``) return a decorator for a checker.
 
     The notebooks' own exercises are not registered this way: they live in
-    ``trinormal/exercises/nbNN.py`` and are found through :data:`NOTEBOOK_MODULES`.
+    ``trinormal/exercises/nbNN.py`` and are found through `NOTEBOOK_MODULES`.
 
     Parameters
     ----------

@@ -2,14 +2,14 @@
 
 Rooms:
 
-* :mod:`~trinormal.explorer.state` — exact coordinates as text, grid snapping,
-  and :func:`~trinormal.explorer.state.view_state`, what the 3D view draws;
-* :mod:`~trinormal.explorer.readout` — the readout rows, HTML, summary and text
+* `state` — exact coordinates as text, grid snapping,
+  and [`view_state`][trinormal.explorer.view_state], what the 3D view draws;
+* `readout` — the readout rows, HTML, summary and text
   alternative, all from ``TriangleNormal.format``;
-* :mod:`~trinormal.explorer.figure` — the static matplotlib snapshot;
-* :mod:`~trinormal.explorer.view` — the anywidget that shares state with the
+* `figure` — the static matplotlib snapshot;
+* `view` — the anywidget that shares state with the
   ES module ``static/explorer.js`` (built from ``js/explorer/``);
-* :mod:`~trinormal.explorer.widget` — :class:`Explorer`, which ties the view,
+* `widget` — [`Explorer`][trinormal.explorer.Explorer], which ties the view,
   sliders, text boxes and readout to the exact core.
 """
 

@@ -1,11 +1,11 @@
 """The explorer's static snapshot: a matplotlib picture for print and pages without JavaScript.
 
-The live explorer draws in 3D in the browser (:mod:`trinormal.explorer.view`). A
+The live explorer draws in 3D in the browser (`trinormal.explorer.view`). A
 notebook saved as HTML, a printed page or a static site has no JavaScript view,
-so :class:`Snapshot` draws the same state with matplotlib: the triangle in 3D
+so `Snapshot` draws the same state with matplotlib: the triangle in 3D
 with U and V from A and N from the centre, and bar charts of the components of
 N and of the unit normal, in the package's one colour code
-(:mod:`trinormal.colors`).
+([`trinormal.colors`][trinormal.colors]).
 
 Only the moving artists are redrawn on an update; the axes, ticks and panes come
 from a cached bitmap of the same figure, so a new PNG costs a fraction of a

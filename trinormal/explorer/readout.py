@@ -1,7 +1,8 @@
 """What the explorer writes: the readout rows, its HTML, the summary and the text alternative.
 
-Every string here comes from :meth:`trinormal.TriangleNormal.format` and the
-rows of :data:`trinormal.fields.FIELDS`, so the explorer, the CLI and the site
+Every string here comes from
+[`trinormal.TriangleNormal.format`][trinormal.core.TriangleNormal.format] and the
+rows of `trinormal.fields.FIELDS`, so the explorer, the CLI and the site
 print the same labels and the same digits.
 
 Examples
@@ -36,7 +37,7 @@ def _places(p: int) -> str:
 
 
 def readout_rows(result: TriangleNormal, precision: int) -> list[dict[str, str]]:
-    """List one ``{"key", "label", "value"}`` row per output field, in :data:`FIELDS` order.
+    """List one ``{"key", "label", "value"}`` row per output field, in `FIELDS` order.
 
     Parameters
     ----------
@@ -86,7 +87,7 @@ def readout_html(result: TriangleNormal, precision: int) -> str:
     -------
     str
         A ``<div class="trinormal-readout">`` holding the table of
-        :func:`readout_rows` and the core's status sentence.
+        `readout_rows` and the core's status sentence.
     """
     f = result.format(precision)
     first, second = ("B", "C") if result.winding is Winding.ABC else ("C", "B")

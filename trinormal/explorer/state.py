@@ -6,7 +6,8 @@ the exact core. Sliders, typed values, the 3D view and the site all exchange
 these strings, so nothing is rounded on the way: a value the kernel set is never
 replaced by the nearest point of a slider's grid.
 
-:func:`view_state` turns a result into the ``state`` object the 3D view draws
+[`view_state`][trinormal.explorer.view_state] turns a result into the ``state`` object the 3D view
+draws
 (see ``js/explorer/`` and ``ARCHITECTURE.md``).
 
 Examples
@@ -85,7 +86,7 @@ def coordinate_text(x: Any, name: str = "value") -> str:
     Returns
     -------
     str
-        Text that :func:`exact_value` reads back exactly.
+        Text that `exact_value` reads back exactly.
 
     Raises
     ------
@@ -170,7 +171,7 @@ def view_state(result: TriangleNormal, precision: int) -> dict[str, Any]:
         ``ok``, ``error``, ``points`` (``A``, ``B``, ``C`` as floats), ``u``,
         ``v``, ``normal``, ``unit_normal`` (``None`` when degenerate),
         ``degenerate``, ``status``, ``readout`` (rows of
-        :func:`~trinormal.explorer.readout.readout_rows`) and ``summary`` (a
+        `readout_rows`) and ``summary`` (a
         sentence for screen readers). JSON-ready.
 
     Examples

@@ -1,6 +1,6 @@
 """The live 3D view in Jupyter: an anywidget whose traitlets the kernel and the browser share.
 
-:class:`ExplorerView` holds state and nothing else; the ES module
+[`ExplorerView`][trinormal.explorer.ExplorerView] holds state and nothing else; the ES module
 ``trinormal/explorer/static/explorer.js`` (built from ``js/explorer/`` with
 three.js) renders it. The same module renders the site's calculator with a small
 model object fed by the site's JavaScript core, so the view is written once.
@@ -43,11 +43,12 @@ class ExplorerView(anywidget.AnyWidget):
     show_parallelogram, show_unit_normal, show_readout : bool
         What the view draws besides the triangle, U, V and N.
     palette : dict
-        The colour code, from :func:`trinormal.colors.palette`.
+        The colour code, from [`trinormal.colors.palette`][trinormal.colors.palette].
     fields : list of dict
-        The output rows, from :func:`trinormal.fields.fields_spec`.
+        The output rows, from [`trinormal.fields.fields_spec`][trinormal.fields.fields_spec].
     state : dict
-        What to draw and print, from :func:`trinormal.explorer.state.view_state`.
+        What to draw and print, from
+        [`trinormal.explorer.state.view_state`][trinormal.explorer.view_state].
     """
 
     _esm = BUNDLE

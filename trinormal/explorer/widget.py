@@ -1,9 +1,11 @@
 """The explorer: a live 3D view, sliders and exact text boxes for A, B and C, and a readout.
 
-:class:`Explorer` keeps every coordinate as exact text and recomputes
-:attr:`Explorer.result` with :func:`trinormal.triangle_normal` on every change,
+[`Explorer`][trinormal.widgets.Explorer] keeps every coordinate as exact text and recomputes
+`Explorer.result` with [`trinormal.triangle_normal`][trinormal.core.triangle_normal] on every
+change,
 whichever way it came: a slider, a typed value, a vertex dragged in the 3D view,
-an arrow key on a focused vertex, or code (:meth:`Explorer.set`, or setting a
+an arrow key on a focused vertex, or code ([`Explorer.set`][trinormal.widgets.Explorer.set], or
+setting a
 control's ``value``). Every surface then shows the new state: the view, the
 sliders, the text boxes and the readout.
 
@@ -151,12 +153,12 @@ class Explorer:
         vertex (or its label) to move it, arrow keys and Page Up/Down move a
         focused vertex one grid step.
     controls : dict of str to ipywidgets.Widget
-        ``"ax"`` … ``"cz"``: one :class:`ipywidgets.FloatSlider` per coordinate;
-        ``"winding"``: :class:`ipywidgets.ToggleButtons` with values ``"ABC"``
+        ``"ax"`` … ``"cz"``: one `ipywidgets.FloatSlider` per coordinate;
+        ``"winding"``: `ipywidgets.ToggleButtons` with values ``"ABC"``
         and ``"ACB"``, labelled A→B→C and A→C→B; ``"precision"``: an
-        :class:`ipywidgets.IntSlider` from 0 to 15. Setting ``.value`` from
+        `ipywidgets.IntSlider` from 0 to 15. Setting ``.value`` from
         code works like a move; a value outside the range is a
-        :class:`ValueError` (ipywidgets would silently clamp it).
+        `ValueError` (ipywidgets would silently clamp it).
     inputs : dict of str to ipywidgets.Text
         ``"ax"`` … ``"cz"``: a text box per coordinate holding its exact text;
         type ``1/3`` or ``-2.35`` and press Enter.
@@ -559,7 +561,7 @@ class Explorer:
         return self.snapshot.to_png()
 
     def render(self) -> None:
-        """Bring the snapshot's pixels up to date (see :meth:`Snapshot.render`)."""
+        """Bring the snapshot's pixels up to date (see `Snapshot.render`)."""
         self.snapshot.render()
 
     @property
