@@ -36,7 +36,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests" / "browser"))
 
-from conftest import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
+from browser_support import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
 from jupyterlab_support import kernel_ready, run_all, running_lab, wait_idle  # noqa: E402
 
 from trinormal.explorer import Explorer  # noqa: E402

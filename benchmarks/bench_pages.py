@@ -17,14 +17,9 @@ is newer than its sources, else builds the site into a temporary folder). Needs 
 
 from __future__ import annotations
 
-import functools
 import gzip
-import os
 import subprocess
 import sys
-import tempfile
-import threading
-from http.server import SimpleHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 from typing import Any
 from urllib.parse import unquote, urlsplit
@@ -32,18 +27,16 @@ from urllib.parse import unquote, urlsplit
 from playwright.sync_api import sync_playwright
 
 ROOT = Path(__file__).resolve().parents[1]
-CHROMIUM = os.environ.get("TRINORMAL_CHROMIUM", "/usr/bin/chromium")
-ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--disable-dev-shm-usage",
-]
+sys.path.insert(0, str(ROOT / "tests" / "browser"))
+
+from browser_support import (  # noqa: E402
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    built_site,
+    serve_site,
+    site_pages,
+)
+
 GOALS = {"": 300_000, "calculator/": 400_000}
 COMPRESSED = {".png", ".jpg", ".jpeg", ".gif", ".webp", ".woff2", ".woff", ".zip", ".gz"}
 MATHJAX = "docs/assets/vendor/mathjax/tex-svg-full.js"
@@ -55,32 +48,6 @@ def wire_bytes(data: bytes, suffix: str) -> int:
     if suffix.lower() in COMPRESSED:
         return len(data)
     return len(gzip.compress(data, compresslevel=6, mtime=0))
-
-
-def site_dir() -> Path:
-    env = os.environ.get("TRINORMAL_SITE_DIR")
-    if env:
-        return Path(env)
-    built = ROOT / "site" / "index.html"
-    sources = [ROOT / "mkdocs.yml", *(p for p in (ROOT / "docs").rglob("*") if p.is_file())]
-    if built.is_file() and max(p.stat().st_mtime for p in sources) < built.stat().st_mtime:
-        return ROOT / "site"  # an up-to-date build
-    out = Path(tempfile.mkdtemp(prefix="trinormal-site-"))
-    subprocess.run(
-        [sys.executable, "-m", "mkdocs", "build", "--strict", "--quiet", "-d", str(out)],
-        cwd=ROOT,
-        check=True,
-        env={**os.environ, "NO_MKDOCS_2_WARNING": "1"},
-    )
-    return out
-
-
-def pages(site: Path) -> list[str]:
-    out = []
-    for html in sorted(site.rglob("index.html")):
-        rel = html.parent.relative_to(site).as_posix()
-        out.append("" if rel == "." else rel + "/")
-    return out
 
 
 def git_blob(path: str) -> bytes | None:
@@ -104,56 +71,44 @@ def git_blob(path: str) -> bytes | None:
         return None
 
 
-class _Quiet(SimpleHTTPRequestHandler):
-    def log_message(self, format: str, *args: Any) -> None:
-        pass
-
-
 def measure(site: Path) -> list[dict[str, Any]]:
-    httpd = ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_Quiet, directory=str(site)))
-    threading.Thread(target=httpd.serve_forever, daemon=True).start()
-    base = f"http://127.0.0.1:{httpd.server_address[1]}/"
     rows = []
-    try:
-        with sync_playwright() as pw:
-            browser = pw.chromium.launch(executable_path=CHROMIUM, args=ARGS)
-            for path in pages(site):
-                context = browser.new_context(viewport={"width": 1280, "height": 800})
-                page = context.new_page()
-                urls: list[str] = []
-                page.on("requestfinished", lambda req, urls=urls: urls.append(req.url))
-                page.goto(base + path)
-                page.wait_for_load_state("networkidle")
-                files = []
-                for url in dict.fromkeys(urls):
-                    if not url.startswith(base):
-                        continue
-                    rel = unquote(urlsplit(url).path)[1:]
-                    file = site / rel
-                    if file.is_dir() or rel.endswith("/") or rel == "":
-                        file = file / "index.html"
-                    if file.is_file():
-                        data = file.read_bytes()
-                        files.append(
-                            (rel or "index.html", len(data), wire_bytes(data, file.suffix))
-                        )
-                math = sorted({e for e in ("katex", "mathjax") if any(e in f[0] for f in files)})
-                rows.append(
-                    {
-                        "page": path,
-                        "requests": len(files),
-                        "raw": sum(f[1] for f in files),
-                        "wire": sum(f[2] for f in files),
-                        "math": math,
-                        "math_wire": sum(
-                            f[2] for f in files if "katex" in f[0] or f[0].endswith("/math.js")
-                        ),
-                    }
-                )
-                context.close()
-            browser.close()
-    finally:
-        httpd.shutdown()
+    with serve_site(site) as base, sync_playwright() as pw:
+        prefix = urlsplit(base).path
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        for path in site_pages(site):
+            context = browser.new_context(viewport={"width": 1280, "height": 800})
+            page = context.new_page()
+            urls: list[str] = []
+            page.on("requestfinished", lambda req, urls=urls: urls.append(req.url))
+            page.goto(base + path)
+            page.wait_for_load_state("networkidle")
+            files = []
+            for url in dict.fromkeys(urls):
+                if not url.startswith(base):
+                    continue
+                rel = unquote(urlsplit(url).path)[len(prefix) :]
+                file = site / rel
+                if file.is_dir() or rel.endswith("/") or rel == "":
+                    file = file / "index.html"
+                if file.is_file():
+                    data = file.read_bytes()
+                    files.append((rel or "index.html", len(data), wire_bytes(data, file.suffix)))
+            math = sorted({e for e in ("katex", "mathjax") if any(e in f[0] for f in files)})
+            rows.append(
+                {
+                    "page": path,
+                    "requests": len(files),
+                    "raw": sum(f[1] for f in files),
+                    "wire": sum(f[2] for f in files),
+                    "math": math,
+                    "math_wire": sum(
+                        f[2] for f in files if "katex" in f[0] or f[0].endswith("/math.js")
+                    ),
+                }
+            )
+            context.close()
+        browser.close()
     return rows
 
 
@@ -162,7 +117,7 @@ def kb(n: float) -> str:
 
 
 def main() -> None:
-    site = site_dir()
+    site = built_site()
     rows = measure(site)
     mathjax = git_blob(MATHJAX)
     config = git_blob(MATHJAX_CONFIG) or b""

@@ -18,23 +18,17 @@ Run: uv run python benchmarks/bench_view.py   (or make bench)
 
 from __future__ import annotations
 
-import functools
 import itertools
-import os
 import statistics
-import subprocess
 import sys
-import tempfile
-import threading
 import time
-from http.server import SimpleHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests" / "browser"))
 
-from conftest import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
+from browser_support import CHROMIUM, CHROMIUM_ARGS, built_site, serve_site  # noqa: E402
 from playwright.sync_api import sync_playwright  # noqa: E402
 
 GOAL_MS = 17.0
@@ -62,28 +56,6 @@ INIT = """
   requestAnimationFrame(tick);
 })();
 """
-
-
-class _Quiet(SimpleHTTPRequestHandler):
-    def log_message(self, format: str, *args: Any) -> None:
-        pass
-
-
-def site_dir() -> Path:
-    """TRINORMAL_SITE_DIR, else site/ when built, else a fresh build in a temporary folder."""
-    env = os.environ.get("TRINORMAL_SITE_DIR")
-    if env:
-        return Path(env)
-    if (ROOT / "site" / "calculator" / "index.html").is_file():
-        return ROOT / "site"
-    out = Path(tempfile.mkdtemp(prefix="trinormal-site-"))
-    subprocess.run(
-        [sys.executable, "-m", "mkdocs", "build", "--strict", "--quiet", "-d", str(out)],
-        cwd=ROOT,
-        check=True,
-        env={**os.environ, "NO_MKDOCS_2_WARNING": "1"},
-    )
-    return out
 
 
 def intervals(page: Any, gesture: Any) -> tuple[list[float], Any]:
@@ -164,36 +136,29 @@ def old_explorer_ms() -> list[float]:
 
 
 def main() -> None:
-    root = site_dir()
-    httpd = ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_Quiet, directory=str(root)))
-    threading.Thread(target=httpd.serve_forever, daemon=True).start()
-    url = f"http://127.0.0.1:{httpd.server_address[1]}/calculator/"
-    try:
-        with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-            page = browser.new_page(viewport={"width": 1280, "height": 720})
-            page.add_init_script(INIT)
-            page.goto(url)
-            page.wait_for_selector("#tn-view[data-ready='true']")
-            canvas = page.locator("#tn-view canvas")
-            canvas.evaluate("c => c.scrollIntoView({block: 'center'})")
-            size = canvas.bounding_box()
-            assert size is not None
-            w, h = size["width"], size["height"]
-            print(f"3D view on the calculator page, canvas {w:.0f}×{h:.0f} px, headless Chromium")
-            box = page.locator('#tn-view [data-vertex="B"]').bounding_box()
-            assert box is not None
-            bx, by = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-            # 12 moves per sweep of 240 px: every move crosses grid lines, so every frame has
-            # a new value to write (a move within one grid cell writes nothing and draws nothing)
-            drag_ms, writes = intervals(page, lambda: drag(page, bx, by, -240, -120, MOVES // 12))
-            orbit_ms, still = intervals(
-                page, lambda: drag(page, size["x"] + 20, size["y"] + 20, w * 0.5, h * 0.3, 4)
-            )
-            browser.close()
-    finally:
-        httpd.shutdown()
-        httpd.server_close()
+    with serve_site(built_site()) as base, sync_playwright() as p:
+        url = base + "calculator/"
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        page = browser.new_page(viewport={"width": 1280, "height": 720})
+        page.add_init_script(INIT)
+        page.goto(url)
+        page.wait_for_selector("#tn-view[data-ready='true']")
+        canvas = page.locator("#tn-view canvas")
+        canvas.evaluate("c => c.scrollIntoView({block: 'center'})")
+        size = canvas.bounding_box()
+        assert size is not None
+        w, h = size["width"], size["height"]
+        print(f"3D view on the calculator page, canvas {w:.0f}×{h:.0f} px, headless Chromium")
+        box = page.locator('#tn-view [data-vertex="B"]').bounding_box()
+        assert box is not None
+        bx, by = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+        # 12 moves per sweep of 240 px: every move crosses grid lines, so every frame has
+        # a new value to write (a move within one grid cell writes nothing and draws nothing)
+        drag_ms, writes = intervals(page, lambda: drag(page, bx, by, -240, -120, MOVES // 12))
+        orbit_ms, still = intervals(
+            page, lambda: drag(page, size["x"] + 20, size["y"] + 20, w * 0.5, h * 0.3, 4)
+        )
+        browser.close()
     drag_median, _ = summary("dragging vertex B", drag_ms)
     orbit_median, _ = summary("orbiting the camera", orbit_ms)
     print(

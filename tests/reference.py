@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import importlib.util
 import math
 from decimal import Decimal, localcontext
 from fractions import Fraction
+from pathlib import Path
+from types import ModuleType
 
 
 def exact_normal(a, b, c, winding="ABC"):
@@ -32,3 +35,15 @@ def ulps(x: float, ref: Decimal) -> float:
     with localcontext() as ctx:
         ctx.prec = 80
         return float(abs(Decimal(x) - ref) / Decimal(math.ulp(r)))
+
+
+DATA = Path(__file__).parent / "data"
+
+
+def vector_generator(name: str) -> ModuleType:
+    """Import a test-vector generator from tests/data (``make_calculator_vectors`` …) by name."""
+    spec = importlib.util.spec_from_file_location(name, DATA / f"{name}.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

@@ -7,27 +7,13 @@ strings are what the Python package says today, so the two can never drift apart
 
 from __future__ import annotations
 
-import importlib.util
 import json
-from pathlib import Path
-from types import ModuleType
+
+from reference import DATA, vector_generator
 
 from trinormal import triangle_normal
 
-DATA = Path(__file__).parent / "data"
-
-
-def _generator() -> ModuleType:
-    spec = importlib.util.spec_from_file_location(
-        "make_calculator_vectors", DATA / "make_calculator_vectors.py"
-    )
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-GEN = _generator()
+GEN = vector_generator("make_calculator_vectors")
 STORED = json.loads((DATA / "calculator_vectors.json").read_text(encoding="utf-8"))
 
 

@@ -22,7 +22,15 @@ from trinormal.core import TriangleNormal
 from trinormal.explorer.readout import readout_html, readout_rows, summary_text
 from trinormal.fields import FIELDS, Field, field_labels, fields_spec
 
-SINE = Field("sine", "sin θ", "the sine of the angle between U and V", "scalar", "sin θ")
+SINE = Field(
+    "sine",
+    "sin θ",
+    "the sine of the angle between U and V",
+    "scalar",
+    "sin θ",
+    "Sine of the angle",
+    "out-sine",
+)
 
 
 def _cli(*args: str) -> str:
@@ -104,4 +112,4 @@ def test_kinds_are_written_by_rule():
     )
     assert [f.line("x") for f in (vector, scalar, equation)] == ["U = x", "|N| = x", "plane: x"]
     with pytest.raises(ValueError, match="unknown field kind 'matrix'"):
-        Field("m", "M", "a matrix", "matrix", "M").text(half, 2)
+        Field("m", "M", "a matrix", "matrix", "M", "Matrix M", "out-m").text(half, 2)

@@ -8,31 +8,16 @@ site's ``trinormal-core.js`` in Chromium, so the two parsers cannot drift apart.
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import time
-from pathlib import Path
-from types import ModuleType
 
 import pytest
+from reference import DATA, vector_generator
 
 from trinormal import triangle_normal
 from trinormal.validation import MAX_TEXT_LENGTH, check_coordinate
 
-DATA = Path(__file__).parent / "data"
-
-
-def _generator() -> ModuleType:
-    spec = importlib.util.spec_from_file_location(
-        "make_parser_vectors", DATA / "make_parser_vectors.py"
-    )
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-GEN = _generator()
+GEN = vector_generator("make_parser_vectors")
 STORED = json.loads((DATA / "parser_vectors.json").read_text(encoding="utf-8"))
 
 

@@ -195,8 +195,7 @@ class TriangleNormal:
     """The normal of a triangle and everything derived from it.
 
     Results are returned by [`triangle_normal`][trinormal.core.triangle_normal], not built directly:
-    calling
-    ``TriangleNormal(...)`` raises `TypeError`. The name is public for
+    calling ``TriangleNormal(...)`` raises `TypeError`. The name is public for
     type hints and ``isinstance`` checks. Results are immutable, compare equal
     when every attribute below is equal, and can be copied and pickled.
 

@@ -115,8 +115,7 @@ def exact_ratio(x: object) -> tuple[int, int]:
     """Return ``(numerator, denominator)`` of a finite real number, exactly.
 
     Any number [`trinormal.validation.check_coordinate`][trinormal.validation.check_coordinate]
-    reads (sympy
-    numbers too), with numerator and denominator of up to about 3900 digits.
+    reads (sympy numbers too), with numerator and denominator of up to about 3900 digits.
 
     Examples
     --------

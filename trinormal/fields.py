@@ -7,8 +7,7 @@ the constants file the mkdocs hook writes from this module at build time.
 
 Each field's value is the string ``TriangleNormal.format(precision)[key]``;
 its ``kind`` says how that string is written ([`Field.text`][trinormal.fields.Field.text]), and the
-same
-key names the float value in ``TriangleNormal.to_dict()``.
+same key names the float value in ``TriangleNormal.to_dict()``.
 
 Adding an output is one entry in `FIELDS` plus its computation in
 [`trinormal.core`][trinormal.core]: the attribute of
@@ -110,8 +109,7 @@ class Field:
         """Write an exact value of this field's kind, each number written by ``number``.
 
         [`text`][trinormal.fields.Field.text] with a number formatter chosen by the caller, such as
-        one
-        that remembers numbers several fields share (the unit normal and the
+        one that remembers numbers several fields share (the unit normal and the
         plane's coefficients).
         """
         if value is None:

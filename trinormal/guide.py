@@ -4,8 +4,7 @@ The guide that trinormal teaches prints a worked example, a four-row comparison
 table and a table of floating-point precisions. This module keeps what the
 guide *publishes* (as data, exactly as printed) next to functions that
 *recompute* every value from [`trinormal.triangle_normal`][trinormal.core.triangle_normal], so a
-test can
-check one against the other and the documentation site can show numbers
+test can check one against the other and the documentation site can show numbers
 generated at build time instead of typed in.
 
 Examples
@@ -204,8 +203,7 @@ def comparison_table_cells(
     Every number is computed by [`trinormal.triangle_normal`][trinormal.core.triangle_normal] from
     the
     row's vertices and formatted by [`TriangleNormal.format`][trinormal.core.TriangleNormal.format]
-    with
-    trailing zeros trimmed; nothing is copied from the published cells.
+    with trailing zeros trimmed; nothing is copied from the published cells.
 
     Examples
     --------

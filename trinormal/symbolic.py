@@ -4,8 +4,7 @@ Nothing here is typed in: the component formulas come from
 `sympy.Matrix.cross` applied to the edge vectors, the identities are
 proven by simplifying their two sides' difference to zero, and
 [`steps`][trinormal.symbolic.steps] substitutes a reader's own numbers into the derived formulas
-with
-exact rational arithmetic. The steps and their exact inputs are those of
+with exact rational arithmetic. The steps and their exact inputs are those of
 [`trinormal.steps`][trinormal.steps], the engine behind the CLI's ``--steps`` too; this
 module writes them in LaTeX.
 
@@ -453,8 +452,7 @@ def steps(
     Coordinates are read exactly (``"0.1"`` is 1/10, ``"1/3"`` is one third; a
     float is its exact binary value), substituted into the formulas derived
     by [`normal_components`][trinormal.symbolic.normal_components], and kept exact: rationals stay
-    fractions and
-    square roots stay radicals where sympy keeps them (``√2/2``).
+    fractions and square roots stay radicals where sympy keeps them (``√2/2``).
 
     Parameters
     ----------

@@ -667,8 +667,7 @@ def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     ----------
     tol : real or str
         Any type [`check_coordinate`][trinormal.validation.check_coordinate] reads, so
-        ``Decimal("1e400")`` is
-        refused at once rather than overflowing.
+        ``Decimal("1e400")`` is refused at once rather than overflowing.
     name : str, default "tol"
         How messages name it (the command line says ``--tol``).
 
@@ -681,8 +680,7 @@ def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     ------
     ValueError
         A value outside 0 to 1, or one [`check_coordinate`][trinormal.validation.check_coordinate]
-        refuses; the
-        message then ends with the rule.
+        refuses; the message then ends with the rule.
     TypeError
         A type [`check_coordinate`][trinormal.validation.check_coordinate] refuses.
 

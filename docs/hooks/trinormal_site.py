@@ -114,6 +114,29 @@ def widget_note(text_plain: str) -> str:
     )
 
 
+def picture_output(out: dict[str, Any]) -> dict[str, Any]:
+    """A PNG output as an ``<img>`` with its alt text and display width.
+
+    ``trinormal.plotting.show`` stores both in the output's metadata; the notebook
+    template the site uses would drop them (and write "No description has been
+    provided for this image").
+    """
+    data = out["data"]
+    meta = out.get("metadata", {}).get("image/png", {})
+    alt = str(meta.get("alt", "")).strip()
+    if not alt:
+        return out
+    png = data["image/png"]
+    png = "".join(png) if isinstance(png, list) else str(png)
+    width = meta.get("width")
+    size = f' width="{int(width)}"' if isinstance(width, int | float) else ""
+    img = (
+        f'<img src="data:image/png;base64,{png.strip()}" alt="{html.escape(alt)}"{size} '
+        'style="max-width:100%;height:auto">'
+    )
+    return {"output_type": "display_data", "metadata": {}, "data": {"text/html": img}}
+
+
 def static_notebook(path: Path) -> dict[str, Any]:
     """A copy of a notebook with every widget output replaced by a static note.
 
@@ -139,6 +162,8 @@ def static_notebook(path: Path) -> dict[str, Any]:
                         "data": {"text/html": live_explorer_html(live[id(out)])},
                     }
                 )
+            elif "image/png" in data and isinstance(out.get("metadata"), dict):
+                new.append(picture_output(out))
             elif WIDGET_VIEW in data or WIDGET_STATE in data:
                 plain = data.get("text/plain", "")
                 if isinstance(plain, list):
@@ -521,7 +546,11 @@ def _api(args: list[str], page: Page, config: MkDocsConfig) -> str:
     """One mkdocstrings section per public module of the package."""
     titles = {
         "core": "The exact core",
+        "validation": "Reading and checking inputs",
         "display": "Display formatting",
+        "fields": "The output fields",
+        "steps": "The step-by-step working",
+        "colors": "The colour code",
         "tolerances": "Tolerances",
         "symbolic": "Symbolic derivations",
         "mesh": "Meshes",
@@ -822,3 +851,38 @@ def _config_url(args: list[str], page: Page, config: MkDocsConfig) -> str:
 
 
 HANDLERS["config_url"] = _config_url
+
+
+def _result_rows(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``result_rows``: the calculator's results, one row per output field of the package.
+
+    Each row's heading and ``<output>`` id come from ``trinormal.fields.FIELDS``; the
+    values are the package's own for the page's starting triangle, so the table is
+    right before any script runs.
+    """
+    from trinormal import triangle_normal
+    from trinormal.fields import FIELDS
+
+    start = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).format(4)
+    inputs = "ax ay az bx by bz cx cy cz winding precision"
+    rows = []
+    for i, field in enumerate(FIELDS):
+        linked = f' for="{inputs}"' if i == 0 else ""
+        rows.append(
+            f'<tr><th scope="row">{html.escape(field.page_label)}</th>'
+            f'<td><output id="{field.output_id}"{linked}>'
+            f"{html.escape(start[field.key])}</output></td></tr>"
+        )
+    return "\n".join(rows)
+
+
+def _limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``limit NAME``: one of the package's input limits, such as ``MAX_PRECISION``."""
+    from trinormal.validation import limits
+
+    (name,) = args
+    return str(limits()[name])
+
+
+HANDLERS["result_rows"] = _result_rows
+HANDLERS["limit"] = _limit

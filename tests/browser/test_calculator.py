@@ -9,18 +9,11 @@ import pytest
 from browser_support import ROOT
 
 from trinormal import triangle_normal
+from trinormal.fields import FIELDS as FIELDS_SPEC
 
 VECTORS = json.loads((ROOT / "tests/data/calculator_vectors.json").read_text(encoding="utf-8"))
 FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
-OUTPUTS = {
-    "u": "#out-u",
-    "v": "#out-v",
-    "normal": "#out-normal",
-    "magnitude": "#out-magnitude",
-    "area": "#out-area",
-    "unit_normal": "#out-unit",
-    "plane": "#out-plane",
-}
+OUTPUTS = {f.key: "#" + f.output_id for f in FIELDS_SPEC}
 DASH = "—"
 
 

@@ -21,15 +21,7 @@ from trinormal import triangle_normal
 from trinormal.fields import FIELDS as FIELDS_SPEC
 
 FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
-OUTPUTS = {
-    "u": "#out-u",
-    "v": "#out-v",
-    "normal": "#out-normal",
-    "magnitude": "#out-magnitude",
-    "area": "#out-area",
-    "unit_normal": "#out-unit",
-    "plane": "#out-plane",
-}
+OUTPUTS = {f.key: "#" + f.output_id for f in FIELDS_SPEC}
 GRID_TEXT = re.compile(r"-?\d+\.\d")  # a value the view wrote: on the 0.1 grid, one decimal
 URL_SHOWS_A = """() => {
   const a = ['ax', 'ay', 'az'].map(id => document.getElementById(id).value).join(',');

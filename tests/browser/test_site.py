@@ -417,6 +417,10 @@ def test_widget_outputs_are_replaced_by_a_note_and_a_picture(page, server, traff
         html = page.content()
         assert "application/vnd.jupyter.widget" not in html, path.name
         assert not re.search(r'"model_id"\s*:', page.locator("article").inner_text()), path.name
+        # every figure keeps the text alternative the notebook gave it
+        assert "No description has been provided" not in html, path.name
+        for img in page.locator("article img").all():
+            assert (img.get_attribute("alt") or "").strip(), f"{path.name}: a figure without alt"
         if _has_widget_output(path):
             live = page.locator("article .tn-explorer-live")
             if live.count():  # the explorer notebook: its live view (test_explorer_site.py)

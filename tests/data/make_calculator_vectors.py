@@ -18,8 +18,9 @@ from pathlib import Path
 from typing import Any
 
 from trinormal import triangle_normal
+from trinormal.fields import FIELDS
 
-OUTPUT_KEYS = ("u", "v", "normal", "magnitude", "area", "unit_normal", "plane")
+OUTPUT_KEYS = tuple(f.key for f in FIELDS)
 PATH = Path(__file__).with_name("calculator_vectors.json")
 
 Point = tuple[str, str, str]

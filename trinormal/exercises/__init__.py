@@ -2,8 +2,7 @@
 
 Each notebook ends with a few exercises. A student writes an answer in place
 of ``...`` and runs [`check`][trinormal.exercises.check], which says whether the answer is right
-and,
-when it is not, gives a hint that is true for that answer. It never shows the
+and, when it is not, gives a hint that is true for that answer. It never shows the
 solution; a teacher (or a student who has tried) gets it on purpose with
 ``get(name).solution()``.
 

@@ -7,8 +7,7 @@ these strings, so nothing is rounded on the way: a value the kernel set is never
 replaced by the nearest point of a slider's grid.
 
 [`view_state`][trinormal.explorer.view_state] turns a result into the ``state`` object the 3D view
-draws
-(see ``js/explorer/`` and ``ARCHITECTURE.md``).
+draws (see ``js/explorer/`` and ``ARCHITECTURE.md``).
 
 Examples
 --------

@@ -2,11 +2,9 @@
 
 [`Explorer`][trinormal.widgets.Explorer] keeps every coordinate as exact text and recomputes
 `Explorer.result` with [`trinormal.triangle_normal`][trinormal.core.triangle_normal] on every
-change,
-whichever way it came: a slider, a typed value, a vertex dragged in the 3D view,
+change, whichever way it came: a slider, a typed value, a vertex dragged in the 3D view,
 an arrow key on a focused vertex, or code ([`Explorer.set`][trinormal.widgets.Explorer.set], or
-setting a
-control's ``value``). Every surface then shows the new state: the view, the
+setting a control's ``value``). Every surface then shows the new state: the view, the
 sliders, the text boxes and the readout.
 
 The sliders live on a grid (``step``, default 0.1) and a value the kernel set

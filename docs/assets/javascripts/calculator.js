@@ -10,15 +10,11 @@
   "use strict";
 
   var FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"];
-  var OUTPUTS = {
-    u: "out-u",
-    v: "out-v",
-    normal: "out-normal",
-    magnitude: "out-magnitude",
-    area: "out-area",
-    unit_normal: "out-unit",
-    plane: "out-plane",
-  };
+  /* Each output field's <output> id, from the package's field spec (trinormal.fields). */
+  var OUTPUTS = {};
+  ((window.TRINORMAL_CONSTANTS || {}).fields || []).forEach(function (field) {
+    OUTPUTS[field.key] = field.output_id;
+  });
   var DEFAULTS = { a: ["0", "0", "0"], b: ["1", "0", "0"], c: ["0", "1", "0"], w: "ABC", p: 4 };
   var DASH = "\u2014";
   var SVG_NS = "http://www.w3.org/2000/svg";

@@ -523,6 +523,5 @@
     formatSurd: formatSurd,
     isqrt: isqrt,
     InputError: InputError,
-    OUTPUT_KEYS: ["u", "v", "normal", "magnitude", "area", "unit_normal", "plane"],
   };
 });
