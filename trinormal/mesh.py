@@ -63,6 +63,7 @@ __all__ = [
     "inconsistent_edges",
     "terrain",
     "torus",
+    "uv_sphere",
     "vertex_normals",
 ]
 
@@ -879,6 +880,52 @@ def torus(
     p11 = (((i + 1) % n_major) * n_minor + (j + 1) % n_minor).ravel()
     f = np.concatenate([np.stack([p00, p10, p11], 1), np.stack([p00, p11, p01], 1)])
     return v, f.astype(np.intp)
+
+
+def uv_sphere(n_around: int = 24, n_down: int = 12) -> tuple[FloatArray, IntArray]:
+    """Make a unit sphere cut along meridians and parallels, like a globe's grid.
+
+    Unlike `icosphere`, its triangles are far from equal: they grow thin and
+    small near the poles, which is what makes vertex-normal weightings differ.
+
+    Parameters
+    ----------
+    n_around : int, default 24
+        Meridians (vertices around each parallel), at least 3.
+    n_down : int, default 12
+        Bands from pole to pole, at least 3.
+
+    Returns
+    -------
+    vertices : ndarray, shape (n_around · (n_down − 1) + 2, 3)
+        The parallels' vertices, then the north and the south pole.
+    faces : ndarray of int, shape (2 · n_around · (n_down − 1), 3)
+        Outward-facing, consistently wound, closed.
+
+    Examples
+    --------
+    >>> v, f = uv_sphere(8, 4)
+    >>> v.shape, f.shape
+    ((26, 3), (48, 3))
+    >>> bool(np.allclose(np.linalg.norm(v, axis=1), 1.0))
+    True
+    """
+    if n_around < 3 or n_down < 3:
+        raise ValueError(f"n_around and n_down must be >= 3, got {n_around}, {n_down}")
+    theta = np.linspace(0.0, np.pi, n_down + 1)[1:-1]
+    phi = np.linspace(0.0, 2.0 * np.pi, n_around, endpoint=False)
+    t, p = np.meshgrid(theta, phi, indexing="ij")
+    ring = np.stack([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)], -1).reshape(-1, 3)
+    vertices = np.vstack([ring, [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
+    north, south, last = len(ring), len(ring) + 1, (n_down - 2) * n_around
+    faces = []
+    for i in range(n_down - 2):  # two triangles per cell between neighbouring parallels
+        for j in range(n_around):
+            a, b = i * n_around + j, i * n_around + (j + 1) % n_around
+            faces += [(a, a + n_around, b + n_around), (a, b + n_around, b)]
+    for j in range(n_around):  # a fan at each pole
+        faces += [(north, j, (j + 1) % n_around), (south, last + (j + 1) % n_around, last + j)]
+    return vertices, np.array(faces, dtype=np.intp)
 
 
 def terrain(
