@@ -3,7 +3,9 @@
 ``tests/data/parser_vectors.json`` lists coordinate strings (and precisions and
 windings) with what :mod:`trinormal.validation` answers: the exact value or the
 message. ``tests/browser/test_parser_vectors.py`` runs the same file through the
-site's ``trinormal-core.js`` in Chromium, so the two parsers cannot drift apart.
+site's ``trinormal-core.js`` in Chromium (and ``tests/test_site_constants.py`` in
+Node), so the two parsers cannot drift apart; the JavaScript takes its limits and
+message templates from :mod:`trinormal.validation` through the site build.
 """
 
 from __future__ import annotations

@@ -357,9 +357,9 @@ class TriangleNormal:
 
         out = {f.key: f.write(values[f.key], number) for f in spec}
         if self.degenerate:
-            out["status"] = f"Degenerate: {self.reason} No unit normal exists."
+            out["status"] = VERDICTS["degenerate"].format(reason=self.reason)
         else:
-            out["status"] = "A proper triangle: the unit normal is defined."
+            out["status"] = VERDICTS["proper"]
         return out
 
     def _exact_fields(self) -> dict[str, Any]:
@@ -509,21 +509,34 @@ def _exact_integers(ratios: list[tuple[int, int]], winding: Winding) -> _Integer
     )
 
 
+#: The verdict sentences, as ``str.format`` templates: the status line of every result
+#: and, for a degenerate triangle, the reason in it. The site's JavaScript reads them from
+#: the constants file the site build writes, so both say the same words.
+VERDICTS: dict[str, str] = {
+    "proper": "A proper triangle: the unit normal is defined.",
+    "degenerate": "Degenerate: {reason} No unit normal exists.",
+    "same_point": "A, B and C are the same point.",
+    "coincide": "{names} coincide, so the triangle has no area.",
+    "collinear": "A, B and C are collinear{where} (they lie on one line), so the area is zero.",
+    "too_thin": (
+        "the angle between the edges is too small to trust: "
+        "the sine of it is at most the tolerance."
+    ),
+}
+
+
 def _reason(coords: tuple[int, ...], zero_normal: bool, fmt: str = "exact") -> str:
     """One sentence saying why a triangle is degenerate (``coords`` over one denominator)."""
     a, b, c = coords[0:3], coords[3:6], coords[6:9]
     if a == b == c:
-        return "A, B and C are the same point."
+        return VERDICTS["same_point"]
     for p, q, names in ((a, b, "A and B"), (a, c, "A and C"), (b, c, "B and C")):
         if p == q:
-            return f"{names} coincide, so the triangle has no area."
+            return VERDICTS["coincide"].format(names=names)
     if zero_normal:
         where = "" if fmt == "exact" else f" in {fmt} arithmetic"
-        return f"A, B and C are collinear{where} (they lie on one line), so the area is zero."
-    return (
-        "the angle between the edges is too small to trust: "
-        "the sine of it is at most the tolerance."
-    )
+        return VERDICTS["collinear"].format(where=where)
+    return VERDICTS["too_thin"]
 
 
 def triangle_normal(

@@ -29,7 +29,8 @@ from trinormal.validation import check_coordinate, check_precision
 
 __all__ = ["format_number", "format_vector"]
 
-_SCI_ABOVE_LOG10 = 15  # values >= 1e15 print in scientific notation
+#: Values of at least 10**SCI_ABOVE_LOG10 print in scientific notation.
+SCI_ABOVE_LOG10 = 15
 _check_precision = check_precision
 
 
@@ -87,7 +88,7 @@ def format_surd(negative: bool, num: int, den: int, precision: int, trim: bool =
     # Scientific where fixed-point would show zero, sqrt(num/den) < 10**-p / 2, that is
     # 4 num 100**p < den; and at 1e15 and above
     small = 4 * num * 100**p < den
-    large = num >= den * 100**_SCI_ABOVE_LOG10
+    large = num >= den * 100**SCI_ABOVE_LOG10
     sign = "-" if negative else ""
     if not (small or large):
         m = _round_sqrt(num, den, p)

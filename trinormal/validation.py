@@ -63,6 +63,7 @@ __all__ = [
     "MAX_DIGITS",
     "MAX_PRECISION",
     "MAX_TEXT_LENGTH",
+    "MESSAGES",
     "MIN_PRECISION",
     "Winding",
     "check_common",
@@ -72,6 +73,7 @@ __all__ = [
     "check_vertex",
     "check_winding",
     "limits",
+    "message",
     "quote_input",
 ]
 
@@ -86,6 +88,8 @@ MAX_COMMON_DIGITS = 850
 MAX_TEXT_LENGTH = 1000
 #: The range of ``precision``, the number of decimal places shown.
 MIN_PRECISION, MAX_PRECISION = 0, 15
+#: Characters of an input echoed in a message; longer inputs are cut (see `quote_input`).
+QUOTE_SHOWN = 24
 
 VERTICES = "ABC"
 AXES = "xyz"
@@ -105,7 +109,64 @@ def limits() -> dict[str, int]:
         "max_text_length": MAX_TEXT_LENGTH,
         "min_precision": MIN_PRECISION,
         "max_precision": MAX_PRECISION,
+        "quote_shown": QUOTE_SHOWN,
     }
+
+
+#: Every message these checks give, as a ``str.format`` template. The site's
+#: calculator fills in the same templates (the build writes them into its
+#: constants), so a wording changed here changes on both. A template uses only
+#: plain ``{field}`` names: the names of `limits` (filled in by `message`) and
+#: ``name`` (the value's name, such as ``B.y``), ``shown`` (the input, quoted
+#: by `quote_input`) and the few others listed with each.
+MESSAGES: dict[str, str] = {
+    "too_long": "{name} is too long ({length} characters; at most {max_text_length})",
+    "empty": "{name} is empty",
+    "nan": "{name} is NaN",
+    "infinite": "{name} is infinite",
+    "divides_by_zero": "{name} = {shown} divides by zero",
+    "not_a_number": (
+        "{name} = {shown} is not a number (use a decimal like 0.1 or a fraction like 1/3)"
+    ),
+    # subject: the name, or "name = shown" when the input was text
+    "too_large": (
+        "{subject} is too large a number, or too small a fraction, to compute with exactly "
+        "(at most {max_digits} digits in its numerator and in its denominator)"
+    ),
+    "too_large_together": (
+        "{name} makes the nine coordinates too large to compute with exactly: "
+        "over one common denominator they would need more than {max_common_digits} digits"
+    ),
+    "not_rational": (
+        "{name} = {shown} is not a rational number: "
+        "give it as a decimal or a fraction (the arithmetic is exact on rationals)"
+    ),
+    # what: the type's name, or the value itself for None and booleans
+    "not_real": "{name} is {what}, expected a real number",
+    # kind: the type's name
+    "not_a_vertex": "{name} must be 3 coordinates (x, y, z) in a list, tuple or array, got {kind}",
+    # count: how many coordinates there are
+    "vertex_size": "{name} has {count} coordinates, expected 3",
+    "winding": "{name} must be 'ABC' or 'ACB', got {shown} (invalid choice)",
+    "precision_not_whole": (
+        "{name} must be a whole number from {min_precision} to {max_precision}, got {shown}"
+    ),
+    "precision_range": "{name} must be from {min_precision} to {max_precision}, got {shown}",
+    "tolerance_rule": "{name} must be >= 0 and <= 1 (it bounds the sine of an angle)",
+}
+
+
+def message(key: str, **values: object) -> str:
+    """Fill in the template ``MESSAGES[key]`` with the limits and ``values``.
+
+    Examples
+    --------
+    >>> message("nan", name="B.y")
+    'B.y is NaN'
+    >>> message("too_long", name="A.x", length=1200)
+    'A.x is too long (1200 characters; at most 1000)'
+    """
+    return MESSAGES[key].format(**limits(), **values)
 
 
 _LIMIT = 10**MAX_DIGITS
@@ -142,8 +203,6 @@ class Winding(StrEnum):
 
 # --------------------------------------------------------------------------- showing input
 
-_QUOTE_SHOWN = 24  # characters of an input echoed in a message; longer inputs are cut
-
 
 def quote_input(text: str) -> str:
     r"""Quote a user's text for an error message, as Python's ``repr`` would, but short.
@@ -162,9 +221,9 @@ def quote_input(text: str) -> str:
     >>> quote_input("1" * 30)
     "'111111111111111111111111…'"
     """
-    cut = len(text) > _QUOTE_SHOWN
+    cut = len(text) > QUOTE_SHOWN
     if cut:
-        text = text[:_QUOTE_SHOWN]
+        text = text[:QUOTE_SHOWN]
     quote = '"' if "'" in text and '"' not in text else "'"
     out = [quote]
     for ch in text:
@@ -215,15 +274,11 @@ _DECIMAL_RE = re.compile(
 _FRACTION_RE = re.compile(rf"({_SIGN}?[0-9]+)[{SPACES}]*/[{SPACES}]*({_SIGN}?[0-9]+)", re.ASCII)
 _NAN_WORDS = {"nan", "+nan", "-nan"}
 _INF_WORDS = {"inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"}
-_NOT_A_NUMBER = "is not a number (use a decimal like 0.1 or a fraction like 1/3)"
 
 
 def _too_large(name: str, shown: str | None = None) -> ValueError:
-    what = name if shown is None else f"{name} = {shown}"
-    return ValueError(
-        f"{what} is too large a number, or too small a fraction, to compute with exactly "
-        f"(at most {MAX_DIGITS} digits in its numerator and in its denominator)"
-    )
+    subject = name if shown is None else f"{name} = {shown}"
+    return ValueError(message("too_large", subject=subject))
 
 
 def _check_ratio(n: int, d: int, name: str, shown: str | None = None) -> tuple[int, int]:
@@ -273,16 +328,16 @@ def _decimal(
 
 def _parse_text(text: str, name: str) -> tuple[int, int]:
     if len(text) > MAX_TEXT_LENGTH:
-        raise ValueError(f"{name} is too long ({len(text)} characters; at most {MAX_TEXT_LENGTH})")
+        raise ValueError(message("too_long", name=name, length=len(text)))
     s = text.strip(SPACES)
     if not s:
-        raise ValueError(f"{name} is empty")
+        raise ValueError(message("empty", name=name))
     shown = quote_input(s)
     low = s.lower().replace("\u2212", "-")
     if low in _NAN_WORDS:
-        raise ValueError(f"{name} is NaN")
+        raise ValueError(message("nan", name=name))
     if low in _INF_WORDS:
-        raise ValueError(f"{name} is infinite")
+        raise ValueError(message("infinite", name=name))
     m = _DECIMAL_RE.fullmatch(s)
     if m:
         return _decimal(m.group(1), m.group(2), m.group(3), name, shown)
@@ -291,16 +346,16 @@ def _parse_text(text: str, name: str) -> tuple[int, int]:
         top, bottom = (g.replace("\u2212", "-") for g in m.groups())
         n, d = int(top), int(bottom)  # at most MAX_TEXT_LENGTH digits: cheap
         if d == 0:
-            raise ValueError(f"{name} = {shown} divides by zero")
+            raise ValueError(message("divides_by_zero", name=name, shown=shown))
         return _check_ratio(n, d, name, shown) if d > 0 else _check_ratio(-n, -d, name, shown)
-    raise ValueError(f"{name} = {shown} {_NOT_A_NUMBER}")
+    raise ValueError(message("not_a_number", name=name, shown=shown))
 
 
 def _from_decimal(x: Decimal, name: str) -> tuple[int, int]:
     if x.is_nan():
-        raise ValueError(f"{name} is NaN")
+        raise ValueError(message("nan", name=name))
     if x.is_infinite():
-        raise ValueError(f"{name} is infinite")
+        raise ValueError(message("infinite", name=name))
     if x.is_zero():
         return 0, 1
     adjusted = x.adjusted()  # 10**adjusted <= |x| < 10**(adjusted + 1)
@@ -327,7 +382,7 @@ def _from_sympy(x: Any, name: str) -> tuple[int, int] | None:
         if man == 0:
             if exp == 0:
                 return 0, 1
-            raise ValueError(f"{name} is NaN" if exp == -123 else f"{name} is infinite")
+            raise ValueError(message("nan" if exp == -123 else "infinite", name=name))
         # value = ±man * 2**exp with man odd: limits apply to man and 2**-exp
         if bc > _LIMIT_BITS or exp + bc > _LIMIT_BITS or -exp > _LIMIT_BITS:
             raise _too_large(name)
@@ -335,15 +390,12 @@ def _from_sympy(x: Any, name: str) -> tuple[int, int] | None:
         return _check_ratio(n << exp, 1, name) if exp >= 0 else _check_ratio(n, 1 << -exp, name)
     if getattr(x, "is_number", False):
         if type(x).__name__ == "NaN":
-            raise ValueError(f"{name} is NaN")
+            raise ValueError(message("nan", name=name))
         if getattr(x, "is_infinite", False):
-            raise ValueError(f"{name} is infinite")
+            raise ValueError(message("infinite", name=name))
         if getattr(x, "is_real", False):
-            raise ValueError(
-                f"{name} = {_show(x)} is not a rational number: "
-                "give it as a decimal or a fraction (the arithmetic is exact on rationals)"
-            )
-    raise TypeError(f"{name} is {type(x).__name__}, expected a real number")
+            raise ValueError(message("not_rational", name=name, shown=_show(x)))
+    raise TypeError(message("not_real", name=name, what=type(x).__name__))
 
 
 def check_coordinate(x: object, name: str = "value") -> tuple[int, int]:
@@ -389,9 +441,9 @@ def check_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     if t is float:  # the common cases first
         f = cast(float, x)
         if f != f:
-            raise ValueError(f"{name} is NaN")
+            raise ValueError(message("nan", name=name))
         if f in (math.inf, -math.inf):
-            raise ValueError(f"{name} is infinite")
+            raise ValueError(message("infinite", name=name))
         return f.as_integer_ratio()
     if t is int:
         i = cast(int, x)
@@ -401,7 +453,7 @@ def check_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     if isinstance(x, str):
         return _parse_text(x, name)
     if x is None or isinstance(x, bool) or t.__name__ == "bool_":
-        raise TypeError(f"{name} is {x!r}, expected a real number")
+        raise TypeError(message("not_real", name=name, what=repr(x)))
     sym = _from_sympy(x, name)
     if sym is not None:
         return sym
@@ -413,13 +465,13 @@ def check_coordinate(x: object, name: str = "value") -> tuple[int, int]:
         return _from_decimal(x, name)
     if isinstance(x, Real) and hasattr(x, "as_integer_ratio"):  # numpy floating scalars
         if x != x:
-            raise ValueError(f"{name} is NaN")
+            raise ValueError(message("nan", name=name))
         try:
             n, d = x.as_integer_ratio()
         except (OverflowError, ValueError):
-            raise ValueError(f"{name} is infinite") from None
+            raise ValueError(message("infinite", name=name)) from None
         return _check_ratio(int(n), int(d), name)
-    raise TypeError(f"{name} is {t.__name__}, expected a real number")
+    raise TypeError(message("not_real", name=name, what=t.__name__))
 
 
 def check_common(coords: list[tuple[int, int]]) -> tuple[tuple[int, ...], int]:
@@ -479,11 +531,7 @@ def check_common(coords: list[tuple[int, int]]) -> tuple[tuple[int, ...], int]:
 
 
 def _too_large_together(i: int) -> ValueError:
-    return ValueError(
-        f"{VERTICES[i // 3]}.{AXES[i % 3]} makes the nine coordinates too large to compute "
-        f"with exactly: over one common denominator they would need more than "
-        f"{MAX_COMMON_DIGITS} digits"
-    )
+    return ValueError(message("too_large_together", name=f"{VERTICES[i // 3]}.{AXES[i % 3]}"))
 
 
 # --------------------------------------------------------------------------- vertices
@@ -528,10 +576,7 @@ def check_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
     ...
     ValueError: A has 2 coordinates, expected 3
     """
-    not_a_sequence = TypeError(
-        f"{vertex} must be 3 coordinates (x, y, z) in a list, tuple or array, "
-        f"got {type(p).__name__}"
-    )
+    not_a_sequence = TypeError(message("not_a_vertex", name=vertex, kind=type(p).__name__))
     if (
         isinstance(p, (*_NOT_SEQUENCES, Mapping))
         or not hasattr(p, "__getitem__")
@@ -543,14 +588,14 @@ def check_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
     except TypeError:  # a 0-d array, for one
         raise not_a_sequence from None
     if size != 3:
-        raise ValueError(f"{vertex} has {size} coordinates, expected 3")
+        raise ValueError(message("vertex_size", name=vertex, count=size))
     items = []
     for item in p:  # type: ignore[attr-defined]
         items.append(item)
         if len(items) > 3:
             break
     if len(items) != 3:
-        raise ValueError(f"{vertex} has {len(items)} coordinates, expected 3")
+        raise ValueError(message("vertex_size", name=vertex, count=len(items)))
     return [check_coordinate(x, f"{vertex}.{axis}") for x, axis in zip(items, AXES, strict=True)]
 
 
@@ -591,7 +636,7 @@ def check_winding(winding: object, name: str = "winding") -> Winding:
         return _WINDINGS[winding]  # type: ignore[index]
     except (KeyError, TypeError):
         pass
-    raise ValueError(f"{name} must be 'ABC' or 'ACB', got {_show(winding)} (invalid choice)")
+    raise ValueError(message("winding", name=name, shown=_show(winding)))
 
 
 _WHOLE_RE = re.compile(r"[0-9]+", re.ASCII)
@@ -636,24 +681,16 @@ def check_precision(precision: object, name: str = "precision") -> int:
     if isinstance(precision, str):
         text = precision.strip(SPACES)
         if not _WHOLE_RE.fullmatch(text):
-            raise ValueError(
-                f"{name} must be a whole number from {MIN_PRECISION} to {MAX_PRECISION}, "
-                f"got {_show(precision)}"
-            )
+            raise ValueError(message("precision_not_whole", name=name, shown=_show(precision)))
         if len(text) > 6:
-            raise ValueError(
-                f"{name} must be from {MIN_PRECISION} to {MAX_PRECISION}, got {_show(text)}"
-            )
+            raise ValueError(message("precision_range", name=name, shown=_show(text)))
         p = int(text)
     elif isinstance(precision, Integral) and not isinstance(precision, bool):
         p = int(precision)
     else:
-        raise TypeError(
-            f"{name} must be a whole number from {MIN_PRECISION} to {MAX_PRECISION}, "
-            f"got {_show(precision)}"
-        )
+        raise TypeError(message("precision_not_whole", name=name, shown=_show(precision)))
     if not MIN_PRECISION <= p <= MAX_PRECISION:
-        raise ValueError(f"{name} must be from {MIN_PRECISION} to {MAX_PRECISION}, got {p}")
+        raise ValueError(message("precision_range", name=name, shown=p))
     return p
 
 
@@ -697,7 +734,7 @@ def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     ...
     ValueError: tol is NaN; tol must be >= 0 and <= 1 (it bounds the sine of an angle)
     """
-    rule = f"{name} must be >= 0 and <= 1 (it bounds the sine of an angle)"
+    rule = message("tolerance_rule", name=name)
     try:
         n, d = check_coordinate(tol, name)
     except ValueError as err:

@@ -12,7 +12,8 @@
 * The 3D view (``trinormal/explorer/static/``: the bundle built from ``js/explorer/``
   and its licence file) is copied to ``assets/explorer/``, and
   ``assets/javascripts/trinormal-constants.js`` is written from the package: the
-  output fields, the colour code, the precision range and the view's grid and range.
+  output fields, the colour code, the input limits and messages, the precision range and
+  the view's grid and range.
   On the explorer notebook's page the explorer's output becomes that live view.
 * Pages with math (and only those) get KaTeX (``assets/vendor/katex/``, copied from
   npm by ``js/vendor/copy-vendor.mjs``) and ``assets/javascripts/math.js``; the search
@@ -258,14 +259,21 @@ def view_defaults() -> dict[str, Any]:
 def site_constants() -> dict[str, Any]:
     """Everything the site's hand-written JavaScript must not list itself."""
     from trinormal.colors import palette
-    from trinormal.display import MAX_PRECISION
+    from trinormal.core import VERDICTS
+    from trinormal.display import SCI_ABOVE_LOG10
     from trinormal.fields import fields_spec
+    from trinormal.validation import MESSAGES, limits
 
     view = view_defaults()
+    limit = limits()
     return {
         "fields": fields_spec(),
         "palette": palette(),
-        "precision": {"min": 0, "max": MAX_PRECISION},
+        "precision": {"min": limit["min_precision"], "max": limit["max_precision"]},
+        "limits": limit,
+        "messages": dict(MESSAGES),
+        "verdicts": dict(VERDICTS),
+        "format": {"sci_above_log10": SCI_ABOVE_LOG10},
         "view": {"step": view["step"], "bounds": view["bounds"]},
     }
 
@@ -275,7 +283,7 @@ def constants_js() -> str:
     body = json.dumps(site_constants(), ensure_ascii=False, indent=1)
     return (
         "/* Written at build time by docs/hooks/trinormal_site.py from the trinormal package\n"
-        " * (trinormal.fields, .colors, .display and .explorer): do not edit. */\n"
+        " * (trinormal.fields, .colors, .validation and .explorer): do not edit. */\n"
         f"window.TRINORMAL_CONSTANTS = {body};\n"
     )
 

@@ -4,16 +4,21 @@ Every vector of ``tests/data/parser_vectors.json`` (generated from
 :mod:`trinormal.validation`) and of ``tests/data/calculator_vectors.json`` runs
 through ``docs/assets/javascripts/trinormal-core.js`` in Chromium: the same
 exact values, the same refusals, the same messages, the same formatted outputs.
-The script is the very file the site serves; it is loaded into a blank page, so
-no site build is needed. ``node tests/parser_vectors_check.js`` runs the first
-half without a browser.
+The script is the very file the site serves; it is loaded into a blank page after
+the constants the site build writes (``constants_js()`` of the mkdocs hook, which
+carries the limits and message templates), so no site build is needed.
+``node tests/parser_vectors_check.js`` runs the first half without a browser.
 """
 
 from __future__ import annotations
 
 import json
+import sys
 
 from browser_support import ROOT
+
+sys.path.insert(0, str(ROOT / "docs" / "hooks"))
+import trinormal_site  # the mkdocs hook, imported as the build imports it
 
 CORE_JS = ROOT / "docs/assets/javascripts/trinormal-core.js"
 CHECK_JS = ROOT / "tests/parser_vectors_check.js"
@@ -21,6 +26,7 @@ CHECK_JS = ROOT / "tests/parser_vectors_check.js"
 
 def _load(page) -> None:
     page.set_content("<!doctype html><html><body></body></html>")
+    page.add_script_tag(content=trinormal_site.constants_js())
     page.add_script_tag(path=str(CORE_JS))
     page.add_script_tag(path=str(CHECK_JS))
 
@@ -63,4 +69,4 @@ def test_the_limits_match_python(page):
 
     _load(page)
     js = page.evaluate("() => window.TrinormalCore.LIMITS")
-    assert {k.lower(): v for k, v in js.items()} == limits()
+    assert js == limits()

@@ -255,7 +255,7 @@
     if (pushUrl && fromView) writeUrlSoon();
     else if (pushUrl) writeUrl(state);
     var status = $("out-status");
-    // the core checks the precision (0 to 15, the same rule and message as Python)
+    // the core checks the precision (the rule and message of trinormal.validation)
     var result = window.TrinormalCore.compute(state.a, state.b, state.c, state.w, String(state.p));
     Object.keys(OUTPUTS).forEach(function (key) {
       $(OUTPUTS[key]).textContent = result.ok ? result.out[key] : DASH;

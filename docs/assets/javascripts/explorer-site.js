@@ -14,18 +14,19 @@ const BUNDLE = new URL("../explorer/explorer.js", import.meta.url).href;
 const KEYS = ["a", "b", "c", "winding", "precision"];
 
 function constants() {
-  return window.TRINORMAL_CONSTANTS || { fields: [], palette: {}, precision: { min: 0, max: 15 }, view: {} };
+  return window.TRINORMAL_CONSTANTS || { fields: [], palette: {}, view: {} };
 }
 
 /** The `state` the view draws and prints, from the exact core (see the view contract). */
 export function computeState(a, b, c, winding, precision, maxPrecision) {
-  const C = constants();
-  const p = Number(precision);
-  const range = { ...(C.precision || { min: 0, max: 15 }) };
-  if (maxPrecision !== undefined) range.max = Math.min(range.max, maxPrecision);
-  if (!/^\s*\d{1,2}\s*$/.test(String(precision)) || p < range.min || p > range.max) {
-    const error = `Precision must be a whole number from ${range.min} to ${range.max}, got ${JSON.stringify(String(precision))}`;
-    return { ok: false, error, status: error, readout: readoutRows(null, winding), summary: error };
+  let p;
+  try {
+    // the package's rule and message (trinormal.validation), at most maxPrecision when given
+    p = window.TrinormalCore.checkPrecision(precision, "precision", maxPrecision);
+  } catch (err) {
+    if (!(err instanceof window.TrinormalCore.InputError)) throw err;
+    const error = err.message;
+    return { ok: false, error, status: error, field: "precision", readout: readoutRows(null, winding), summary: error };
   }
   const r = window.TrinormalCore.compute(a, b, c, winding, p);
   if (!r.ok) return { ok: false, error: r.status, status: r.status, field: r.field, readout: readoutRows(null, winding), summary: r.status };

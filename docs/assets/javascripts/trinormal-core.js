@@ -7,27 +7,41 @@
  * rounded half away from zero from exact integer arithmetic. No floating point is
  * involved in any displayed digit, so the strings match Python byte for byte.
  *
- * Plain JavaScript, no dependencies. Works in the browser (window.TrinormalCore)
- * and in Node (module.exports).
+ * The input limits and every message wording are not written here: they come from
+ * trinormal/validation.py (MESSAGES and limits()) through the constants the site build
+ * writes, assets/javascripts/trinormal-constants.js, which must load before this file.
+ *
+ * Plain JavaScript, no dependencies. In the browser it reads window.TRINORMAL_CONSTANTS
+ * and defines window.TrinormalCore; in Node, module.exports is a function that takes
+ * those constants (the same object) and returns the API.
  */
 (function (root, factory) {
   "use strict";
-  var api = factory();
   if (typeof module === "object" && module.exports) {
-    module.exports = api;
+    module.exports = factory;
   } else {
-    root.TrinormalCore = api;
+    root.TrinormalCore = factory(root.TRINORMAL_CONSTANTS);
   }
-})(typeof self !== "undefined" ? self : this, function () {
+})(typeof self !== "undefined" ? self : this, function (constants) {
   "use strict";
 
-  // The limits and rules of trinormal/validation.py (tests/data/parser_vectors.json checks both).
-  var MAX_DIGITS = 400;
-  var MAX_COMMON_DIGITS = 850;
-  var MAX_TEXT_LENGTH = 1000;
-  var MIN_PRECISION = 0;
-  var MAX_PRECISION = 15;
-  var SCI_ABOVE_LOG10 = 15;
+  if (!constants || !constants.limits || !constants.messages || !constants.verdicts) {
+    throw new Error(
+      "trinormal-core.js needs TRINORMAL_CONSTANTS (assets/javascripts/trinormal-constants.js, " +
+        "written by the site build) to be loaded first"
+    );
+  }
+  // The limits and message templates of trinormal/validation.py, as the build wrote them.
+  var LIMITS = constants.limits;
+  var MESSAGES = constants.messages;
+  var MAX_DIGITS = LIMITS.max_digits;
+  var MAX_COMMON_DIGITS = LIMITS.max_common_digits;
+  var MAX_TEXT_LENGTH = LIMITS.max_text_length;
+  var MIN_PRECISION = LIMITS.min_precision;
+  var MAX_PRECISION = LIMITS.max_precision;
+  // The verdict sentences of trinormal/core.py and the formatter's cutoff (trinormal/display.py).
+  var VERDICTS = constants.verdicts;
+  var SCI_ABOVE_LOG10 = constants.format.sci_above_log10;
   var AXES = "xyz";
 
   // ------------------------------------------------------------------ integers
@@ -115,7 +129,7 @@
   var LIMIT = 10n ** BigInt(MAX_DIGITS);
   var COMMON_LIMIT = 10n ** BigInt(MAX_COMMON_DIGITS);
   var LIMIT_BITS = bitLength(LIMIT);
-  var QUOTE_SHOWN = 24;
+  var QUOTE_SHOWN = LIMITS.quote_shown;
   var SPACES = "\t\n\v\f\r \x85\xa0\u1680\u2000-\u200a\u2028\u2029\u202f\u205f\u3000\ufeff";
   var STRIP_RE = new RegExp("^[" + SPACES + "]+|[" + SPACES + "]+$", "g");
   var SHOWN_RE = /[\p{L}\p{N}\p{P}\p{S}]/u;
@@ -158,7 +172,6 @@
   );
   var NAN_WORDS = ["nan", "+nan", "-nan"];
   var INF_WORDS = ["inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"];
-  var NOT_A_NUMBER = "is not a number (use a decimal like 0.1 or a fraction like 1/3)";
 
   function InputError(message) {
     this.name = "InputError";
@@ -166,12 +179,26 @@
   }
   InputError.prototype = Object.create(Error.prototype);
 
+  /*
+   * MESSAGES[key] with its {fields} filled in from the limits and `values`: what
+   * trinormal.validation.message does with str.format (the templates use plain {name}s only).
+   */
+  function message(key, values) {
+    var template = MESSAGES[key];
+    if (typeof template !== "string") throw new Error("no message template " + key);
+    return template.replace(/\{(\w+)\}/g, function (whole, field) {
+      if (values && Object.prototype.hasOwnProperty.call(values, field)) return String(values[field]);
+      if (Object.prototype.hasOwnProperty.call(LIMITS, field)) return String(LIMITS[field]);
+      throw new Error("message " + key + " needs a value for {" + field + "}");
+    });
+  }
+
+  function refuse(key, values) {
+    return new InputError(message(key, values));
+  }
+
   function tooLarge(name, shown) {
-    return new InputError(
-      (shown === undefined ? name : name + " = " + shown) +
-        " is too large a number, or too small a fraction, to compute with exactly (at most " +
-        MAX_DIGITS + " digits in its numerator and in its denominator)"
-    );
+    return refuse("too_large", { subject: shown === undefined ? name : name + " = " + shown });
   }
 
   function checkRatio(n, d, name, shown) {
@@ -226,37 +253,29 @@
   function parseCoordinate(text, name) {
     text = String(text);
     var length = Array.from(text).length;
-    if (length > MAX_TEXT_LENGTH) {
-      throw new InputError(
-        name + " is too long (" + length + " characters; at most " + MAX_TEXT_LENGTH + ")"
-      );
-    }
+    if (length > MAX_TEXT_LENGTH) throw refuse("too_long", { name: name, length: length });
     var s = text.replace(STRIP_RE, "");
-    if (!s) throw new InputError(name + " is empty");
+    if (!s) throw refuse("empty", { name: name });
     var shown = quoteInput(s);
     var low = s.toLowerCase().replace(/\u2212/g, "-");
-    if (NAN_WORDS.indexOf(low) >= 0) throw new InputError(name + " is NaN");
-    if (INF_WORDS.indexOf(low) >= 0) throw new InputError(name + " is infinite");
+    if (NAN_WORDS.indexOf(low) >= 0) throw refuse("nan", { name: name });
+    if (INF_WORDS.indexOf(low) >= 0) throw refuse("infinite", { name: name });
     var m = DECIMAL_RE.exec(s);
     if (m) return readDecimal(m[1], m[2], m[3], name, shown);
     m = FRACTION_RE.exec(s);
     if (m) {
       var num = BigInt(m[1].replace(/\u2212/g, "-"));
       var den = BigInt(m[2].replace(/\u2212/g, "-"));
-      if (den === 0n) throw new InputError(name + " = " + shown + " divides by zero");
+      if (den === 0n) throw refuse("divides_by_zero", { name: name, shown: shown });
       return den > 0n ? checkRatio(num, den, name, shown) : checkRatio(-num, -den, name, shown);
     }
-    throw new InputError(name + " = " + shown + " " + NOT_A_NUMBER);
+    throw refuse("not_a_number", { name: name, shown: shown });
   }
 
   /* One common denominator for the nine coordinates, within the limit: validation.check_common. */
   function checkCommon(coords) {
     var tooLargeTogether = function (i) {
-      return new InputError(
-        "ABC"[Math.floor(i / 3)] + "." + AXES[i % 3] +
-          " makes the nine coordinates too large to compute with exactly: over one common " +
-          "denominator they would need more than " + MAX_COMMON_DIGITS + " digits"
-      );
+      return refuse("too_large_together", { name: "ABC"[Math.floor(i / 3)] + "." + AXES[i % 3] });
     };
     var D = 1n;
     for (var i = 0; i < coords.length; i++) {
@@ -276,34 +295,32 @@
     return { ints: ints, D: D };
   }
 
-  /* A precision as trinormal.validation.check_precision reads it (a number or typed text). */
-  function checkPrecision(value, name) {
-    name = name || "precision";
-    var range = MIN_PRECISION + " to " + MAX_PRECISION;
+  /*
+   * A precision as trinormal.validation.check_precision reads it (a number or typed text).
+   * `max`, when given, lowers the largest precision allowed (a view that shows fewer digits).
+   */
+  function checkPrecision(value, name, max) {
+    var range = { name: name || "precision" };
+    if (max !== undefined && max < MAX_PRECISION) range.max_precision = max;
     var p;
     if (typeof value === "string") {
       var text = value.replace(STRIP_RE, "");
-      if (!/^[0-9]+$/.test(text)) {
-        throw new InputError(name + " must be a whole number from " + range + ", got " + show(value));
-      }
-      if (text.length > 6) throw new InputError(name + " must be from " + range + ", got " + show(text));
+      if (!/^[0-9]+$/.test(text)) throw refuse("precision_not_whole", Object.assign({ shown: show(value) }, range));
+      if (text.length > 6) throw refuse("precision_range", Object.assign({ shown: show(text) }, range));
       p = parseInt(text, 10);
     } else if (typeof value === "number" && Number.isInteger(value)) {
       p = value;
     } else {
-      throw new InputError(name + " must be a whole number from " + range + ", got " + show(value));
+      throw refuse("precision_not_whole", Object.assign({ shown: show(value) }, range));
     }
-    if (p < MIN_PRECISION || p > MAX_PRECISION) {
-      throw new InputError(name + " must be from " + range + ", got " + p);
-    }
+    var top = range.max_precision === undefined ? MAX_PRECISION : range.max_precision;
+    if (p < MIN_PRECISION || p > top) throw refuse("precision_range", Object.assign({ shown: p }, range));
     return p;
   }
 
   function checkWinding(value, name) {
     if (value === "ABC" || value === "ACB") return value;
-    throw new InputError(
-      (name || "winding") + " must be 'ABC' or 'ACB', got " + show(value) + " (invalid choice)"
-    );
+    throw refuse("winding", { name: name || "winding", shown: show(value) });
   }
 
   // ------------------------------------------------------------------ formatting
@@ -389,18 +406,22 @@
     return ints[i] === ints[j] && ints[i + 1] === ints[j + 1] && ints[i + 2] === ints[j + 2];
   }
 
+  /* VERDICTS[key] with its {fields} filled in, as str.format does in trinormal/core.py. */
+  function verdict(key, values) {
+    return VERDICTS[key].replace(/\{(\w+)\}/g, function (whole, field) {
+      return String(values[field]);
+    });
+  }
+
   function reason(ints, zeroNormal) {
     var ab = sameInts(ints, 0, 3);
     var ac = sameInts(ints, 0, 6);
-    if (ab && ac) return "A, B and C are the same point.";
-    if (ab) return "A and B coincide, so the triangle has no area.";
-    if (ac) return "A and C coincide, so the triangle has no area.";
-    if (sameInts(ints, 3, 6)) return "B and C coincide, so the triangle has no area.";
-    if (zeroNormal) return "A, B and C are collinear (they lie on one line), so the area is zero.";
-    return (
-      "the angle between the edges is too small to trust: " +
-      "the sine of it is at most the tolerance."
-    );
+    if (ab && ac) return verdict("same_point", {});
+    if (ab) return verdict("coincide", { names: "A and B" });
+    if (ac) return verdict("coincide", { names: "A and C" });
+    if (sameInts(ints, 3, 6)) return verdict("coincide", { names: "B and C" });
+    if (zeroNormal) return verdict("collinear", { where: "" });
+    return verdict("too_thin", {});
   }
 
   /*
@@ -469,7 +490,7 @@
     if (degenerate) {
       out.unit_normal = "undefined";
       out.plane = "undefined";
-      status = "Degenerate: " + reason(ints, S === 0n) + " No unit normal exists.";
+      status = verdict("degenerate", { reason: reason(ints, S === 0n) });
     } else {
       var unit = n.map(function (x) {
         return formatSurd(x < 0n, x * x, S, p, false);
@@ -477,7 +498,7 @@
       var dot = n[0] * ints[0] + n[1] * ints[1] + n[2] * ints[2];
       out.unit_normal = joinVector(unit);
       out.plane = planeEquation(unit, formatSurd(dot < 0n, dot * dot, S * D2, p, false));
-      status = "A proper triangle: the unit normal is defined.";
+      status = verdict("proper", {});
     }
     var big = n.reduce(function (m, x) {
       return abs(x) > m ? abs(x) : m;
@@ -513,13 +534,8 @@
     checkPrecision: checkPrecision,
     checkWinding: checkWinding,
     quoteInput: quoteInput,
-    LIMITS: {
-      MAX_DIGITS: MAX_DIGITS,
-      MAX_COMMON_DIGITS: MAX_COMMON_DIGITS,
-      MAX_TEXT_LENGTH: MAX_TEXT_LENGTH,
-      MIN_PRECISION: MIN_PRECISION,
-      MAX_PRECISION: MAX_PRECISION,
-    },
+    message: message,
+    LIMITS: Object.freeze(Object.assign({}, LIMITS)),
     formatSurd: formatSurd,
     isqrt: isqrt,
     InputError: InputError,
