@@ -91,6 +91,21 @@ def test_the_whole_explorer_fits_a_projector_window(notebook: Any) -> None:
         page.locator('[data-vertex="A"]').first.element_handle(),
     )
     assert size >= 14
+    # every piece of text in the explorer, the sliders and boxes included, is at least 14 px
+    smallest = page.evaluate(
+        """(root) => {
+            let least = Infinity;
+            for (const e of root.querySelectorAll('*')) {
+                const own = [...e.childNodes].some((n) => n.nodeType === 3 && n.textContent.trim());
+                if (own || e.tagName === 'INPUT') {
+                    least = Math.min(least, parseFloat(getComputedStyle(e).fontSize));
+                }
+            }
+            return least;
+        }""",
+        explorer.element_handle(),
+    )
+    assert smallest >= 14, smallest
 
 
 def test_dragging_a_vertex_updates_the_kernel(notebook: Any) -> None:
