@@ -81,10 +81,6 @@ def _check_in_range(name: str, value: float, low: float, high: float) -> float:
     return value
 
 
-def _check_precision(value: object) -> int:
-    return check_precision(value)
-
-
 def _check_winding(value: object) -> str:
     return check_winding(value).value
 
@@ -107,7 +103,7 @@ class _PrecisionSlider(widgets.IntSlider):  # type: ignore[misc]
 
     @traitlets.validate("value")
     def _validate_value(self, proposal: Any) -> int:
-        return _check_precision(proposal["value"])
+        return check_precision(proposal["value"])
 
 
 class _WindingButtons(widgets.ToggleButtons):  # type: ignore[misc]
@@ -237,7 +233,7 @@ class Explorer:
             raise ValueError(f"step must be positive and at most max - min, got {step!r}")
         self.min, self.max, self.step = low, high, float(step_value)
         self._step_text = step_text
-        precision = _check_precision(precision)
+        precision = check_precision(precision)
         w = _check_winding(winding)
         texts = self._read_points({"a": a, "b": b, "c": c})
 
@@ -405,7 +401,7 @@ class Explorer:
         points = {p: v for p, v in zip("abc", (a, b, c), strict=True) if v is not None}
         texts = {**self._texts, **self._read_points(points)}
         w = self.result.winding.value if winding is None else _check_winding(winding)
-        p = self._precision if precision is None else _check_precision(precision)
+        p = self._precision if precision is None else check_precision(precision)
         self._apply(texts, w, p)
 
     # ------------------------------------------------------------------ updates
