@@ -16,15 +16,31 @@ UV_DEP :=
 endif
 RUN := $(UV) run --locked --no-sync
 
-.PHONY: env lab lab-env test lint types unit notebooks nbval docs docs-build browser bench js clean
+# The interpreter's real path. `python3` is often a shim (pyenv, asdf) whose path differs from the
+# interpreter .venv was made with: handed the shim, uv removes and rebuilds .venv on every call.
+PYTHON_EXE := $(shell $(PYTHON) -c 'import sys; print(sys.executable)' 2>/dev/null)
+UV_PYTHON_ARG := $(if $(PYTHON_EXE),--python "$(PYTHON_EXE)")
+
+# `uv sync`, skipped when a dry run says it would change nothing (so no second bytecode compile):
+# a second `make env` takes well under 2 s.
+SYNC := sh scripts/sync-env.sh $(UV)
+
+# Each stage of `make test` runs under this wrapper, which adds its time to .cache/stage-times.tsv;
+# `make test` prints the table at the end.
+PY := $(if $(PYTHON_EXE),$(PYTHON_EXE),$(PYTHON))
+TIMED = $(PY) scripts/stages.py run $@ --
+
+.PHONY: env lab lab-env test test-stages lint types unit notebooks nbval docs docs-build browser bench js clean
 
 .tools/bin/uv:
 	$(PYTHON) -m venv .tools
 	.tools/bin/pip install --quiet --disable-pip-version-check uv
 
-## env: create or refresh .venv/ (package editable, every group)
+## env: create or refresh .venv/ (package editable, every group); a no-op when it is up to date
+# Every group is a superset of what any other target installs, so exact syncing removes nothing
+# another target put there.
 env: $(UV_DEP)
-	$(UV) sync --locked --all-groups --python "$$(command -v $(PYTHON))"
+	$(TIMED) $(SYNC) --locked --all-groups $(UV_PYTHON_ARG)
 
 ## lab: open JupyterLab on the notebooks (the main job)
 # Installs only the lab group (the package, numpy, sympy, matplotlib, widgets, JupyterLab), not the
@@ -38,26 +54,32 @@ LAB_FLAGS := --LabApp.news_url=None --LabApp.check_for_updates_class=jupyterlab.
 	$(if $(filter 0,$(shell id -u)),--allow-root)
 
 lab-env: $(UV_DEP)
-	UV_COMPILE_BYTECODE=0 $(UV) sync --locked --inexact --no-default-groups --group lab --python "$$(command -v $(PYTHON))"
+	UV_COMPILE_BYTECODE=0 $(SYNC) --locked --inexact --no-default-groups --group lab $(UV_PYTHON_ARG)
 
 lab: lab-env
 	$(RUN) jupyter lab notebooks $(LAB_FLAGS)
 
 ## test: lint, types, unit/property/doctests, notebooks (nbval), the site and its browser tests
-test: env lint types unit nbval docs-build browser
+# Prints each stage's time at the end, also when a stage fails.
+test:
+	@$(PY) scripts/stages.py reset
+	@$(MAKE) --no-print-directory test-stages; status=$$?; $(PY) scripts/stages.py report; exit $$status
+
+test-stages: env lint types unit nbval docs-build browser
 
 lint: env
-	$(RUN) ruff check trinormal tests benchmarks docs
-	$(RUN) ruff format --check trinormal tests benchmarks docs
+	$(TIMED) $(RUN) ruff check trinormal tests benchmarks docs scripts
+	$(TIMED) $(RUN) ruff format --check trinormal tests benchmarks docs scripts
 
 types: env
-	$(RUN) mypy
+	$(TIMED) $(RUN) mypy
 
+# In parallel on every core (pytest-xdist).
 unit: env
-	$(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q
+	$(TIMED) $(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q -n auto
 
 nbval: env
-	$(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks -q
+	$(TIMED) $(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks -q
 
 ## notebooks: re-execute every notebook top to bottom from a clean kernel, storing outputs
 notebooks: env
@@ -68,10 +90,11 @@ docs: env
 	$(RUN) mkdocs serve -a 127.0.0.1:8000
 
 docs-build: env
-	$(RUN) mkdocs build --strict
+	$(TIMED) $(RUN) mkdocs build --strict
 
+# The site docs-build made, never a second build.
 browser: env docs-build
-	$(RUN) pytest tests/browser -q
+	TRINORMAL_SITE_DIR="$(CURDIR)/site" $(TIMED) $(RUN) pytest tests/browser -q
 
 ## bench: the performance figures, each against a peer measured in the same run
 bench: env
