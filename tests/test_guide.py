@@ -205,3 +205,97 @@ def test_coincident_points_have_their_own_message():
     line = triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["status"]
     assert "coincide" in twin and "collinear" not in twin and twin != line
     assert "B equals C" in (GUIDE / "degenerate.md").read_text(encoding="utf-8")
+
+
+# --------------------------------------------------------------------------- when to normalise
+
+
+def test_normalising_cases_agree_with_the_mesh_weightings():
+    """Three recipes are mesh.vertex_normals' weightings (computed independently there)."""
+    import numpy as np
+
+    from trinormal import mesh
+
+    cases = {c.recipe: c for c in guide.normalising_cases()}
+    v, f = np.array(guide.SLIVER_VERTICES, dtype=float), np.array(guide.SLIVER_FACES)
+    for recipe, weighting in (
+        ("unit normals summed", "uniform"),
+        ("raw normals summed", "area"),
+        ("unit normals × corner angles", "angle"),
+    ):
+        want = mesh.vertex_normals(v, f, weighting)[0]
+        assert np.allclose(cases[recipe].normal, want, rtol=0, atol=1e-12), recipe
+    assert [c.mistake for c in guide.normalising_cases()] == [True, False, False, True]
+
+
+def test_raw_normals_times_angles_is_not_angle_weighting():
+    """The slip the old notebook 04 'fix' led to: raw N times the angle, by numpy."""
+    import numpy as np
+
+    v = np.array(guide.SLIVER_VERTICES, dtype=float)
+    total = np.zeros(3)
+    for face in guide.SLIVER_FACES:
+        p, q, r = v[list(face)]
+        n = np.cross(q - p, r - p)
+        u, w = q - p, r - p
+        total += n * np.arccos(u @ w / np.linalg.norm(u) / np.linalg.norm(w))
+    total /= np.linalg.norm(total)
+    got = {c.recipe: c.normal for c in guide.normalising_cases()}["raw normals × corner angles"]
+    assert np.allclose(got, total, rtol=0, atol=1e-12)
+    angle = {c.recipe: c.normal for c in guide.normalising_cases()}["unit normals × corner angles"]
+    assert np.degrees(np.arccos(np.clip(np.dot(got, angle), -1, 1))) > 5  # visibly different
+
+
+def test_the_mistake_text_and_practice_page_carry_the_numbers():
+    text = dict(guide.MISTAKES)["normalizing too early"]
+    from trinormal import format_vector
+
+    for case in guide.normalising_cases():
+        assert format_vector(case.normal, 4, trim=True) in text
+    practice = (GUIDE / "practice.md").read_text(encoding="utf-8")
+    assert "{{ trinormal:normalising_table }}" in practice
+    assert "{{ trinormal:mistakes }}" in practice
+
+
+def test_the_notebooks_tell_one_story_about_normalising():
+    """No notebook says to keep raw normals for angle weighting (the contradiction of issue 18)."""
+    for name in ("04_common_mistakes.ipynb", "08_vertex_normals.ipynb", "09_shading.ipynb"):
+        text = " ".join(notebook_text(name).split())
+        assert "keep raw normals (or the corner angles) until the sum is done" not in text, name
+    assert "## Mistake 4: normalizing too early" in notebook_text("04_common_mistakes.ipynb")
+
+
+def test_reflect_keeps_length_flips_the_normal_part_and_is_an_involution():
+    import random
+    from fractions import Fraction
+
+    rng = random.Random(18)
+    for _ in range(200):
+        d = [Fraction(rng.randint(-50, 50), rng.randint(1, 9)) for _ in range(3)]
+        n = [Fraction(rng.randint(-50, 50), rng.randint(1, 9)) for _ in range(3)]
+        if not any(n):
+            continue
+        r = guide.reflect(d, n)
+        assert sum(x * x for x in r) == sum(x * x for x in d)
+        assert sum(a * b for a, b in zip(r, n, strict=True)) == -sum(
+            a * b for a, b in zip(d, n, strict=True)
+        )
+        assert list(guide.reflect(r, n)) == d
+        scaled = [3 * x for x in n]
+        assert guide.reflect(d, scaled) == r  # only the direction of N matters
+
+
+def test_reflect_matches_the_unit_normal_formula_and_refuses_a_zero_normal():
+    import math
+
+    import pytest
+
+    n = triangle_normal((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    d = (0.3, -1.0, 0.2)
+    u = n.unit_normal
+    dot = sum(a * b for a, b in zip(d, u, strict=True))
+    want = [a - 2 * dot * b for a, b in zip(d, u, strict=True)]
+    got = [float(x) for x in guide.reflect(d, n.exact.normal)]
+    assert all(math.isclose(a, b, rel_tol=0, abs_tol=1e-15) for a, b in zip(got, want, strict=True))
+    with pytest.raises(ValueError, match="degenerate"):
+        guide.reflect(d, (0, 0, 0))

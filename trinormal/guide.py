@@ -24,6 +24,8 @@ import math
 import struct
 from collections.abc import Sequence
 from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
 
 from trinormal.core import TriangleNormal, triangle_normal
 from trinormal.display import format_number, format_vector
@@ -34,13 +36,19 @@ __all__ = [
     "COMPARISON_TABLE_PRECISION",
     "MISTAKES",
     "PRECISION_FORMATS",
+    "SLIVER_FACES",
+    "SLIVER_VERTICES",
     "WORKED_EXAMPLE",
     "ComparisonRow",
     "FloatFormat",
+    "NormalisingCase",
     "comparison_table_cells",
     "comparison_table_markdown",
+    "normalising_cases",
+    "normalising_table_markdown",
     "parse_markdown_table",
     "precision_table_markdown",
+    "reflect",
     "worked_example",
     "worked_example_markdown",
 ]
@@ -366,6 +374,228 @@ def precision_table_markdown() -> str:
     return "\n".join(lines)
 
 
+# --------------------------------------------------------------------------- when to normalise
+
+Vec3 = tuple[float, float, float]
+
+#: Notebook 4's vertex: a large face facing +z and a thin sliver facing +x meet at vertex 0.
+SLIVER_VERTICES: tuple[tuple[float, float, float], ...] = (
+    (0, 0, 0),
+    (3, 0, 0),
+    (0, 3, 0),
+    (0, 1, 0),
+    (0, 1, 0.2),
+)
+#: The two faces of that vertex, each listed counter-clockwise seen from its normal's side.
+SLIVER_FACES: tuple[tuple[int, int, int], ...] = ((0, 1, 2), (0, 3, 4))
+
+
+@dataclass(frozen=True)
+class NormalisingCase:
+    """One way of summing face normals into a vertex normal, and what it amounts to.
+
+    Attributes
+    ----------
+    recipe : str
+        What is added up, e.g. ``"raw normals summed"``.
+    weighting : str
+        The weighting that recipe amounts to, or the mistake it is.
+    mistake : bool
+        True when the recipe is a mistake (a normalisation too early or missing).
+    normal : tuple of float
+        The sum, normalised once at the end: the unit vertex normal.
+    """
+
+    recipe: str
+    weighting: str
+    mistake: bool
+    normal: Vec3
+
+
+def _unit(v: Sequence[float]) -> Vec3:
+    length = math.sqrt(sum(x * x for x in v))
+    return (v[0] / length, v[1] / length, v[2] / length)
+
+
+def _corner_angle(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> float:
+    """Return the angle at corner p of triangle p, q, r (radians), from atan2(|u × v|, u · v)."""
+    u = [b - a for a, b in zip(p, q, strict=True)]
+    v = [b - a for a, b in zip(p, r, strict=True)]
+    cross = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    return math.atan2(
+        math.sqrt(sum(x * x for x in cross)), sum(a * b for a, b in zip(u, v, strict=True))
+    )
+
+
+def normalising_cases(
+    vertices: Sequence[Sequence[float]] = SLIVER_VERTICES,
+    faces: Sequence[Sequence[int]] = SLIVER_FACES,
+    vertex: int = 0,
+) -> tuple[NormalisingCase, ...]:
+    """Sum the normals of the faces at a vertex four ways: when to normalise, in numbers.
+
+    A face normal's length is twice the face's area. Area weighting uses that
+    length as the weight, so it sums the raw normals; angle weighting uses the
+    corner angle as the whole weight, so it multiplies each *unit* normal by its
+    angle. Normalising too early (unit normals summed when area weighting was
+    meant) or not at all (raw normals times angles) gives a different vector.
+    Every recipe normalises its sum once, at the end.
+
+    Parameters
+    ----------
+    vertices : sequence of (x, y, z)
+        Vertex coordinates; notebook 4's large face and sliver by default.
+    faces : sequence of (i, j, k)
+        Vertex indices of each triangle.
+    vertex : int, default 0
+        The vertex whose normal is summed.
+
+    Returns
+    -------
+    tuple of NormalisingCase
+        Unit normals summed (equal votes), raw normals summed (area weighting),
+        unit normals times corner angles (angle weighting, recommended) and raw
+        normals times corner angles (a mistake), in that order.
+
+    Examples
+    --------
+    >>> for case in normalising_cases():
+    ...     print(f"{case.recipe:29s} {format_vector(case.normal, 4)}")
+    unit normals summed           (0.7071, 0.0000, 0.7071)
+    raw normals summed            (0.0222, 0.0000, 0.9998)
+    unit normals × corner angles  (0.1247, 0.0000, 0.9922)
+    raw normals × corner angles   (0.0028, 0.0000, 1.0000)
+    """
+    raw: list[Vec3] = []
+    unit: list[Vec3] = []
+    angles: list[float] = []
+    for face in faces:
+        if vertex not in face:
+            continue
+        pts = [vertices[i] for i in face]
+        r = triangle_normal(pts[0], pts[1], pts[2])
+        if r.unit_normal is None:
+            continue
+        n = r.exact.normal
+        raw.append((float(n[0]), float(n[1]), float(n[2])))
+        unit.append(r.unit_normal)
+        k = list(face).index(vertex)
+        angles.append(_corner_angle(pts[k], pts[(k + 1) % 3], pts[(k + 2) % 3]))
+
+    def total(vectors: Sequence[Vec3], weights: Sequence[float]) -> Vec3:
+        return _unit(
+            [sum(w * v[i] for v, w in zip(vectors, weights, strict=True)) for i in range(3)]
+        )
+
+    ones = [1.0] * len(raw)
+    return (
+        NormalisingCase(
+            "unit normals summed",
+            "equal votes: normalised too early if area weighting was meant",
+            True,
+            total(unit, ones),
+        ),
+        NormalisingCase("raw normals summed", "area weighting", False, total(raw, ones)),
+        NormalisingCase(
+            "unit normals × corner angles",
+            "angle weighting (recommended)",
+            False,
+            total(unit, angles),
+        ),
+        NormalisingCase(
+            "raw normals × corner angles",
+            "area times angle: not normalised where angle weighting needs it",
+            True,
+            total(raw, angles),
+        ),
+    )
+
+
+def normalising_table_markdown(precision: int = 4) -> str:
+    """Tabulate the four sums of [`normalising_cases`][trinormal.guide.normalising_cases].
+
+    Examples
+    --------
+    >>> print(normalising_table_markdown().splitlines()[4])
+    | Unit normals × corner angles | Angle weighting (recommended) | (0.1247, 0, 0.9922) |
+    """
+    lines = [
+        "| What is added up | What it amounts to | Vertex normal (sum normalised at the end) |",
+        "|---|---|---|",
+    ]
+    for case in normalising_cases():
+        lines.append(
+            f"| {case.recipe[:1].upper()}{case.recipe[1:]} | "
+            f"{case.weighting[:1].upper()}{case.weighting[1:]} | "
+            f"{format_vector(case.normal, precision, trim=True)} |"
+        )
+    return "\n".join(lines)
+
+
+def _normalizing_too_early() -> str:
+    cases = {c.recipe: format_vector(c.normal, 4, trim=True) for c in normalising_cases()}
+    return (
+        "The length of N is twice the area, and area weighting uses it as the weight: "
+        "normalising each face normal before adding gives a sliver the same vote as a large "
+        "face. At notebook 4's vertex (a large face and a sliver) the raw sum gives "
+        f"{cases['raw normals summed']}, the sum of unit normals {cases['unit normals summed']}. "
+        "Angle weighting, which trinormal recommends, does normalise each face first, because "
+        "there the corner angle is the whole weight: unit normals times angles give "
+        f"{cases['unit normals × corner angles']}, while raw normals times angles give "
+        f"{cases['raw normals × corner angles']}. Either way, normalise the sum once, at the end."
+    )
+
+
+# --------------------------------------------------------------------------- reflection
+
+
+def reflect(direction: Sequence[Any], normal: Sequence[Any]) -> tuple[Fraction, Fraction, Fraction]:
+    """Reflect a ray direction d about a plane with normal N: r = d − 2 (d · n̂) n̂, exactly.
+
+    With n̂ = N / |N| the formula becomes r = d − 2 (d · N) / (N · N) N, which
+    needs no square root, so a raw normal (even an unnormalised one) gives the
+    exact reflection in rational arithmetic. The reflected ray keeps the
+    length of d, and d · N changes sign.
+
+    Parameters
+    ----------
+    direction : sequence of 3 numbers
+        The incoming ray direction d (int, float, Fraction or numeric string).
+    normal : sequence of 3 numbers
+        A normal of the mirror plane, of any nonzero length, e.g.
+        ``triangle_normal(a, b, c).exact.normal``.
+
+    Returns
+    -------
+    tuple of 3 Fraction
+        The reflected direction r, exactly.
+
+    Raises
+    ------
+    ValueError
+        If the normal is the zero vector (a degenerate triangle has no plane).
+
+    Examples
+    --------
+    A ray going down onto the floor z = 0 bounces straight back up in z:
+
+    >>> n = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).exact.normal
+    >>> format_vector(reflect((1, 2, -3), n), 4, trim=True)
+    '(1, 2, 3)'
+    """
+    d = [Fraction(x) for x in direction]
+    n = [Fraction(x) for x in normal]
+    if len(d) != 3 or len(n) != 3:
+        raise ValueError("reflect needs a direction and a normal of three components each")
+    nn = sum(x * x for x in n)
+    if nn == 0:
+        raise ValueError(
+            "the normal is (0, 0, 0): a degenerate triangle has no plane to reflect in"
+        )
+    k = 2 * sum(a * b for a, b in zip(d, n, strict=True)) / nn
+    return (d[0] - k * n[0], d[1] - k * n[1], d[2] - k * n[2])
+
+
 # --------------------------------------------------------------------------- mistakes
 
 #: The guide's five common mistakes, in our words: (short name, what goes wrong).
@@ -385,8 +615,7 @@ MISTAKES: tuple[tuple[str, str], ...] = (
     ),
     (
         "normalizing too early",
-        "The length of N is twice the area; dividing it away before averaging "
-        "gives tiny faces as much say as large ones.",
+        _normalizing_too_early(),
     ),
     (
         "a 2D triangle without a third coordinate",

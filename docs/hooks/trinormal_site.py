@@ -513,6 +513,12 @@ def _mistakes(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return "\n".join(f"- **{name[:1].upper()}{name[1:]}.** {text}" for name, text in MISTAKES)
 
 
+def _normalising_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    from trinormal.guide import normalising_table_markdown
+
+    return str(normalising_table_markdown())
+
+
 def _value(args: list[str], page: Page, config: MkDocsConfig) -> str:
     """``value KEY A B C [winding] [precision] [trim]``: one formatted output of the package."""
     from trinormal import triangle_normal
@@ -609,6 +615,7 @@ HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
     "precision_table": _precision_table,
     "worked_example": _worked_example,
     "mistakes": _mistakes,
+    "normalising_table": _normalising_table,
     "value": _value,
     "cli": _cli,
     "api": _api,
