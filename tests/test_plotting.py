@@ -150,3 +150,104 @@ def test_multi_panel_figures_fit_a_projected_notebook():
             t.get_fontsize() for t in fig.findobj(matplotlib.text.Text) if t.get_text().strip()
         ]
         assert min(sizes) >= 12, fig.alt_text[:40]
+
+
+def _screen(ax, p):
+    """Pixel position (column, row from the top) of the 3D point p in the drawn figure."""
+    from mpl_toolkits.mplot3d import proj3d
+
+    x, y, _ = proj3d.proj_transform(*p, ax.get_proj())
+    col, row = ax.transData.transform((x, y))
+    return np.array([col, ax.figure.bbox.height - row])
+
+
+def _curl_ink(winding):
+    """Where the N-coloured ink near A lies: angle (0 along AB, 1 along AC) and distance.
+
+    Looks only at the rendered pixels: each pixel of N's colour is mapped back into the
+    triangle's plane (through the projected corners), and those within 0.55 of A in space
+    and inside the angle BAC are kept, with their angle from AB as a fraction of angle BAC.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    pts = ((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    fig = plotting.right_hand_rule_figure(*pts, winding=winding)
+    FigureCanvasAgg(fig)  # the figure is built without pyplot: give it a raster canvas
+    img = pixels(fig)
+    ax = fig.axes[0]
+    a, b, c = (_screen(ax, p) for p in pts)
+    n_colour = np.array(matplotlib.colors.to_rgb(colors.ROLE_COLORS["N"]))
+    rows, cols = np.nonzero(np.abs(img - n_colour).sum(axis=-1) < 0.25)
+    d = np.stack([cols, rows], axis=1) - a
+    st = np.linalg.solve(np.stack([b - a, c - a], axis=1), d.T).T  # plane coordinates
+    A, B, C = (np.array(p, dtype=float) for p in pts)
+    q = st[:, :1] * (B - A) + st[:, 1:] * (C - A)  # the pixel's point in space, from A
+    ab, ac = B - A, C - A
+    angle = np.arctan2(np.linalg.norm(np.cross(ab, q), axis=1), q @ ab)
+    frac = angle / np.arctan2(np.linalg.norm(np.cross(ab, ac)), ab @ ac)
+    dist = np.linalg.norm(q, axis=1)
+    keep = (dist < 0.55) & (st >= 0).all(axis=1)
+    return frac[keep], dist[keep]
+
+
+def _widths(frac, dist, bins=20):
+    """The radial width of the ink in each angular bin (0 for an empty bin)."""
+    k = np.clip((frac * bins).astype(int), 0, bins - 1)
+    return np.array([np.ptp(dist[k == i]) if (k == i).any() else 0.0 for i in range(bins)])
+
+
+def test_the_curl_arrowhead_shows_which_way_each_winding_turns():
+    """A→B→C curls from AB to AC; A→C→B from AC to AB: visibly, in pixels.
+
+    The same arc is drawn for both windings: a bare line (the tail) from U, then a wide
+    head pointing at V. Seen as widths along the angle BAC, the widest bin is the head,
+    and the thin bins lie mostly on the U side of it. A head no wider than the arc's line
+    (a blob of a few pixels) fails, and so does a head at the wrong end.
+    """
+    abc, acb = _widths(*_curl_ink("ABC")), _widths(*_curl_ink("ACB"))
+    line = min(np.percentile(w[w > 0], 25) for w in (abc, acb))  # the arc line's own width
+    assert abc.max() > 3 * line and acb.max() > 3 * line, (abc.round(3), acb.round(3))
+
+    def tail_towards_ab(widths):
+        """Thin bins on AB's side of the widest one, minus those on AC's side."""
+        k, thin = widths.argmax(), (widths > 0) & (widths < 1.5 * line)
+        return int(thin[:k].sum()) - int(thin[k + 1 :].sum())
+
+    assert tail_towards_ab(abc) >= 3, abc.round(3)  # tail at AB = U, head towards AC = V
+    assert tail_towards_ab(acb) <= -3, acb.round(3)  # tail at AC = U, head towards AB = V
+
+
+def test_n_is_drawn_at_its_true_length_or_labelled_with_its_scale():
+    import math
+
+    def drawn_n(fig):
+        ax = fig.axes[0]
+        (label,) = [t.get_text().strip() for t in ax.texts if "N" in t.get_text()]
+        from mpl_toolkits.mplot3d.art3d import Line3DCollection
+
+        n_hex = colors.ROLE_COLORS["N"].lower()
+        (quiver,) = [
+            q
+            for q in ax.collections
+            if isinstance(q, Line3DCollection)
+            and matplotlib.colors.to_hex(q.get_color()[0]) == n_hex
+        ]
+        shaft = np.array(quiver._segments3d[0])  # the first segment of a 3D quiver is its shaft
+        return label, float(np.linalg.norm(shaft[1] - shaft[0]))
+
+    # |N| = √2 next to edges of about 1.4: true length, plain label
+    fig = plotting.right_hand_rule_figure((1, 1, 1), (2, 1, 1), (1, 2, 2))
+    label, length = drawn_n(fig)
+    assert label == "N" and length == pytest.approx(math.sqrt(2), rel=1e-9)
+    assert "N is drawn at its true length" in fig.alt_text
+    # |N| = 400 next to edges of about 23: scaled, and the label says by how much
+    fig = plotting.right_hand_rule_figure((0, 0, 0), (20, 0, 0), (0, 20, 0))
+    label, length = drawn_n(fig)
+    assert label.startswith("N/")
+    assert length == pytest.approx(400 / int(label[2:]), rel=1e-9)
+    assert f"labelled {label}" in fig.alt_text
+    # a tiny triangle: N is far shorter than its edges, drawn longer and labelled so
+    fig = plotting.right_hand_rule_figure((0, 0, 0), (0.01, 0, 0), (0, 0.01, 0))
+    label, length = drawn_n(fig)
+    assert label.endswith("N") and label != "N"
+    assert length == pytest.approx(1e-4 * int(label[:-1]), rel=1e-9)

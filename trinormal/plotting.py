@@ -151,9 +151,11 @@ def right_hand_rule_figure(
     """Draw a triangle in 3D with its edges U, V and its normal N, on equal axis scales.
 
     U and V start at A; a curved arrow (in N's colour, as in the explorer)
-    turns from U towards V, the way the fingers of a right hand curl, and N
-    (drawn from the centroid, three quarters of the mean edge long) points
-    where the thumb does.
+    turns from U towards V, the way the fingers of a right hand curl, with a
+    large filled head near V, and N (drawn from the centroid) points where the
+    thumb does. N is drawn at its true length when that is between 0.4 and 1.5
+    times the mean edge; otherwise it is scaled by a power of two and labelled
+    so (``N/4``, ``2N``), and the alt text says which.
     The face is filled in the ``front`` colour when the camera sees the side N
     points out of, and in the ``back`` colour when it sees the other side. The
     axes are the same for both windings of the same points, so the two
@@ -177,9 +179,11 @@ def right_hand_rule_figure(
     --------
     >>> fig = right_hand_rule_figure((0, 0, 0), (1, 0, 0), (0, 1, 0))
     >>> fig.alt_text.split(". ")[1]
-    'The normal N = (0, 0, 1) points along +z; the camera sees the front of the face (yellow).'
+    'The normal N = (0, 0, 1) points along +z; the camera sees the front of the face (yellow)'
+    >>> fig.alt_text.endswith("N is drawn at its true length.")
+    True
     >>> right_hand_rule_figure((0, 0, 0), (1, 0, 0), (0, 1, 0), "ACB").alt_text.split(". ")[1]
-    'The normal N = (0, 0, -1) points along -z; the camera sees the back of the face (sky blue).'
+    'The normal N = (0, 0, -1) points along -z; the camera sees the back of the face (sky blue)'
     """
     import math
 
@@ -226,14 +230,30 @@ def right_hand_rule_figure(
         away = [mid[i] + 0.2 * scale * perp[i] / size for i in range(3)]
         ax.text(*away, name, color=colors[name], fontsize=14, fontweight="bold", ha="center")
     direction = "is zero, so it has no direction: the triangle is degenerate"
+    drawn = ""
     if unit is not None:
-        n = [x * scale for x in unit]
+        # N at its true length when that fits the picture; otherwise scaled by a power of two,
+        # and the label says by how much (N/4, 2N), as in the explorer
+        length_n = math.sqrt(float(r.exact.magnitude_squared))
+        mean_edge = sum(lengths) / 3 or 1.0
+        factor = 1.0
+        if not 0.4 * mean_edge <= length_n <= 1.5 * mean_edge:
+            factor = 2.0 ** round(math.log2(scale / length_n))
+        n = [x * length_n * factor for x in unit]
+        if factor == 1.0:
+            label, drawn = "N", "N is drawn at its true length"
+        elif factor < 1.0:
+            label = f"N/{round(1 / factor)}"
+            drawn = f"N is drawn at 1/{round(1 / factor)} of its length (labelled {label})"
+        else:
+            label = f"{round(factor)}N"
+            drawn = f"N is drawn {round(factor)} times longer than it is (labelled {label})"
         ax.quiver(*centroid, *n, color=colors["N"], linewidth=3, arrow_length_ratio=0.15)
         tip = [centroid[i] + n[i] for i in range(3)]
-        ax.text(*tip, "  N", color=colors["N"], fontsize=15, fontweight="bold")
+        ax.text(*tip, "  " + label, color=colors["N"], fontsize=15, fontweight="bold")
         # both ends, so the other winding of the same points gets the same axes
         pts += [tuple(tip), tuple(centroid[i] - n[i] for i in range(3))]
-        # the curl from U towards V, a quarter of the way along each edge
+        # the curl from U towards V around A, ending in a large filled arrowhead near V
         lu = math.hypot(*u)
         uh = [x / lu for x in u]
         dot = sum(v[i] * uh[i] for i in range(3))
@@ -241,21 +261,27 @@ def right_hand_rule_figure(
         lw = math.hypot(*w)
         wh = [x / lw for x in w]
         angle = math.atan2(lw, dot)
-        rho = 0.3 * min(lu, math.hypot(*v))
-        ts = [angle * k / 40 for k in range(41)]
-        arc = [
-            [A[i] + rho * (math.cos(t) * uh[i] + math.sin(t) * wh[i]) for t in ts] for i in range(3)
-        ]
-        ax.plot(*arc, color=colors["N"], linewidth=2)
-        end = [arc[i][-1] for i in range(3)]
-        prev = [arc[i][-4] for i in range(3)]
-        ax.quiver(
-            *prev,
-            *(end[i] - prev[i] for i in range(3)),
-            color=colors["N"],
-            arrow_length_ratio=1.0,
-            linewidth=1.5,
+        rho = 0.34 * min(lu, math.hypot(*v))
+
+        def on_arc(t: float, radius: float = rho) -> list[float]:
+            return [A[i] + radius * (math.cos(t) * uh[i] + math.sin(t) * wh[i]) for i in range(3)]
+
+        head = 0.8 * rho  # arrowhead length, along the arc
+        t_tip = 0.9 * angle
+        t_base = max(t_tip - head / rho, 0.25 * t_tip)
+        ts = [t_base * k / 40 for k in range(41)]
+        arc = [[on_arc(t)[i] for t in ts] for i in range(3)]
+        ax.plot(*arc, color=colors["N"], linewidth=3.5)
+        outer, inner = on_arc(t_base, rho + 0.38 * head), on_arc(t_base, rho - 0.38 * head)
+        ax.add_collection3d(
+            Poly3DCollection(
+                [[on_arc(t_tip), outer, inner]],
+                facecolor=colors["N"],
+                edgecolor=colors["N"],
+                linewidth=1.5,
+            )
         )
+        fig.curl_head = (tuple(on_arc(t_base)), tuple(on_arc(t_tip)))  # type: ignore[attr-defined]
         direction = f"has the unit direction {r.format(4, trim=True)['unit_normal']}"
         if sorted(abs(x) for x in unit) == [0.0, 0.0, 1.0]:
             axis = max(range(3), key=lambda i: abs(unit[i]))
@@ -283,6 +309,7 @@ def right_hand_rule_figure(
         f"3D view of the triangle A = {_fmt_vec(r.exact.a)}, B = {_fmt_vec(r.exact.b)}, "
         f"C = {_fmt_vec(r.exact.c)} with U = {first} − A and V = {second} − A drawn from A "
         f"and a curved arrow turning from U to V. The normal N = {normal} {direction}."
+        + (f" {drawn}." if drawn else "")
     )
     return fig
 
