@@ -92,9 +92,10 @@ docs: env
 docs-build: env
 	$(TIMED) $(RUN) mkdocs build --strict
 
-# The site docs-build made, never a second build.
+# The site docs-build made, never a second build. Two workers; the tests that use the one
+# JupyterLab server (tests/browser/test_*lab*.py) all run on one of them (see its conftest.py).
 browser: env docs-build
-	TRINORMAL_SITE_DIR="$(CURDIR)/site" $(TIMED) $(RUN) pytest tests/browser -q
+	TRINORMAL_SITE_DIR="$(CURDIR)/site" $(TIMED) $(RUN) pytest tests/browser -q -n 2 --dist loadgroup
 
 ## bench: the performance figures, each against a peer measured in the same run
 bench: env

@@ -46,8 +46,13 @@ from __future__ import annotations
 import math
 from typing import Any, Literal
 
-import numpy as np
-import numpy.typing as npt
+from trinormal._optional import missing_extra
+
+try:
+    import numpy as np
+    import numpy.typing as npt
+except ModuleNotFoundError as exc:
+    raise missing_extra(exc, __name__) from exc
 
 from trinormal.tolerances import DEFAULT_TOL
 from trinormal.validation import check_tolerance

@@ -16,7 +16,10 @@ import io
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, TypeVar
 
+from trinormal._optional import require
 from trinormal.colors import ROLE_COLORS
+
+require(__name__, "matplotlib", "numpy")
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -33,7 +33,12 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import Any, Literal, NamedTuple
 
-import sympy as sp
+from trinormal._optional import missing_extra
+
+try:
+    import sympy as sp
+except ModuleNotFoundError as exc:
+    raise missing_extra(exc, __name__) from exc
 
 from trinormal.core import TriangleNormal, Winding, triangle_normal
 from trinormal.steps import CROSS_TERMS, Working, working

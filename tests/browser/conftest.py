@@ -8,11 +8,22 @@ reported by the tests.
 
 Without Chromium the tests skip with a reason, except when ``CI`` is set: then they
 fail, because CI installs Chromium (``.ci/run``) and must never skip them.
+
+Shared by the whole run (session fixtures):
+
+* ``wheel`` — the wheel built from this tree, once per run (pytest-xdist workers share it);
+* ``wheel_env`` — a fresh venv outside the repository with ``wheel[notebooks]`` installed
+  at uv.lock's versions, once per run, as a teacher or a JupyterHub installs it;
+* ``lab`` — one JupyterLab server started from ``wheel_env`` (it also serves Notebook 7),
+  for every test that drives JupyterLab. Those tests live in files named
+  ``test_*lab*.py``, which ``--dist loadgroup`` sends to one xdist worker, so there is
+  one server; each test's kernels are stopped after it.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import shutil
 from collections.abc import Iterator
 from pathlib import Path
@@ -27,6 +38,40 @@ from browser_support import (
     is_local,
     serve_site,
 )
+from install_support import build_wheel, install, shared
+from jupyterlab_support import Lab, running_lab
+
+#: Test files that use the run's JupyterLab server (the ``lab`` fixture): their names contain
+#: "lab" (test_jupyterlab.py, test_wheel_lab.py); with ``--dist loadgroup`` they all run on one
+#: xdist worker, so the run starts one server.
+LAB_FILES = re.compile(r"^tests/browser/test_[^/]*lab[^/]*\.py::")
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """Refuse a test that uses ``lab`` from a file the scheduler would not keep together."""
+    for item in items:
+        if "lab" in getattr(item, "fixturenames", ()) and not LAB_FILES.match(item.nodeid):
+            raise pytest.UsageError(
+                f"{item.nodeid} uses the shared JupyterLab server: move it to a file named "
+                "tests/browser/test_*lab*.py, which --dist loadgroup keeps on one worker"
+            )
+
+
+def pytest_xdist_make_scheduler(config: pytest.Config, log: Any) -> Any:
+    """``--dist loadgroup``: the JupyterLab files together on one worker, every other test alone.
+
+    (pytest-xdist 3.8's own loadgroup reads ``xdist_group`` marks by renaming node ids, which
+    pytest 9.2 no longer allows; this scheduler groups by file name instead.)
+    """
+    if config.getvalue("dist") != "loadgroup":
+        return None
+    from xdist.scheduler import LoadScopeScheduling
+
+    class LabTogether(LoadScopeScheduling):  # type: ignore[misc]
+        def _split_scope(self, nodeid: str) -> str:
+            return "jupyterlab" if LAB_FILES.match(nodeid) else nodeid
+
+    return LabTogether(config, log)
 
 
 def _chromium_or_skip() -> str:
@@ -100,3 +145,40 @@ def traffic(page: Any, server: str) -> Traffic:
     page.on("console", console)
     page.on("pageerror", lambda exc: t.page_errors.append(str(exc)))
     return t
+
+
+def _run_folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A folder shared by this run's xdist workers (and by no other run)."""
+    base = tmp_path_factory.getbasetemp()
+    return base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+
+
+@pytest.fixture(scope="session")
+def wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The wheel built from this tree (``uv build``), once per run."""
+    return shared(_run_folder(tmp_path_factory), "wheel", build_wheel)
+
+
+@pytest.fixture(scope="session")
+def wheel_env(tmp_path_factory: pytest.TempPathFactory, wheel: Path) -> Path:
+    """A fresh venv outside the repository with ``wheel[notebooks]``; its Python."""
+    return shared(
+        _run_folder(tmp_path_factory), "wheel-env", lambda venv: install(venv, wheel, "notebooks")
+    )
+
+
+@pytest.fixture(scope="session")
+def lab(tmp_path_factory: pytest.TempPathFactory, wheel_env: Path) -> Iterator[Lab]:
+    """One JupyterLab (and Notebook 7) server for the run, from the wheel's venv."""
+    root = tmp_path_factory.mktemp("lab") / "notebooks"
+    root.mkdir()
+    with running_lab(root, python=wheel_env) as server:
+        yield server
+
+
+@pytest.fixture(autouse=True)
+def _stop_lab_kernels(request: pytest.FixtureRequest) -> Iterator[None]:
+    """After a test that used the shared server, stop the kernels it started."""
+    yield
+    if "lab" in request.fixturenames:
+        request.getfixturevalue("lab").shutdown_kernels()

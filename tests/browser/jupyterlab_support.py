@@ -1,8 +1,10 @@
 """A real JupyterLab for the browser tests: started on a free localhost port, stopped after.
 
-The server runs from this environment (so the kernel imports the installed
-``trinormal``) with no token, no news feed and no update check, in a temporary
-root folder that holds only the notebooks a test writes there.
+The server runs from a given Python environment (this one by default; the browser tests'
+shared ``lab`` fixture uses a fresh venv with the built wheel, see conftest.py), so the
+kernel imports that environment's ``trinormal``. No token, no news feed, no update check;
+its root folder is a temporary one that holds only the notebooks a test writes there. The
+same server also serves Jupyter Notebook 7 (``Lab.notebook7_url``).
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ import socket
 import subprocess
 import sys
 import time
+import urllib.error
 import urllib.request
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -52,7 +55,26 @@ class Lab:
             "nbformat_minor": 5,
         }
         (self.root / name).write_text(json.dumps(nb), encoding="utf-8")
-        return f"{self.url}lab/tree/{name}"
+        # ?reset: a fresh workspace, not the tabs an earlier test left open on this server
+        return f"{self.url}lab/tree/{name}?reset"
+
+    def notebook7_url(self, name: str) -> str:
+        """The URL of a notebook in the root, opened in Jupyter Notebook 7 instead of JupyterLab."""
+        return f"{self.url}notebooks/{name}"
+
+    def shutdown_kernels(self) -> None:
+        """Close every session and stop its kernel (between tests that share the server)."""
+        with urllib.request.urlopen(self.url + "api/sessions", timeout=10) as r:
+            sessions = json.load(r)
+        for session in sessions:
+            request = urllib.request.Request(
+                f"{self.url}api/sessions/{session['id']}", method="DELETE"
+            )
+            try:
+                with urllib.request.urlopen(request, timeout=30):
+                    pass
+            except urllib.error.HTTPError:  # already gone (its kernel died or was closed)
+                pass
 
 
 def free_port() -> int:
@@ -62,11 +84,14 @@ def free_port() -> int:
 
 
 @contextmanager
-def running_lab(root: Path) -> Iterator[Lab]:
-    """Start JupyterLab on 127.0.0.1 and a free port; stop it (and its kernels) afterwards."""
+def running_lab(root: Path, python: str | Path = sys.executable) -> Iterator[Lab]:
+    """Start JupyterLab on 127.0.0.1 and a free port; stop it (and its kernels) afterwards.
+
+    ``python`` is the interpreter of the environment it runs from (the kernel's too).
+    """
     port = free_port()
     args = [
-        sys.executable, "-m", "jupyter", "lab", "--no-browser", f"--port={port}",
+        str(python), "-m", "jupyter", "lab", "--no-browser", f"--port={port}",
         "--ServerApp.ip=127.0.0.1", "--ServerApp.token=", "--ServerApp.password=",
         "--ServerApp.disable_check_xsrf=True", f"--ServerApp.root_dir={root}",
         "--LabApp.news_url=None",
@@ -79,9 +104,13 @@ def running_lab(root: Path) -> Iterator[Lab]:
     settings.mkdir(parents=True, exist_ok=True)
     (settings / "notification.jupyterlab-settings").write_text('{"fetchNews": "false"}')
     args.append(f"--LabApp.user_settings_dir={root.parent / 'lab-settings'}")
+    args.append(f"--JupyterNotebookApp.user_settings_dir={root.parent / 'lab-settings'}")
     args.append(f"--LabApp.workspaces_dir={root.parent / 'lab-workspaces'}")
     log = (root.parent / f"jupyterlab-{port}.log").open("w")
     env = {**os.environ, "JUPYTER_CONFIG_DIR": str(root.parent / "config")}
+    # the environment's own scripts first, as if it were activated
+    env["PATH"] = os.pathsep.join([str(Path(python).parent), env.get("PATH", "")])
+    env.pop("VIRTUAL_ENV", None)
     proc = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT, env=env,
                             start_new_session=True)  # fmt: skip
     url = f"http://127.0.0.1:{port}/"

@@ -1,14 +1,14 @@
 """The explorer in a real JupyterLab: Run All, the 3D view renders, a drag reaches the kernel.
 
-JupyterLab is started by the test on a free localhost port (see jupyterlab_support.py)
-and driven with Chromium as a student would: the Run menu, a mouse drag on a vertex,
+JupyterLab is the run's shared server (the ``lab`` fixture in conftest.py: one per run,
+started from a fresh venv with the built wheel; see jupyterlab_support.py), driven with
+Chromium as a student would: the Run menu, a mouse drag on a vertex,
 Shift+Enter on a later cell. The kernel's answer is read from that cell's output.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
@@ -18,7 +18,6 @@ from jupyterlab_support import (
     output_text,
     run_all,
     run_cell,
-    running_lab,
     wait_idle,
 )
 
@@ -37,14 +36,6 @@ print(*(ex.texts[k] for k in ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "c
 
 #: A projector: the explorer must fit this window without scrolling its output.
 PROJECTOR = {"width": 1280, "height": 720}
-
-
-@pytest.fixture(scope="module")
-def lab(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Lab]:
-    root = tmp_path_factory.mktemp("lab") / "notebooks"
-    root.mkdir()
-    with running_lab(root) as lab:
-        yield lab
 
 
 @pytest.fixture

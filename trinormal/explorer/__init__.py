@@ -13,8 +13,13 @@ Rooms:
   sliders, text boxes and readout to the exact core.
 """
 
-from trinormal.explorer.state import view_state
-from trinormal.explorer.view import ExplorerView
-from trinormal.explorer.widget import COORDINATES, PRECISION_RANGE, Explorer
+from trinormal._optional import missing_extra
+
+try:
+    from trinormal.explorer.state import view_state
+    from trinormal.explorer.view import ExplorerView
+    from trinormal.explorer.widget import COORDINATES, PRECISION_RANGE, Explorer
+except ModuleNotFoundError as exc:  # anywidget, ipywidgets, numpy or matplotlib
+    raise missing_extra(exc, __name__) from exc
 
 __all__ = ["COORDINATES", "PRECISION_RANGE", "Explorer", "ExplorerView", "view_state"]

@@ -1,0 +1,111 @@
+"""The wheel is all a school's JupyterHub needs: installed fresh, outside the repository.
+
+The session fixtures (conftest.py) build the wheel once, install ``wheel[notebooks]``
+into a fresh venv in a temporary folder, and start the run's one JupyterLab server
+from that venv. Here: the wheel carries the licences, the explorer's bundle, the
+notebooks and the typing marker; ``trinormal-notebooks`` copies the notebooks out and
+they execute there with nbclient; a core-only install runs the CLI and names the extra
+to install for the rest. The explorer rendering from that install in JupyterLab and in
+Notebook 7 is tested in test_wheel_lab.py.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import zipfile
+from pathlib import Path
+from typing import Any
+
+from browser_support import ROOT
+from install_support import install
+
+NOTEBOOKS = sorted(p.name for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+
+#: Executes every notebook in a folder with nbclient, from a clean kernel, in that folder.
+EXECUTE = """\
+import sys
+from pathlib import Path
+
+import nbformat
+from nbclient import NotebookClient
+
+folder = Path(sys.argv[1])
+for path in sorted(folder.glob("*.ipynb")):
+    nb = nbformat.read(path, as_version=4)
+    client = NotebookClient(
+        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(folder)}}
+    )
+    client.execute()
+    nbformat.write(nb, path)
+    print("executed", path.name, flush=True)
+"""
+
+
+def run(args: list[Any], cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([str(a) for a in args], cwd=cwd, capture_output=True, text=True)
+
+
+def test_the_wheel_carries_licences_bundle_notebooks_and_types(wheel: Path) -> None:
+    names = set(zipfile.ZipFile(wheel).namelist())
+    info = next(n.split("/")[0] for n in names if n.endswith(".dist-info/METADATA"))
+    assert f"{info}/licenses/LICENSE" in names
+    assert f"{info}/licenses/trinormal/explorer/static/THIRD_PARTY_LICENSES.txt" in names
+    for name in ("explorer.js", "THIRD_PARTY_LICENSES.txt"):
+        assert f"trinormal/explorer/static/{name}" in names
+    assert "trinormal/py.typed" in names
+    assert sorted(n.split("/")[-1] for n in names if n.startswith("trinormal/_notebooks/")) == (
+        NOTEBOOKS
+    )
+    assert not [n for n in names if "checkpoint" in n or n.startswith(("tests/", "docs/"))]
+    with zipfile.ZipFile(wheel) as z:
+        metadata = z.read(f"{info}/METADATA").decode()
+        scripts = z.read(f"{info}/entry_points.txt").decode()
+        bundle = z.read("trinormal/explorer/static/explorer.js")
+    assert "License-Expression: MIT" in metadata
+    assert "Provides-Extra: notebooks" in metadata
+    assert "trinormal-notebooks = trinormal.notebooks:main" in scripts
+    assert bundle == (ROOT / "trinormal" / "explorer" / "static" / "explorer.js").read_bytes()
+
+
+def test_copied_notebooks_execute_in_the_installed_package(wheel_env: Path, tmp_path: Path) -> None:
+    bin_dir = wheel_env.parent
+    dest = tmp_path / "class"
+    done = run([bin_dir / "trinormal-notebooks", dest], cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == f"Copied 10 notebooks into {dest}\n"
+    assert sorted(p.name for p in dest.glob("*.ipynb")) == NOTEBOOKS
+    # the kernel imports the installed package, not this checkout
+    where = run([wheel_env, "-c", "import trinormal; print(trinormal.__file__)"], cwd=dest)
+    assert Path(where.stdout.strip()).is_relative_to(bin_dir.parent), where
+    done = run([wheel_env, "-c", EXECUTE, dest], cwd=dest)
+    assert done.returncode == 0, done.stdout + done.stderr[-3000:]
+    assert done.stdout.split() == [w for n in NOTEBOOKS for w in ("executed", n)]
+    for name in NOTEBOOKS:
+        nb = json.loads((dest / name).read_text(encoding="utf-8"))
+        errors = [
+            o for c in nb["cells"] for o in c.get("outputs", []) if o["output_type"] == "error"
+        ]
+        assert not errors, name
+
+
+def test_python_m_form_copies_too(wheel_env: Path, tmp_path: Path) -> None:
+    done = run([wheel_env, "-m", "trinormal.notebooks", "out"], cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in (tmp_path / "out").glob("*.ipynb")) == NOTEBOOKS
+
+
+def test_a_core_only_install_runs_the_cli_and_names_the_extra(wheel: Path, tmp_path: Path) -> None:
+    python = install(tmp_path / "core", wheel)
+    bin_dir = python.parent
+    done = run([bin_dir / "trinormal", "0,0,0", "1,0,0", "0,1,0", "--json"], cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["normal"] == [0.0, 0.0, 1.0]
+    done = run([python, "-c", "import trinormal.explorer"], cwd=tmp_path)
+    assert done.returncode == 1
+    last = done.stderr.strip().splitlines()[-1]
+    assert last.startswith("ModuleNotFoundError: trinormal.explorer needs "), last
+    assert last.endswith('pip install "trinormal[notebooks]"'), last
+    # the notebooks can be handed out before their libraries are installed
+    done = run([bin_dir / "trinormal-notebooks", "out"], cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
