@@ -299,3 +299,31 @@ def test_reflect_matches_the_unit_normal_formula_and_refuses_a_zero_normal():
     assert all(math.isclose(a, b, rel_tol=0, abs_tol=1e-15) for a, b in zip(got, want, strict=True))
     with pytest.raises(ValueError, match="degenerate"):
         guide.reflect(d, (0, 0, 0))
+
+
+# --------------------------------------------------------------------------- pages that stay current
+
+
+def test_home_page_and_readme_describe_the_3d_explorer_as_it_is():
+    """No stale claims (nine sliders above a picture, a kernel needed on the site); a phone-sized
+    screenshot of the live view with alt text."""
+    import re
+    import struct
+
+    home = " ".join((ROOT / "docs" / "index.md").read_text(encoding="utf-8").split())
+    readme = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    notebooks = " ".join((ROOT / "docs" / "notebooks.md").read_text(encoding="utf-8").split())
+    for text in (home, readme, notebooks):
+        assert "nine sliders" not in text
+        assert "sliders need a running Python kernel" not in text
+        assert "explorer's sliders, need a running Python kernel" not in text
+    for text in (home, readme):
+        assert "3D" in text and "no kernel" in text and "Notebook 7" in text
+        assert "calculator" in text.lower() and "05" in text
+    image = ROOT / "docs" / "assets" / "images" / "explorer-3d.png"
+    width, height = struct.unpack(">II", image.read_bytes()[16:24])
+    assert 600 <= width <= 900 and height > width  # drawn at 2x for a phone's width
+    assert re.search(r"!\[The live 3D explorer[^\]]{80,}\]\(assets/images/explorer-3d\.png\)", home)
+    assert re.search(
+        r'<img src="docs/assets/images/explorer-3d\.png"[^>]* alt="The live 3D', readme
+    )

@@ -439,13 +439,20 @@ def test_widget_outputs_are_replaced_by_a_note_and_a_picture(page, server, traff
 
 
 def test_home_shows_the_explorer_picture(page, server, traffic):
-    page.goto(server)
-    img = page.locator("article img[src$='assets/images/explorer.png']")
-    assert img.count() == 1
-    assert "triangle" in (img.get_attribute("alt") or "")
-    page.wait_for_function(
-        "img => img.complete && img.naturalWidth > 300", arg=img.element_handle()
-    )
+    """The home page shows the live 3D view's screenshot, whole, on a phone as on a desktop."""
+    for width in (360, 1280):
+        page.set_viewport_size({"width": width, "height": 800})
+        page.goto(server)
+        img = page.locator("article img[src$='assets/images/explorer-3d.png']")
+        assert img.count() == 1
+        alt = img.get_attribute("alt") or ""
+        assert "3D explorer" in alt and "triangle" in alt
+        page.wait_for_function(
+            "img => img.complete && img.naturalWidth > 600", arg=img.element_handle()
+        )
+        box = img.bounding_box()
+        assert box is not None and box["x"] >= 0 and box["x"] + box["width"] <= width
+        assert box["width"] >= min(300, width - 40), box  # not shrunk below legibility
     assert not traffic.problems()
 
 
