@@ -16,7 +16,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests" / "browser"))
 
-from browser_support import CHROMIUM, CHROMIUM_ARGS, serve_site  # noqa: E402
+from browser_support import (  # type: ignore[import-not-found]  # noqa: E402
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    serve_site,
+)
 
 OUT = ROOT / "docs" / "assets" / "images" / "explorer-3d.png"
 QUERY = "?a=0,0,0&b=2,0,0&c=0,1,1&w=ABC&p=4"
