@@ -8,16 +8,22 @@ solution; a teacher (or a student who has tried) gets it on purpose with
 
 >>> check("01-normal", ...)
 01-normal: not answered yet. Replace ... with your answer and run the cell again.
->>> check("01-normal", (-1, -1, -1))  # doctest: +ELLIPSIS
-01-normal: not yet. Your vector points the opposite way...
 
-Answers are compared exactly: ``0.5``, ``"1/2"``, ``Fraction(1, 2)``,
-``Decimal("0.5")``, ``numpy.float64(0.5)`` and ``sympy.Rational(1, 2)`` are
-the same number. An exercise may state a tolerance (``tol``), and then a
-float within it counts, as does an irrational sympy value such as
-``sympy.sqrt(3) / 2`` or the string ``"sqrt(3)/2"`` (also typed the way the
-notebooks print it, ``"√3/2"``, with ``·`` for a product and ``−`` for minus).
-Vectors can be tuples, lists, numpy arrays or sympy matrices.
+Every exercise is judged by one rule set, so an answer means the same
+everywhere:
+
+* **Reading** (``trinormal.exercises.reading``): ``0.5``, ``"1/2"``,
+  ``Fraction(1, 2)``, ``Decimal("0.5")``, ``numpy.float64(0.5)``, a 0-d numpy
+  array and ``sympy.Rational(1, 2)`` are the same number; an irrational value
+  may be a sympy expression or text as the notebooks print it (``"√3/2"``,
+  ``"sqrt(3)/2"``, ``"−6"`` with the minus sign, ``"2√2"``). Vectors may be
+  tuples, lists, numpy arrays (also ``(3, 1)`` and ``(1, 3)``), row or column
+  sympy matrices or text such as ``"(0, 0, 1)"``. Any other object gets a
+  message saying what was expected, never an exception.
+* **Judging** (``trinormal.exercises.judging``): exact exercises accept the
+  exact value (or the float nearest to it); an exercise with a tolerance
+  states it in its prompt, relative to the answer, and accepts floats within
+  it. Hints are true for the answer given and never quote the solution.
 
 Where the exercises live
 ------------------------
@@ -36,16 +42,21 @@ For a quick exercise of your own (in a notebook or a course module),
 ...     "Area of the triangle (0,0,0), (2,0,0), (0,2,0).",
 ...     expected=lambda: triangle_normal((0, 0, 0), (2, 0, 0), (0, 2, 0)).area,
 ...     hint="The area is half of |N|.",
+...     replace=True,
 ... )
 >>> check("99-demo-area", "2")
 99-demo-area: correct.
+>>> check("99-demo-area", (0, 0, 4))
+99-demo-area: not yet. Your answer could not be read: expected one number, got 3 values.
+>>> check("99-demo-area", -2)
+99-demo-area: not yet. Wrong sign.
 
 ``expected`` may be a value or a function of no arguments (called when an
 answer is checked, so the solution is computed by trinormal, never typed
 in). For answers that are not numbers, decorate a checker that returns
 ``True``/``False`` or ``(ok, hint)``:
 
->>> @exercise("99-demo-word", "Which product gives the normal: dot or cross?")
+>>> @exercise("99-demo-word", "Which product gives the normal: dot or cross?", replace=True)
 ... def _(answer):
 ...     return str(answer).strip().lower() == "cross", "The dot product is a number."
 >>> check("99-demo-word", "dot")
@@ -58,32 +69,41 @@ import difflib
 import html
 import importlib
 import math
-import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Literal, overload
 
-from trinormal.core import parse_coordinate, triangle_normal
-from trinormal.display import format_number
+from trinormal.core import triangle_normal
+from trinormal.exercises.judging import Verdict, judge_number, judge_vector, tolerance_text
+from trinormal.exercises.reading import (
+    AnswerError,
+    read_bool,
+    read_number,
+    read_points,
+    read_vector,
+    read_word,
+)
 
 __all__ = [
     "NOTEBOOK_MODULES",
     "AnswerError",
     "CheckResult",
     "Exercise",
+    "Verdict",
     "check",
     "exercise",
     "get",
     "names",
+    "read_bool",
     "read_number",
     "read_points",
     "read_vector",
+    "read_word",
 ]
 
 Status = Literal["correct", "incorrect", "unanswered"]
-Checker = Callable[[Any], bool | tuple[bool, str]]
-Number = Fraction | float
+Checker = Callable[[Any], "bool | tuple[bool, str] | Verdict"]
 
 #: The modules ``trinormal.exercises.<name>`` that hold the notebooks' exercises.
 NOTEBOOK_MODULES: tuple[str, ...] = (
@@ -98,6 +118,9 @@ NOTEBOOK_MODULES: tuple[str, ...] = (
     "nb09",
     "nb10",
 )
+
+#: The start of the message for an answer no rule could judge (a bug: tests assert it never shows).
+UNJUDGED = "This answer could not be judged"
 
 
 class _Missing:
@@ -150,6 +173,21 @@ class CheckResult:
         )
 
 
+def _kind(solution: Any) -> str:
+    if isinstance(solution, bool):
+        return "bool"
+    if isinstance(solution, str):
+        return "word"
+    if isinstance(solution, tuple | list):
+        return "vector"
+    return "number"
+
+
+def _sentence(error: Exception) -> str:
+    text = str(error).rstrip(".")
+    return text[:1].upper() + text[1:] + "."
+
+
 @dataclass(frozen=True)
 class Exercise:
     """One exercise.
@@ -159,23 +197,29 @@ class Exercise:
     name : str
         ``"NN-short-name"``, NN being the notebook's number.
     prompt : str
-        The question, in one or two sentences.
+        The question, in one or two sentences; it states the tolerance when
+        there is one (worded by ``judging.tolerance_text``).
     expected : object
         The solution, or a function of no arguments that computes it;
         unused when ``checker`` is given (then ``solution`` gives it).
     tol : float or None
-        Absolute tolerance per number; ``None`` compares exactly.
+        Relative tolerance: a number counts within ``tol · |solution|``, a
+        vector when each component is within ``tol · |solution vector|``.
+        ``None`` compares exactly (the nearest float to the solution counts too).
     hint : str
         Shown when an answer is wrong and no more specific hint applies.
     checker : callable or None
-        ``checker(answer)`` → ``bool`` or ``(bool, hint)``, for answers that
-        are not one number or one vector, or that have many right values.
+        ``checker(answer)`` → ``bool``, ``(bool, hint)`` or a ``Verdict``, for
+        answers that are not one number or one vector, or that have many
+        right values.
     mistakes : tuple of (value, hint)
         Common wrong answers (values or functions of no arguments) and the
         hint each one gets: a hint written for that answer.
     example : object
         For a checked exercise, one right answer (what
         [`solution`][trinormal.exercises.Exercise.solution] returns).
+    degrees : bool
+        The answer is an angle in degrees: text may end in a degree sign.
     """
 
     name: str
@@ -186,6 +230,7 @@ class Exercise:
     checker: Checker | None = field(default=None, repr=False)
     mistakes: tuple[tuple[Any, str], ...] = ()
     example: Any = None
+    degrees: bool = False
 
     def solution(self) -> Any:
         """Return a right answer (computed when it is a function): for teachers and tests."""
@@ -193,31 +238,69 @@ class Exercise:
         return value() if callable(value) else value
 
     def check(self, answer: Any) -> CheckResult:
-        """Check one answer; ``...`` (Ellipsis) means not answered yet."""
+        """Check one answer; ``...`` (Ellipsis) means not answered yet. Never raises."""
         if answer is Ellipsis:
             return CheckResult(
                 self.name,
                 "unanswered",
                 "not answered yet. Replace ... with your answer and run the cell again.",
             )
-        if self.checker is not None:
-            verdict = self.checker(answer)
-            ok, hint = verdict if isinstance(verdict, tuple) else (bool(verdict), self.hint)
-        else:
-            ok, hint = _compare(self.solution(), answer, self.tol)
-            if not ok:
-                hint = self._mistake_hint(answer) or hint or self.hint
-        if ok:
-            within = "" if self.tol is None else f" (within {format_number(self.tol, 15, True)})"
-            return CheckResult(self.name, "correct", f"correct{within}.")
-        return CheckResult(self.name, "incorrect", f"not yet. {hint}".rstrip())
+        try:
+            verdict = self.judge(answer)
+        except Exception as exc:  # a last resort: the tests assert it is never reached
+            verdict = Verdict(False, f"{UNJUDGED} ({type(exc).__name__}).")
+        if verdict.ok:
+            within = ""
+            if self.tol is not None and self.checker is None:
+                within = f" ({tolerance_text(self.tol, _kind(self.solution()))})"
+            note = f" {verdict.note}" if verdict.note else ""
+            return CheckResult(self.name, "correct", f"correct{within}.{note}")
+        return CheckResult(self.name, "incorrect", f"not yet. {verdict.hint}".rstrip())
 
-    def _mistake_hint(self, answer: Any) -> str:
-        for wrong, hint in self.mistakes:
-            value = wrong() if callable(wrong) else wrong
-            if _compare(value, answer, self.tol if self.tol is not None else 1e-9)[0]:
-                return str(hint)
-        return ""
+    def judge(self, answer: Any) -> Verdict:
+        """Judge one answer by the shared rules (or the exercise's checker)."""
+        if self.checker is not None:
+            result = self.checker(answer)
+            if isinstance(result, Verdict):
+                return result if result.ok or result.hint else Verdict(False, self.hint)
+            if isinstance(result, tuple):
+                ok, hint = bool(result[0]), str(result[1])
+                return Verdict(True) if ok else Verdict(False, hint or self.hint)
+            return Verdict(True) if result else Verdict(False, self.hint)
+        solution = self.solution()
+        kind = _kind(solution)
+        if kind == "bool":
+            try:
+                value = read_bool(answer)
+            except AnswerError as exc:
+                return Verdict(False, _sentence(exc))
+            return Verdict(value == solution, self.hint)
+        if kind == "word":
+            try:
+                word = read_word(answer)
+            except AnswerError as exc:
+                return Verdict(False, _sentence(exc))
+            return Verdict(word == read_word(solution), self.hint)
+        if kind == "vector":
+            want = read_vector(solution, len(solution))
+            try:
+                got = read_vector(answer, len(solution), degrees=self.degrees)
+            except AnswerError as exc:
+                return Verdict(False, f"Your answer could not be read: {exc}.")
+            vector_mistakes = [
+                (read_vector(value, len(solution)), text) for value, text in self._mistakes()
+            ]
+            return judge_vector(got, want, self.tol, vector_mistakes, self.hint)
+        want_number = read_number(solution)
+        try:
+            got_number = read_number(answer, degrees=self.degrees)
+        except AnswerError as exc:
+            return Verdict(False, f"Your answer could not be read: {exc}.")
+        number_mistakes = [(read_number(value), text) for value, text in self._mistakes()]
+        return judge_number(got_number, want_number, self.tol, number_mistakes, self.hint)
+
+    def _mistakes(self) -> list[tuple[Any, str]]:
+        return [(wrong() if callable(wrong) else wrong, str(hint)) for wrong, hint in self.mistakes]
 
 
 # The exercises of the notebook modules, loaded on first use, and the ones added by hand.
@@ -281,7 +364,8 @@ def exercise(
         The solution (number, vector, bool or string), or a function of no
         arguments returning it. Omit it to decorate a checker function.
     tol : float, optional
-        Absolute tolerance on each number; exact comparison when omitted.
+        Relative tolerance (``1e-3`` accepts answers within 0.1 % of the
+        solution); exact comparison when omitted. Say it in the prompt.
     hint : str
         A hint for a wrong answer.
     replace : bool, default False
@@ -327,8 +411,11 @@ def get(name: str) -> Exercise:
 
     Examples
     --------
-    >>> get("01-normal").solution()
-    (Fraction(1, 1), Fraction(1, 1), Fraction(1, 1))
+    >>> get("01-normal").prompt[:28]
+    'Compute N = (B − A) × (C − A'
+
+    ``get(name).solution()`` returns a right answer: call it on purpose,
+    after trying.
 
     Raises
     ------
@@ -371,216 +458,15 @@ def check(name: str, answer: Any) -> CheckResult:
 
     Examples
     --------
-    >>> check("01-area", 0.866)
-    01-area: correct (within 0.001).
-    >>> check("01-area", 1.7321)
-    01-area: not yet. That is |N|, the parallelogram's area: the triangle is half of it.
-    """
+    >>> _ = exercise("99-demo-half", "Half of 0.9, within 1 %.", expected=0.45, tol=0.01, replace=True)
+    >>> check("99-demo-half", "0.451")
+    99-demo-half: correct (within 1 % of the right value).
+    >>> check("99-demo-half", [0.45, 0])
+    99-demo-half: not yet. Your answer could not be read: expected one number, got 2 values.
+    >>> check("99-demo-half", None)
+    99-demo-half: not yet. Your answer could not be read: None is not a number (did a function print its result instead of returning it?).
+    """  # noqa: E501
     return get(name).check(answer)
-
-
-# --------------------------------------------------------------------------- reading answers
-
-
-class AnswerError(ValueError):
-    """An answer that cannot be read as what the exercise asks for."""
-
-
-def read_number(x: Any) -> Number:
-    """Read one number of an answer: exact when it can be, a float otherwise.
-
-    Parameters
-    ----------
-    x : object
-        An int, float, ``Fraction``, ``Decimal``, numpy scalar, sympy number,
-        or a string such as ``"1/3"``, ``"-2.5"`` or ``"sqrt(3)/2"``.
-
-    Returns
-    -------
-    Fraction or float
-        A ``Fraction`` for every exact rational value (a float is read at its
-        exact binary value); a float for an irrational one such as √3 / 2.
-
-    Raises
-    ------
-    AnswerError
-        For booleans, ``None``, vectors and text that is not a number.
-
-    Examples
-    --------
-    >>> read_number("5/3"), read_number(-2.5)
-    (Fraction(5, 3), Fraction(-5, 2))
-    >>> round(read_number("sqrt(3)/2"), 6), round(read_number("√3/2"), 6)
-    (0.866025, 0.866025)
-    """
-    if isinstance(x, bool) or x is None or type(x).__name__ == "bool_":
-        raise AnswerError(f"expected a number, got {x!r}")
-    if getattr(x, "is_Rational", False):  # sympy Integer / Rational
-        return Fraction(int(x.p), int(x.q))
-    if getattr(x, "is_number", False):  # other sympy numbers, such as sqrt(3)/2
-        return _real(x)
-    if getattr(x, "shape", None) == ():  # 0-d numpy array
-        x = x.item()
-    try:
-        n, d = parse_coordinate(x, "your answer")
-    except (TypeError, ValueError) as exc:
-        if isinstance(x, str):
-            return _sympy_number(x, exc)
-        raise AnswerError(str(exc)) from None
-    return Fraction(n, d)
-
-
-def _real(x: Any) -> Number:
-    if x.is_Rational:
-        return Fraction(int(x.p), int(x.q))
-    if x.is_real is False or not x.is_finite:
-        raise AnswerError(f"expected a real number, got {x}")
-    return float(x)
-
-
-def _sqrt_call(match: re.Match[str]) -> str:
-    """``√3`` → ``sqrt(3)``, ``√(`` → ``sqrt(``."""
-    return "sqrt(" if match[1] == "(" else f"sqrt({match[1]})"
-
-
-def _sympy_number(text: str, error: Exception) -> Number:
-    """Read a string such as ``"sqrt(3)/2"`` with sympy, when it is installed."""
-    # the way the notebooks print math: √3/2, 1/√(2), 2√2, 2·3, 2×3, −1
-    code = re.sub(r"√\s*(\d+(?:\.\d+)?|\()", _sqrt_call, text)
-    code = code.replace("·", "*").replace("×", "*").replace("−", "-")
-    code = re.sub(r"(\d)\s*sqrt\(", r"\1*sqrt(", code)  # 2√2 is 2*sqrt(2)
-    try:
-        import sympy as sp
-
-        value = sp.sympify(code.strip(), rational=True)
-    except Exception:  # any failure means: not a number
-        raise AnswerError(str(error)) from None
-    if not getattr(value, "is_number", False):
-        raise AnswerError(f"{text!r} is not a number") from None
-    return _real(value)
-
-
-def read_vector(x: Any, size: int = 3) -> list[Number]:
-    """Read a vector of ``size`` numbers (tuple, list, numpy array, sympy matrix).
-
-    Examples
-    --------
-    >>> read_vector(("1/3", 0, "-2.5"))
-    [Fraction(1, 3), Fraction(0, 1), Fraction(-5, 2)]
-    """
-    if isinstance(x, str | bytes) or getattr(x, "shape", None) == ():
-        raise AnswerError(f"expected {size} numbers (x, y, z), got one value")
-    try:
-        items = list(x)
-    except TypeError:
-        raise AnswerError(f"expected {size} numbers (x, y, z), got {type(x).__name__}") from None
-    if len(items) != size:
-        raise AnswerError(f"expected {size} numbers (x, y, z), got {len(items)}")
-    return [read_number(i) for i in items]
-
-
-def read_points(answer: Any, count: int) -> list[tuple[Number, Number, Number]]:
-    """Read ``count`` points (x, y, z), each number exactly.
-
-    Raises
-    ------
-    AnswerError
-        Naming the point that cannot be read, or the wrong count.
-
-    Examples
-    --------
-    >>> read_points([(0, 0, 1), ("1/2", 0, 1)], 2)[1]
-    (Fraction(1, 2), Fraction(0, 1), Fraction(1, 1))
-    """
-    if answer is None or isinstance(answer, str | bytes):
-        raise AnswerError(f"give {count} point{'s' if count > 1 else ''} (x, y, z)")
-    try:
-        items = list(answer)
-    except TypeError:
-        raise AnswerError(f"give {count} point{'s' if count > 1 else ''} (x, y, z)") from None
-    if len(items) != count:
-        return_many = f"{count} point{'s' if count > 1 else ''}"
-        raise AnswerError(f"give {return_many} (x, y, z), got {len(items)}")
-    points = []
-    for i, p in enumerate(items):
-        try:
-            x, y, z = read_vector(p)
-        except AnswerError as exc:
-            raise AnswerError(f"point {i + 1}: {exc}") from None
-        points.append((x, y, z))
-    return points
-
-
-# --------------------------------------------------------------------------- comparing answers
-
-
-def _close(a: Number, b: Number, tol: float | None) -> bool:
-    if tol is None:
-        if isinstance(a, float) or isinstance(b, float):
-            return float(a) == float(b)
-        return a == b
-    return abs(float(a) - float(b)) <= tol
-
-
-def _expected_kind(expected: Any) -> str:
-    if isinstance(expected, bool):
-        return "bool"
-    if isinstance(expected, str):
-        return "str"
-    if isinstance(expected, tuple | list):
-        return "vector"
-    return "number"
-
-
-_TRUE_WORDS = {"true": True, "false": False}
-
-
-def _compare(expected: Any, answer: Any, tol: float | None) -> tuple[bool, str]:
-    kind = _expected_kind(expected)
-    if kind == "bool":
-        if isinstance(answer, str) and answer.strip().lower() in _TRUE_WORDS:
-            answer = _TRUE_WORDS[answer.strip().lower()]
-        if type(answer).__name__ not in ("bool", "bool_"):
-            return False, "Answer True or False."
-        return bool(answer) == expected, ""
-    if kind == "str":
-        if not isinstance(answer, str):
-            return False, "Answer with a word, in quotes."
-        words = answer.strip().lower().split()
-        if words[:1] == ["the"]:  # "the front" and "front face" say "front" too
-            words = words[1:]
-        if words[-1:] == ["face"]:
-            words = words[:-1]
-        return " ".join(words) == expected.strip().lower(), ""
-    try:
-        if kind == "vector":
-            got, want = read_vector(answer), [read_number(x) for x in expected]
-        else:
-            if not isinstance(answer, str) and hasattr(answer, "__len__"):
-                return False, "This answer is one number, not a vector."
-            got, want = [read_number(answer)], [read_number(expected)]
-    except AnswerError as exc:
-        return False, f"Your answer could not be read: {exc}."
-    if all(_close(g, w, tol) for g, w in zip(got, want, strict=True)):
-        return True, ""
-    return False, _diagnose(got, want, tol, kind)
-
-
-def _diagnose(got: Sequence[Number], want: Sequence[Number], tol: float | None, kind: str) -> str:
-    """Say what is true of a wrong answer's shape (sign, direction), never the solution."""
-    if any(w != 0 for w in want) and all(
-        _close(g, -w, tol) for g, w in zip(got, want, strict=True)
-    ):
-        return "Your vector points the opposite way." if kind == "vector" else "Wrong sign."
-    if kind == "vector":
-        g = [float(x) for x in got]
-        w = [float(x) for x in want]
-        gn, wn = math.hypot(*g), math.hypot(*w)
-        if gn > 0 and wn > 0:
-            cos = sum(a * b for a, b in zip(g, w, strict=True)) / (gn * wn)
-            if cos > 1 - 1e-12:
-                return "Right direction, wrong length."
-    return ""
 
 
 def unit(v: Sequence[Any]) -> tuple[float, ...]:

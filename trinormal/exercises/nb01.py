@@ -4,9 +4,12 @@ from __future__ import annotations
 
 from trinormal.core import triangle_normal
 from trinormal.exercises import Exercise, raw_normal, unit
+from trinormal.exercises.judging import tolerance_text
 
 #: The exercise triangle: A = (1, 0, 0), B = (0, 1, 0), C = (0, 0, 1).
 TRIANGLE = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
+#: Relative tolerance of 01-area (three significant digits count, two do not).
+AREA_TOL = 1e-3
 
 
 def _area() -> float:
@@ -35,9 +38,9 @@ EXERCISES = (
     ),
     Exercise(
         "01-area",
-        "The area of the same triangle, to within 0.001.",
+        f"The area of the same triangle (answers {tolerance_text(AREA_TOL)} count).",
         expected=_area,
-        tol=1e-3,
+        tol=AREA_TOL,
         hint="The area is |N| / 2, and |N| is the square root of the sum of N's squared "
         "components.",
         mistakes=(

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from typing import Any
 
 from trinormal.core import triangle_normal
-from trinormal.exercises import Exercise
+from trinormal.exercises import AnswerError, Exercise, Verdict
+from trinormal.exercises.reading import describe, sympify_text
 
 #: The edges of exercise 02-lagrange.
 LAGRANGE_U, LAGRANGE_V = (1, 2, 2), (2, 0, 0)
@@ -38,65 +40,123 @@ def _nz_example() -> str:
     return "Uy*Vx - Ux*Vy"
 
 
-def _check_nz(answer: Any) -> bool | tuple[bool, str]:
+def _expression(answer: Any, symbols: dict[str, Any]) -> Any:
+    """Read the answer as one sympy expression, or raise AnswerError saying why not."""
     import sympy as sp
-    from sympy.parsing.sympy_parser import (
-        implicit_multiplication,
-        parse_expr,
-        standard_transformations,
+
+    if isinstance(answer, str):
+        return sympify_text(answer, symbols, what="an expression in Ux, Uy, Uz, Vx, Vy, Vz")
+    if isinstance(answer, sp.Basic) and not getattr(answer, "is_Matrix", False):
+        if isinstance(answer, sp.Expr):
+            return answer
+        raise AnswerError(f"{describe(answer)} is not an expression")
+    size = _size(answer)
+    if size == 1:  # ("Uy*Vx - Ux*Vy",), [expr], a 1 × 1 matrix: the one thing inside
+        inner = answer[0] if not getattr(answer, "is_Matrix", False) else answer[0, 0]
+        return _expression(inner, symbols)
+    if size == 3:
+        raise _WholeVector(answer)
+    if isinstance(answer, bool) or answer is None:
+        raise AnswerError(f"{describe(answer)} is not an expression")
+    if isinstance(answer, int | float | Fraction):
+        return sp.nsimplify(answer) if isinstance(answer, float) else sp.Rational(answer)
+    raise AnswerError(
+        f"{describe(answer)} is not an expression: give a string or a sympy expression"
     )
+
+
+class _WholeVector(Exception):
+    """The answer is a whole vector of three components."""
+
+    def __init__(self, items: Any) -> None:
+        super().__init__("a whole vector")
+        self.items = items
+
+
+def _size(answer: Any) -> int:
+    if isinstance(answer, str | bytes | dict | set | frozenset):
+        return -1
+    if getattr(answer, "is_Matrix", False):
+        rows, cols = answer.shape
+        return int(rows * cols) if 1 in (rows, cols) else -1
+    if isinstance(answer, tuple | list):
+        return len(answer)
+    return -1
+
+
+def _check_nz(answer: Any) -> Verdict:
+    import sympy as sp
 
     from trinormal.symbolic import EDGE_SYMBOLS, normal_components
 
     symbols = {str(s): s for e in EDGE_SYMBOLS for s in e}
     # ux, U_x and u_x mean Ux too: match names without case or underscores
     loose = {name.lower(): symbols[name] for name in _NAMES}
-    # "Ux Vy - Uy Vx", written the way a textbook writes products, means Ux*Vy - Uy*Vx
-    transformations = (*standard_transformations, implicit_multiplication)
+    nz = normal_components("edges").z
     try:
-        if isinstance(answer, str):
-            text = answer.replace("·", "*").replace("×", "*").replace("−", "-")
-            expr = parse_expr(text, local_dict=dict(symbols), transformations=transformations)
-        else:
-            expr = answer
-        expr = sp.sympify(expr)
-        unknown = []
-        for sym in expr.free_symbols:
-            key = str(sym).replace("_", "").lower()
-            if key in loose:
-                expr = expr.subs(sym, loose[key])
-            else:
-                unknown.append(str(sym))
-    except Exception:  # any parse failure (SyntaxError, TokenError, SympifyError, ...)
-        return False, "Your answer could not be read as an expression in Ux, Uy, Uz, Vx, Vy, Vz."
-    unknown.sort()
+        expr = _expression(answer, symbols)
+    except _WholeVector as whole:
+        items = list(whole.items)
+        try:
+            last = _expression(items[-1], symbols)
+            right = _rename(last, loose)[1] == [] and sp.expand(_rename(last, loose)[0] + nz) == 0
+        except (AnswerError, _WholeVector):
+            right = False
+        if right:
+            return Verdict(
+                False, "Your last component is right: give it alone, not the whole vector."
+            )
+        return Verdict(False, "That is a whole vector: give only its z component, one expression.")
+    except AnswerError as error:
+        return Verdict(False, f"Your answer could not be read: {error}.")
+    except Exception:  # an object that misbehaves when asked what it is
+        return Verdict(
+            False, f"Your answer could not be read: {describe(answer)} is not an expression."
+        )
+    expr, unknown = _rename(expr, loose)
     for name in unknown:  # "UxVy": two names run together
         key = name.replace("_", "").lower()
         if len(key) == 4 and key[:2] in loose and key[2:] in loose:
-            return False, (
+            return Verdict(
+                False,
                 f"{name} reads as one name: write a product with * or a space, "
-                f"as in {loose[key[:2]]}*{loose[key[2:]]}."
+                f"as in {loose[key[:2]]}*{loose[key[2:]]}.",
             )
     if unknown:
-        return False, (
-            f"Your answer uses {', '.join(unknown)}: write it with Ux, Uy, Uz, Vx, Vy, Vz only."
+        return Verdict(
+            False,
+            f"Your answer uses {', '.join(unknown)}: write it with Ux, Uy, Uz, Vx, Vy, Vz only.",
         )
-    nz = normal_components("edges").z
     if sp.expand(expr + nz) == 0:  # (V × U)_z = −(U × V)_z
-        return True
+        return Verdict(True)
     if sp.expand(expr - nz) == 0:
-        return False, (
+        return Verdict(
+            False,
             "That is N_z of U × V, the order A → B → C. V × U has its factors swapped: "
-            "what does that do to the sign?"
+            "what does that do to the sign?",
         )
     used = {str(s) for s in expr.free_symbols}
     if used & {"Uz", "Vz"}:
-        return False, (
-            "A z component does not involve Uz or Vz: only the x and y components of U and V."
+        return Verdict(
+            False,
+            "A z component does not involve Uz or Vz: only the x and y components of U and V.",
         )
-    return False, (
-        "Use the x and y components of U and V: the z component is (one product) − (another)."
+    return Verdict(
+        False,
+        "Use the x and y components of U and V: the z component is (one product) − (another).",
     )
+
+
+def _rename(expr: Any, loose: dict[str, Any]) -> tuple[Any, list[str]]:
+    """Map ux, U_x, u_x to Ux (and so on); return the expression and the unknown names."""
+    unknown = []
+    for sym in expr.free_symbols:
+        key = str(sym).replace("_", "").lower()
+        if key in loose:
+            expr = expr.subs(sym, loose[key])
+        else:
+            unknown.append(str(sym))
+    return expr, sorted(unknown)
 
 
 EXERCISES = (

@@ -4,9 +4,13 @@ from __future__ import annotations
 
 from trinormal.core import triangle_normal
 from trinormal.exercises import Exercise, raw_normal, unit
+from trinormal.exercises.judging import tolerance_text
 
 #: The fifth row of the table, for the exercises.
 ROW5 = ((0, 0, 0), (0, 2, 0), (0, 0, 2))
+
+#: Relative tolerance of 03-row5-unit (the vector has length 1: within 0.0001 per component).
+UNIT_TOL = 1e-4
 
 #: The triangle of exercise 03-collinear.
 LINE = ((1, 2, 3), (2, 4, 6), (3, 6, 9))
@@ -31,9 +35,10 @@ EXERCISES = (
     ),
     Exercise(
         "03-row5-unit",
-        "The unit normal of the same triangle (within 0.0001 per component).",
+        "The unit normal of the same triangle (answers with "
+        f"{tolerance_text(UNIT_TOL, 'vector')} count: within 0.0001, as its length is 1).",
         expected=lambda: triangle_normal(*ROW5).unit_normal,
-        tol=1e-4,
+        tol=UNIT_TOL,
         hint="Divide N by |N|.",
         mistakes=(
             (

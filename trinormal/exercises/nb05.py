@@ -1,7 +1,9 @@
 """Exercises of notebook 05, the explorer.
 
-Every answer is read exactly, so ``C = (Fraction(5, 3), Fraction(7, 3), Fraction(1, 3))``
-or ``("5/3", "7/3", "1/3")`` is on the line through A and B, as it should be.
+The two exercises about exact properties (a normal exactly straight down, a
+point exactly on a line) compute with the exact core: exact answers (integers,
+fractions, decimal text) are judged exactly, and a near miss is told how far
+off it is.
 """
 
 from __future__ import annotations
@@ -11,8 +13,10 @@ from fractions import Fraction
 from typing import Any
 
 from trinormal.core import triangle_normal
-from trinormal.display import format_vector
-from trinormal.exercises import AnswerError, Exercise, read_number, read_points
+from trinormal.display import format_number, format_surd, format_vector
+from trinormal.exercises import AnswerError, Exercise, Verdict, read_points, read_vector
+from trinormal.exercises.reading import is_exact
+from trinormal.tolerances import DEFAULT_TOL
 
 #: Two vertices given in exercise 05-collinear; the student supplies the third.
 COLLINEAR_AB: tuple[tuple[int, int, int], tuple[int, int, int]] = ((1, 2, 0), (3, 3, 1))
@@ -26,37 +30,92 @@ SCALE_ABC: tuple[tuple[int, int, int], tuple[int, int, int], tuple[int, int, int
 SCALE_FACTOR = 3
 
 
-def _check_down_acb(answer: Any) -> bool | tuple[bool, str]:
+def _unreadable(error: Exception) -> Verdict:
+    return Verdict(False, f"Your answer could not be read: {error}.")
+
+
+def _check_down_acb(answer: Any) -> Verdict:
+    """Judged exactly: the exact normal in the order A→C→B must be (0, 0, negative)."""
     try:
         a, b, c = read_points(answer, 3)
-    except AnswerError as error:
-        return False, f"Your answer could not be read: {error}."
-    r = triangle_normal(a, b, c, winding="ACB")
-    if r.degenerate or r.unit_normal is None:
-        return False, "These points make no triangle (zero area), so there is no normal at all."
-    if r.unit_normal == (0.0, 0.0, -1.0):
-        return True
-    if r.unit_normal == (0.0, 0.0, 1.0):
-        return False, "In the order A→C→B your normal points up (+z): swap B and C."
-    return False, (
-        "The normal must have no x or y part: put all three points at the same height z, "
-        "then check the order A→C→B with the right-hand rule."
+        r = triangle_normal(a, b, c, winding="ACB")
+    except (AnswerError, ValueError, TypeError) as error:
+        return _unreadable(error)
+    nx, ny, nz = r.exact.normal
+    if nx == ny == nz == 0:
+        return Verdict(
+            False,
+            "These points make no triangle: they lie on one line (or two of them coincide), "
+            "so the area is exactly 0 and there is no normal at all.",
+        )
+    if nx == 0 and ny == 0:
+        if nz > 0:
+            return Verdict(
+                False, "In the order A→C→B your normal points straight up (+z): swap B and C."
+            )
+        note = ""
+        if r.degenerate:
+            note = (
+                f"Exactly, it faces straight down; but its sine is {format_number(r.sine, 2)}, at "
+                f"most trinormal's tolerance {format_number(DEFAULT_TOL, 0)}, so "
+                "triangle_normal calls it degenerate: a fatter triangle is safer."
+            )
+        return Verdict(True, note=note)
+    off = _angle_from_down(nx, ny, nz)
+    return Verdict(
+        False,
+        f"In the order A→C→B your normal is {off} away from straight down: it must have no x or "
+        "y part. Put all three points at the same height z, then check the order A→C→B with "
+        "the right-hand rule.",
     )
 
 
-def _check_collinear(answer: Any) -> bool | tuple[bool, str]:
+def _angle_from_down(nx: Fraction, ny: Fraction, nz: Fraction) -> str:
+    """Return the angle between (nx, ny, nz) and (0, 0, −1), in degrees, as text."""
+    scale = max(abs(nx), abs(ny), abs(nz))
+    side = math.hypot(float(nx / scale), float(ny / scale))
+    if side == 0:  # below the smallest float, but not exactly 0
+        return "less than 1e-300°"
+    degrees = math.degrees(math.atan2(side, float(-nz / scale)))
+    return f"{format_number(degrees, 2)}°"
+
+
+def _check_collinear(answer: Any) -> Verdict:
+    """Exact inputs are judged exactly; floats within the stated tolerance."""
     try:
-        (c,) = read_points([answer], 1)
-    except AnswerError as error:
-        return False, f"Your answer could not be read: {error}."
+        c = tuple(read_vector(answer))
+        r = triangle_normal(*COLLINEAR_AB, c)
+    except (AnswerError, ValueError, TypeError) as error:
+        return _unreadable(error)
     a, b = COLLINEAR_AB
     if c in (tuple(map(Fraction, a)), tuple(map(Fraction, b))):
-        return False, "C must be a new point, not A or B again (that is the easy way to area 0)."
-    # default tolerance: an exact answer must be on the line; a float within rounding counts
-    if triangle_normal(a, b, c).degenerate:
-        return True
+        return Verdict(
+            False, "C must be a new point, not A or B again (that is the easy way to area 0)."
+        )
+    distance = _distance_to_line(r.exact.magnitude_squared)
+    if r.exact.magnitude_squared == 0:
+        return Verdict(True)
     direction = format_vector([q - p for p, q in zip(a, b, strict=True)], 0, trim=True)
-    return False, f"Not on the line yet: C − A must be a multiple of B − A = {direction}."
+    exact_input = all(is_exact(x) for x in c)
+    if not exact_input and r.degenerate:
+        return Verdict(
+            True,
+            note=f"(As floats, C is {distance} from the line: within the tolerance for floats.)",
+        )
+    rule = "exact numbers must be exactly on it" if exact_input else "too far for a float"
+    return Verdict(
+        False,
+        f"C is {distance} away from the line through A and B ({rule}): C − A must be a "
+        f"multiple of B − A = {direction}.",
+    )
+
+
+def _distance_to_line(magnitude_squared: Fraction) -> str:
+    """|N| / |B − A|: how far C is from the line through A and B."""
+    a, b = COLLINEAR_AB
+    ab2 = sum((q - p) ** 2 for p, q in zip(a, b, strict=True))
+    q = Fraction(magnitude_squared) / ab2
+    return format_surd(False, q.numerator, q.denominator, 2)
 
 
 def _area_factor() -> Fraction:
@@ -71,25 +130,6 @@ def _area_factor() -> Fraction:
     if root * root != ratio:  # pragma: no cover - scaling by an integer keeps it a square
         raise ArithmeticError(f"the area ratio {ratio} is not a perfect square")
     return root
-
-
-def _check_scale_area(answer: Any) -> bool | tuple[bool, str]:
-    if not isinstance(answer, str) and hasattr(answer, "__len__"):
-        return False, "Answer with one number, not a vector."
-    try:
-        value = read_number(answer)
-    except AnswerError as error:
-        return False, f"Answer with one number: {error}."
-    if value == _area_factor():
-        return True
-    if value == SCALE_FACTOR:
-        return False, "Each edge grows by that factor, but the area is a product of two edges."
-    if value == SCALE_FACTOR**3:
-        return False, "That is how a volume grows (three lengths); an area is two lengths."
-    return False, (
-        "Compute the area before and after (triangle_normal(...).area, or the explorer's "
-        "readout) and divide the one by the other."
-    )
 
 
 def _on_the_line() -> tuple[Fraction, ...]:
@@ -117,7 +157,23 @@ EXERCISES = (
         "05-scale-area",
         f"Multiply every coordinate of A = {SCALE_ABC[0]}, B = {SCALE_ABC[1]}, "
         f"C = {SCALE_ABC[2]} by {SCALE_FACTOR}. By what number is the area multiplied?",
-        checker=_check_scale_area,
-        example=_area_factor,
+        expected=_area_factor,
+        hint="Compute the area before and after (triangle_normal(...).area, or the explorer's "
+        "readout) and divide the one by the other.",
+        mistakes=(
+            (
+                SCALE_FACTOR,
+                "Each edge grows by that factor, but the area is a product of two edges.",
+            ),
+            (
+                SCALE_FACTOR**3,
+                "That is how a volume grows (three lengths); an area is two lengths.",
+            ),
+            (
+                Fraction(1, SCALE_FACTOR**2),
+                "That is the factor from the new area back to the old one: divide the new "
+                "area by the old.",
+            ),
+        ),
     ),
 )

@@ -5,6 +5,10 @@ from __future__ import annotations
 import math
 
 from trinormal.exercises import Exercise
+from trinormal.exercises.judging import tolerance_text
+
+#: Relative tolerance of 06-float64-digits: 15 and 16 count, 14 and 17 do not.
+DIGITS_TOL = 0.06
 
 
 def _float64_bits() -> int:
@@ -15,6 +19,12 @@ def _float64_bits() -> int:
 
 def _float64_digits() -> float:
     return _float64_bits() * math.log10(2)
+
+
+def _float32_digits() -> float:
+    import numpy as np
+
+    return (int(np.finfo(np.float32).nmant) + 1) * math.log10(2)
 
 
 EXERCISES = (
@@ -33,12 +43,17 @@ EXERCISES = (
     ),
     Exercise(
         "06-float64-digits",
-        "About how many decimal digits does a float64 carry? (Answers within 1 count.)",
+        "About how many decimal digits does a float64 carry? (Answers "
+        f"{tolerance_text(DIGITS_TOL)} count.)",
         expected=_float64_digits,
-        tol=1.0,
+        tol=DIGITS_TOL,
         hint="Each significand bit is worth log10(2), about 0.301 decimal digits.",
         mistakes=(
             (_float64_bits, "That is the number of bits: multiply it by log10(2)."),
+            (
+                _float32_digits,
+                "That is float32's count, from its 24 significand bits: a float64 has more.",
+            ),
             (
                 17,
                 "17 digits are what it takes to write any float64 so that it reads back "

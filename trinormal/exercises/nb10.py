@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 from trinormal.exercises import Exercise, unit
+from trinormal.exercises.judging import tolerance_text
+
+#: Relative tolerance of 10-scaled-normal (length 1: within 0.0001 per component).
+UNIT_TOL = 1e-4
 
 #: Exercise 10-det-cross: M = diag(2, 3, 4), U = (1, 0, 0), V = (0, 1, 0).
 DIAG = (2, 3, 4)
@@ -21,9 +25,10 @@ EXERCISES = (
     Exercise(
         "10-scaled-normal",
         "A plane has unit normal (1, 1, 0)/√2. Scale x by 2. What is its new unit normal? "
-        "(Within 0.0001 per component.)",
+        f"(Answers with {tolerance_text(UNIT_TOL, 'vector')} count: within 0.0001, as its "
+        "length is 1.)",
         expected=lambda: unit((1 / 2, 1, 0)),
-        tol=1e-4,
+        tol=UNIT_TOL,
         hint="Transform the normal by the inverse transpose, then normalise.",
         mistakes=(
             (

@@ -1,0 +1,318 @@
+"""Any object at all, given to any exercise: a verdict or a clear message, never an exception.
+
+The hypothesis runs are derandomized with a fixed budget, so CI sees the same examples
+every time. Warnings are errors here: reading an answer must be quiet too.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from decimal import Decimal
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from hypothesis.extra import numpy as hnp
+
+from trinormal.exercises import UNJUDGED, CheckResult, check, get, names
+from trinormal.exercises.reading import AnswerError, read_number, read_points, read_vector
+
+pytestmark = pytest.mark.filterwarnings("error")
+
+BUDGET = settings(
+    max_examples=300,
+    derandomize=True,
+    deadline=None,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+
+NAMES = sorted(n for n in names() if not n.startswith("9"))
+
+
+# --------------------------------------------------------------------------- odd objects
+
+
+class RaisingLen:
+    def __len__(self) -> int:
+        raise RuntimeError("no length today")
+
+    def __iter__(self):
+        return iter([1, 2, 3])
+
+
+class RaisingFloat:
+    def __float__(self) -> float:
+        raise ValueError("no float today")
+
+
+class RaisingIter:
+    def __iter__(self):
+        raise TypeError("not iterable today")
+
+    def __len__(self) -> int:
+        return 3
+
+
+class RaisingRepr:
+    def __repr__(self) -> str:
+        raise RuntimeError("no repr today")
+
+
+class RaisingEverything:
+    def __getattr__(self, name: str) -> Any:
+        raise RuntimeError(name)
+
+    def __repr__(self) -> str:
+        raise RuntimeError("repr")
+
+    def __eq__(self, other: object) -> bool:
+        raise RuntimeError("eq")
+
+    __hash__ = None  # type: ignore[assignment]
+
+
+class FloatLike:
+    def __float__(self) -> float:
+        return 6.0
+
+
+def _deep(n: int) -> Any:
+    x: Any = 6
+    for _ in range(n):
+        x = [x]
+    return x
+
+
+ODD = [
+    None,
+    True,
+    False,
+    np.bool_(True),
+    {1, 2, 3},
+    frozenset(),
+    {"x": 1},
+    {},
+    [],
+    (),
+    [[1, 2], [3]],
+    [[1, 2, 3], [4, 5, 6]],
+    10**400,
+    -(10**5000),
+    "1e400",
+    "1e-400",
+    "9" * 2000,
+    float("nan"),
+    float("inf"),
+    -float("inf"),
+    Decimal("nan"),
+    Decimal("-inf"),
+    Decimal("1e999999999"),
+    complex(1, 2),
+    np.complex128(1 + 1j),
+    RaisingLen(),
+    RaisingFloat(),
+    RaisingIter(),
+    RaisingRepr(),
+    RaisingEverything(),
+    FloatLike(),
+    object(),
+    b"6",
+    bytearray(b"1,2,3"),
+    "",
+    "   ",
+    "°",
+    "√",
+    "−",
+    "1/0",
+    "0/0",
+    "sqrt(-1)",
+    "9**9**9",
+    "10**10**10",
+    "factorial(10**9)",
+    "__import__('os')",
+    "().__class__",
+    "x" * 400,
+    "(1, 2",
+    "[(1,2,3), (4,5,6)",
+    np.array([]),
+    np.array([[1, 2], [3, 4]]),
+    np.zeros((3, 3, 3)),
+    np.array(["a", "b", "c"]),
+    np.array([1, 2, 3], dtype=object),
+    np.array(np.nan),
+    np.datetime64("2026-12-02"),
+    np.float16(6),
+    np.longdouble(6),
+    sp.nan,
+    sp.zoo,
+    sp.oo,
+    sp.I,
+    sp.Symbol("x"),
+    sp.Matrix([[1, 2], [3, 4]]),
+    sp.Matrix([1, 2, 3, 4]),
+    sp.true,
+    sp.Eq(sp.Symbol("x"), 1),
+    sp.FiniteSet(1, 2, 3),
+    itertools.count(),
+    iter(()),
+    range(3),
+    range(10**30),
+    _deep(50),
+    _deep(2000),
+    Ellipsis,
+    print,
+    type,
+    ValueError("6"),
+]
+
+
+def odd(i: int) -> Any:
+    """The i-th odd object (a function, so that hypothesis never prints the whole list)."""
+    return ODD[i]
+
+
+def assert_judged(name: str, answer: Any) -> CheckResult:
+    r = check(name, answer)
+    assert isinstance(r, CheckResult)
+    assert r.status in ("correct", "incorrect", "unanswered")
+    assert isinstance(r.message, str) and r.message
+    assert UNJUDGED not in r.message, (name, r.message)
+    assert len(r.message) < 400, r.message
+    assert "Traceback" not in r.message
+    str(r), repr(r), r._repr_html_()
+    return r
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_odd_objects_get_a_verdict_or_a_message(name):
+    for answer in ODD:
+        assert_judged(name, answer)
+
+
+# --------------------------------------------------------------------------- random objects
+
+TEXT_ALPHABET = "0123456789+-−.eE/ ()[],°√·×^*xyzUVuv_sqrtpilog\t\u00a0１"
+texts = st.one_of(
+    st.text(TEXT_ALPHABET, max_size=24),
+    st.text(max_size=12),
+    st.from_regex(r"[+\-−]?[0-9]{0,3}\.?[0-9]{0,3}([eE][+\-−]?[0-9]{1,5})?°?", fullmatch=True),
+    st.sampled_from(["Uy*Vx - Ux*Vy", "front", "True", "(0, 0, 1)", "√3/2", "19.47°"]),
+)
+scalars = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.integers(-(10**420), 10**420),
+    st.fractions(max_denominator=10**30),
+    st.decimals(allow_nan=True, allow_infinity=True),
+    st.complex_numbers(max_magnitude=1e10),
+    st.builds(np.float32, st.floats(width=32)),
+    st.builds(np.int64, st.integers(-(2**63), 2**63 - 1)),
+    st.builds(np.array, st.floats()),
+    st.builds(sp.Rational, st.integers(-(10**50), 10**50), st.integers(1, 10**50)),
+    st.sampled_from([sp.sqrt(2), sp.pi, sp.oo, sp.nan, sp.I, sp.Symbol("Ux"), sp.true]),
+    texts,
+    st.integers(0, len(ODD) - 1).map(odd),
+)
+arrays = hnp.arrays(
+    dtype=st.sampled_from([np.float64, np.float32, np.int64, np.bool_, np.complex128]),
+    shape=hnp.array_shapes(min_dims=0, max_dims=3, max_side=4),
+)
+objects = st.recursive(
+    st.one_of(scalars, arrays),
+    lambda inner: st.one_of(
+        st.lists(inner, max_size=4),
+        st.lists(inner, max_size=4).map(tuple),
+        st.dictionaries(st.sampled_from(["A", "B", "C", "x"]), inner, max_size=3),
+        st.lists(st.integers(-5, 5), max_size=4).map(sp.Matrix),
+    ),
+    max_leaves=12,
+)
+
+
+@BUDGET
+@given(st.sampled_from(NAMES), objects)
+def test_random_objects_get_a_verdict_or_a_message(name, answer):
+    assert_judged(name, answer)
+
+
+@BUDGET
+@given(objects)
+def test_readers_raise_only_answer_errors(answer):
+    for read in (read_number, read_vector, lambda x: read_points(x, 3)):
+        try:
+            read(answer)
+        except AnswerError as exc:
+            assert str(exc)
+
+
+# --------------------------------------------------------------------------- true hints
+
+finite = st.floats(-1e6, 1e6, allow_nan=False)
+vectors = st.one_of(
+    st.tuples(finite, finite, finite),
+    st.tuples(*[st.integers(-20, 20)] * 3),
+    st.tuples(*[st.fractions(max_denominator=12).filter(lambda q: abs(q) < 50)] * 3),
+)
+VECTOR_EXERCISES = [
+    n for n in NAMES if get(n).checker is None and isinstance(get(n).solution(), tuple)
+]
+
+
+def _cross(p, q):
+    return (
+        p[1] * q[2] - p[2] * q[1],
+        p[2] * q[0] - p[0] * q[2],
+        p[0] * q[1] - p[1] * q[0],
+    )
+
+
+@BUDGET
+@given(st.sampled_from(VECTOR_EXERCISES), vectors, st.sampled_from([1, -1, 2, Fraction(1, 3)]))
+def test_direction_hints_are_true(name, noise, scale):
+    """Whatever the answer, "Right direction" and "opposite way" are only said when true."""
+    want = [Fraction(x) for x in get(name).solution()]
+    for answer in (
+        noise,
+        tuple(scale * w for w in want),
+        tuple(w + Fraction(n) / 10**6 for w, n in zip(want, noise, strict=True)),
+    ):
+        message = check(name, answer).message
+        got = [Fraction(x) for x in answer]
+        c = _cross(got, want)
+        c2 = sum(x * x for x in c)
+        g2, w2 = sum(x * x for x in got), sum(x * x for x in want)
+        tol = Fraction(repr(get(name).tol)) if get(name).tol is not None else 0
+        parallel = c2 <= tol * tol * g2 * w2
+        dot = sum(a * b for a, b in zip(got, want, strict=True))
+        if "Right direction" in message:
+            assert parallel and dot > 0, (name, answer, message)
+        if "opposite way" in message and "that is" not in message.lower():
+            assert parallel and dot < 0, (name, answer, message)
+
+
+@BUDGET
+@given(st.sampled_from(NAMES), st.floats(-1e3, 1e3, allow_nan=False))
+def test_numbers_near_the_solution_are_judged_by_the_stated_tolerance(name, x):
+    ex = get(name)
+    sol = ex.solution()
+    if ex.checker is not None or isinstance(sol, bool | str | tuple):
+        return
+    r = assert_judged(name, x)
+    want = Fraction(sol)
+    if ex.tol is None:
+        right = Fraction(x) == want or x == float(want)
+    else:
+        right = abs(Fraction(x) - want) <= Fraction(repr(ex.tol)) * abs(want)
+    assert r.correct == right, (name, x, r.message)
+    if "Wrong sign" in r.message:
+        assert math.copysign(1, x) != math.copysign(1, float(want))
+    if (m := re.search(r"rounded to (\d+) decimal", r.message)) is not None:
+        assert abs(Fraction(x) - want) <= Fraction(1, 2 * 10 ** int(m[1])), (name, x)
