@@ -1,50 +1,13 @@
-"""Normals of whole triangle meshes, vectorized with numpy.
+"""Face normals, degeneracy, areas and vertex normals of whole meshes.
 
-A mesh is two arrays: ``vertices`` of shape (V, 3), one point per row, and
-``faces`` of shape (F, 3), three row indices into ``vertices`` per triangle.
-Face ``(i, j, k)`` has the normal ``N = (v[j] - v[i]) × (v[k] - v[i])``, the
-same formula and the same winding as [`trinormal.triangle_normal`][trinormal.core.triangle_normal].
-
-The promises, for every function here:
-
-* No NaN and no ``RuntimeWarning``, whatever the input. A degenerate face (the
-  sine of the angle between its edges is at most ``tol``, the scale-invariant
-  test of [`trinormal.tolerances`][trinormal.tolerances]) gets a zero normal; a vertex that
-  touches only degenerate faces gets a zero vertex normal.
-* Coordinates near 1e-200 or 1e200 still give correct unit normals: rows that
-  would underflow or overflow are redone with their edges scaled by powers of
-  two, which is exact.
-* float32 vertices are computed in float64 (the product of two float32 numbers
-  is exact in float64) and the result comes back as float32. Any other real
-  input is computed and returned in float64.
-* Bad input raises a `ValueError` that names the first bad row.
-
-Speed comes from plain numpy: the coordinates are split into three contiguous
-arrays, faces are processed in blocks of a few thousand so that every
-temporary stays in the CPU cache, and every operation writes in place. There
-is no Python loop over faces (only over blocks of them).
-
-The small meshes [`cube`][trinormal.mesh.cube], [`icosphere`][trinormal.mesh.icosphere],
-[`torus`][trinormal.mesh.torus] and
-[`terrain`][trinormal.mesh.terrain] are generated in code, outward-facing and consistently wound.
-
-Examples
---------
->>> from trinormal import mesh
->>> v, f = mesh.cube()
->>> v.shape, f.shape
-((8, 3), (12, 3))
->>> mesh.face_normals(v, f)[:2]
-array([[ 0.,  0., -1.],
-       [ 0.,  0., -1.]])
->>> bool(mesh.consistent_winding(f))
-True
+The kernel `_face_rows` computes, block by block, whatever per-face output a
+caller asks for: unit normals, the degeneracy verdict, |N| and the interior
+angles. Every public function here is one call to it plus a little numpy.
 """
 
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
 
 from trinormal._optional import missing_extra
 
@@ -54,28 +17,19 @@ try:
 except ModuleNotFoundError as exc:
     raise missing_extra(exc, __name__) from exc
 
+from trinormal.mesh._arrays import (
+    BoolArray,
+    FloatArray,
+    IntArray,
+    Weighting,
+    _cast,
+    _check_tol,
+    _prepare,
+    _raise_range_error,
+)
 from trinormal.tolerances import DEFAULT_TOL
-from trinormal.validation import check_tolerance
 
-__all__ = [
-    "WEIGHTINGS",
-    "consistent_winding",
-    "cube",
-    "degenerate_faces",
-    "face_areas",
-    "face_normals",
-    "icosphere",
-    "inconsistent_edges",
-    "terrain",
-    "torus",
-    "uv_sphere",
-    "vertex_normals",
-]
-
-FloatArray = npt.NDArray[np.floating[Any]]
-IntArray = npt.NDArray[np.intp]
-BoolArray = npt.NDArray[np.bool_]
-Weighting = Literal["angle", "area", "uniform"]
+__all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vertex_normals"]
 
 #: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
@@ -90,107 +44,6 @@ _LO = 2.0**-900
 
 # One vertex row (3 float64) as a single item, so a gather moves whole rows.
 _ROW = np.dtype((np.void, 24))
-
-# The largest vertex index: 2**63 - 1 (numpy's intp on 64-bit machines).
-_MAX_INDEX = int(np.iinfo(np.intp).max)
-
-
-# --------------------------------------------------------------------------- validation
-
-
-def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]:
-    """Return the vertices as float64 (V, 3) and the dtype results come back in."""
-    arr = np.asarray(vertices)
-    if arr.dtype == np.float32:
-        out_dtype: np.dtype[Any] = np.dtype(np.float32)
-    elif arr.dtype.kind in "fiu":
-        out_dtype = np.dtype(np.float64)
-    elif arr.dtype == object:
-        try:
-            arr = arr.astype(np.float64)
-        except (TypeError, ValueError):
-            raise ValueError("vertices must be real numbers") from None
-        except OverflowError:  # a Python int or Fraction beyond the float64 range
-            raise ValueError("vertices must be real numbers within the float64 range") from None
-        out_dtype = np.dtype(np.float64)
-    else:
-        raise ValueError(f"vertices must be real numbers, got dtype {arr.dtype}")
-    if arr.ndim != 2 or arr.shape[1] != 3:
-        raise ValueError(f"vertices must have shape (V, 3), got shape {arr.shape}")
-    arr64 = arr.astype(np.float64, copy=False)
-    # two reductions (NaN propagates through min and max) instead of a (V, 3) mask
-    if arr64.size and not (np.isfinite(arr64.min()) and np.isfinite(arr64.max())):
-        finite = np.isfinite(arr64)
-        row = int(np.flatnonzero(~finite.all(axis=1))[0])
-        col = int(np.flatnonzero(~finite[row])[0])
-        what = "NaN" if np.isnan(arr64[row, col]) else "infinite"
-        raise ValueError(
-            f"vertices row {row}: {'xyz'[col]} is {what}; every coordinate must be a finite number"
-        )
-    return arr64, out_dtype
-
-
-def _check_faces(
-    faces: npt.ArrayLike, n_vertices: int | None, check_range: bool = True
-) -> IntArray:
-    """Return the faces as an intp (F, 3) array, every index checked against ``n_vertices``.
-
-    With ``check_range=False`` only the dtype and shape are checked here: the
-    kernel checks the indices block by block, where they are in cache anyway.
-    """
-    arr = np.asarray(faces)
-    if arr.size == 0:
-        if arr.ndim == 2 and arr.shape[1] != 3:
-            raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
-        return np.empty((0, 3), dtype=np.intp)
-    if arr.dtype.kind not in "iu":
-        raise ValueError(f"faces must hold integer vertex indices, got dtype {arr.dtype}")
-    if arr.ndim != 2 or arr.shape[1] != 3:
-        raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
-    if arr.dtype.kind == "u" and arr.dtype.itemsize >= 8 and int(arr.max()) > _MAX_INDEX:
-        _raise_range_error(arr, _MAX_INDEX + 1)  # beyond what an index (intp) can hold
-    if check_range:
-        lo, hi = int(arr.min()), int(arr.max())
-        limit = n_vertices if n_vertices is not None else hi + 1
-        if lo < 0 or hi >= limit:
-            _raise_range_error(arr, limit)
-    return np.ascontiguousarray(arr, dtype=np.intp)
-
-
-def _raise_range_error(arr: npt.NDArray[Any], limit: int) -> None:
-    """Raise the ValueError naming the first row of ``arr`` with an index outside [0, limit)."""
-    bad = (arr < 0) | (arr >= limit)
-    row = int(np.flatnonzero(bad.any(axis=1))[0])
-    index = int(arr[row][bad[row]][0])
-    valid = (
-        f"the valid indices are 0 to {limit - 1} ({limit} vertices)"
-        if limit
-        else "there are no vertices"
-    )
-    raise ValueError(f"faces row {row} refers to vertex {index}, but {valid}")
-
-
-def _check_tol(tol: float) -> float:
-    """Return the tolerance as a float, checked by `trinormal.validation.check_tolerance`."""
-    n, d = check_tolerance(tol)
-    return n / d  # 0 <= tol <= 1: no overflow
-
-
-def _cast(values: FloatArray, dtype: np.dtype[Any]) -> FloatArray:
-    """Return float64 results in ``dtype``: beyond the float32 range they become ±inf, quietly."""
-    if values.dtype == dtype:
-        return values
-    with np.errstate(over="ignore", under="ignore"):
-        out: FloatArray = values.astype(dtype)
-    return out
-
-
-def _prepare(
-    vertices: npt.ArrayLike, faces: npt.ArrayLike
-) -> tuple[FloatArray, IntArray, np.dtype[Any]]:
-    v, dtype = _check_vertices(vertices)
-    f = _check_faces(faces, v.shape[0], check_range=False)
-    return np.ascontiguousarray(v), f, dtype
 
 
 # --------------------------------------------------------------------------- the kernel
@@ -561,6 +414,7 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
     --------
     >>> face_areas([[0, 0, 0], [1, 0, 0], [0, 1, 0], [2, 0, 0], [0, 3, 0]], [[0, 1, 2], [0, 3, 4]])
     array([0.5, 3. ])
+    >>> from trinormal.mesh import cube
     >>> v, f = cube()
     >>> float(face_areas(v, f).sum())  # a cube of side 2
     24.0
@@ -607,6 +461,7 @@ def vertex_normals(
     (1, 1, 1)/√3; area weighting leans toward the face split into two
     triangles at that corner:
 
+    >>> from trinormal.mesh import cube
     >>> v, f = cube()
     >>> np.round(vertex_normals(v, f, "angle")[7], 6)
     array([0.57735, 0.57735, 0.57735])
@@ -662,324 +517,3 @@ def _area_weights_per_vertex(mag: FloatArray, exps: IntArray, f: IntArray, nv: i
         w = np.ldexp(np.tile(m, 3), shift.astype(np.intp))
     out: FloatArray = w.reshape(3, -1).T
     return out
-
-
-def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:
-    """Directed edges that appear in two faces running the same way.
-
-    In a consistently wound mesh every interior edge is walked once in each
-    direction, by the two faces that share it. An edge walked the same way
-    twice means one of those faces is flipped.
-
-    Parameters
-    ----------
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
-
-    Returns
-    -------
-    ndarray of int, shape (E, 2)
-        Each offending directed edge ``(i, j)`` once, sorted.
-
-    Examples
-    --------
-    >>> inconsistent_edges([[0, 1, 2], [0, 2, 3]])
-    array([], shape=(0, 2), dtype=int64)
-    >>> inconsistent_edges([[0, 1, 2], [0, 3, 2]])
-    array([[2, 0]])
-    """
-    f = _check_faces(faces, None)
-    if f.shape[0] == 0:
-        return np.empty((0, 2), dtype=np.intp)
-    # directed edges as (start, end) rows, sorted; no packing into one integer, which
-    # would wrap around for indices above 2**31
-    edges = np.stack([f.ravel(), f[:, [1, 2, 0]].ravel()], axis=1)
-    edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
-    same = (edges[1:] == edges[:-1]).all(axis=1)
-    dup: IntArray = np.unique(edges[1:][same], axis=0).reshape(-1, 2).astype(np.intp)
-    return dup
-
-
-def consistent_winding(faces: npt.ArrayLike) -> bool:
-    """Whether every edge shared by two faces runs opposite ways in them.
-
-    Parameters
-    ----------
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
-
-    Returns
-    -------
-    bool
-        True when no directed edge appears twice (see
-        [`inconsistent_edges`][trinormal.mesh.inconsistent_edges]).
-
-    Examples
-    --------
-    Two triangles sharing the edge 0–2, wound the same way round, then one flipped:
-
-    >>> consistent_winding([[0, 1, 2], [0, 2, 3]])
-    True
-    >>> consistent_winding([[0, 1, 2], [0, 3, 2]])
-    False
-    """
-    return bool(inconsistent_edges(faces).shape[0] == 0)
-
-
-# --------------------------------------------------------------------------- built-in meshes
-
-
-def cube(size: float = 2.0) -> tuple[FloatArray, IntArray]:
-    """Make a cube centred on the origin: 8 vertices and 12 outward-facing triangles.
-
-    Vertex ``i`` has coordinates ``±size/2`` with the sign of x, y, z taken from
-    bits 0, 1, 2 of ``i``, so vertex 7 is the corner (1, 1, 1) of the default
-    cube. Each square face is split along one diagonal; at vertex 7 only the
-    top face (+z) is split through the corner, which is what makes area and
-    angle weighting disagree there.
-
-    Parameters
-    ----------
-    size : float, default 2.0
-        Edge length.
-
-    Returns
-    -------
-    vertices : ndarray, shape (8, 3)
-    faces : ndarray of int, shape (12, 3)
-
-    Examples
-    --------
-    >>> v, f = cube()
-    >>> v[7], f[-2:]
-    (array([1., 1., 1.]), array([[4, 5, 7],
-           [4, 7, 6]]))
-    """
-    i = np.arange(8)
-    v = (np.stack([i & 1, (i >> 1) & 1, (i >> 2) & 1], axis=1) - 0.5) * float(size)
-    f = np.array(
-        [
-            [0, 2, 3], [0, 3, 1],  # -z  (bottom)
-            [0, 1, 5], [0, 5, 4],  # -y
-            [0, 4, 6], [0, 6, 2],  # -x
-            [1, 3, 5], [3, 7, 5],  # +x
-            [2, 6, 3], [3, 6, 7],  # +y
-            [4, 5, 7], [4, 7, 6],  # +z  (top)
-        ],
-        dtype=np.intp,
-    )  # fmt: skip
-    return v, f
-
-
-def icosphere(subdivisions: int = 2, radius: float = 1.0) -> tuple[FloatArray, IntArray]:
-    """Make a sphere of triangles: an icosahedron whose faces are split in four, repeatedly.
-
-    Parameters
-    ----------
-    subdivisions : int, default 2
-        How many times every triangle is split into four (0 is the icosahedron).
-    radius : float, default 1.0
-        Every vertex lies at this distance from the origin.
-
-    Returns
-    -------
-    vertices : ndarray, shape (10 · 4**s + 2, 3)
-    faces : ndarray of int, shape (20 · 4**s, 3)
-        Outward-facing, consistently wound.
-
-    Examples
-    --------
-    >>> v, f = icosphere(1)
-    >>> v.shape, f.shape
-    ((42, 3), (80, 3))
-    >>> bool(np.allclose(np.linalg.norm(v, axis=1), 1.0))
-    True
-    """
-    if subdivisions < 0:
-        raise ValueError(f"subdivisions must be >= 0, got {subdivisions}")
-    p = (1.0 + math.sqrt(5.0)) / 2.0
-    v = np.array(
-        [
-            [-1, p, 0], [1, p, 0], [-1, -p, 0], [1, -p, 0],
-            [0, -1, p], [0, 1, p], [0, -1, -p], [0, 1, -p],
-            [p, 0, -1], [p, 0, 1], [-p, 0, -1], [-p, 0, 1],
-        ],
-        dtype=np.float64,
-    )  # fmt: skip
-    f = np.array(
-        [
-            [0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11],
-            [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6], [7, 1, 8],
-            [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9],
-            [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1],
-        ],
-        dtype=np.intp,
-    )  # fmt: skip
-    v /= np.linalg.norm(v, axis=1, keepdims=True)
-    for _ in range(subdivisions):
-        # one new vertex per edge, shared by the two faces on either side
-        edges = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
-        key = np.sort(edges, axis=1)
-        uniq, inverse = np.unique(key, axis=0, return_inverse=True)
-        mid = v[uniq[:, 0]] + v[uniq[:, 1]]
-        mid /= np.linalg.norm(mid, axis=1, keepdims=True)
-        m = inverse.reshape(3, -1) + v.shape[0]  # midpoints of edges 01, 12, 20 of each face
-        v = np.concatenate([v, mid])
-        a, b, c = f[:, 0], f[:, 1], f[:, 2]
-        ab, bc, ca = m[0], m[1], m[2]
-        f = np.concatenate(
-            [
-                np.stack([a, ab, ca], axis=1),
-                np.stack([b, bc, ab], axis=1),
-                np.stack([c, ca, bc], axis=1),
-                np.stack([ab, bc, ca], axis=1),
-            ]
-        )
-    return v * float(radius), f.astype(np.intp)
-
-
-def torus(
-    major: float = 1.0, minor: float = 0.35, n_major: int = 32, n_minor: int = 16
-) -> tuple[FloatArray, IntArray]:
-    """Make a ring around the z axis: a circle of radius ``minor`` swept along radius ``major``.
-
-    Parameters
-    ----------
-    major, minor : float
-        Radius of the ring's centre line and of its tube (``0 < minor < major``).
-    n_major, n_minor : int
-        Vertices around the ring and around the tube (at least 3 each).
-
-    Returns
-    -------
-    vertices : ndarray, shape (n_major · n_minor, 3)
-    faces : ndarray of int, shape (2 · n_major · n_minor, 3)
-        Outward-facing, consistently wound, closed (no boundary).
-
-    Examples
-    --------
-    >>> v, f = torus(n_major=8, n_minor=4)
-    >>> v.shape, f.shape
-    ((32, 3), (64, 3))
-    """
-    if not 0 < minor < major:
-        raise ValueError(f"need 0 < minor < major, got minor={minor}, major={major}")
-    if n_major < 3 or n_minor < 3:
-        raise ValueError(f"n_major and n_minor must be >= 3, got {n_major}, {n_minor}")
-    th = np.linspace(0.0, 2.0 * np.pi, n_major, endpoint=False)[:, None]
-    ph = np.linspace(0.0, 2.0 * np.pi, n_minor, endpoint=False)[None, :]
-    r = major + minor * np.cos(ph)
-    v = np.stack(
-        [
-            (r * np.cos(th)).ravel(),
-            (r * np.sin(th)).ravel(),
-            np.broadcast_to(minor * np.sin(ph), (n_major, n_minor)).ravel(),
-        ],
-        axis=1,
-    )
-    i = np.arange(n_major)[:, None]
-    j = np.arange(n_minor)[None, :]
-    p00 = (i * n_minor + j).ravel()
-    p10 = (((i + 1) % n_major) * n_minor + j).ravel()
-    p01 = (i * n_minor + (j + 1) % n_minor).ravel()
-    p11 = (((i + 1) % n_major) * n_minor + (j + 1) % n_minor).ravel()
-    f = np.concatenate([np.stack([p00, p10, p11], 1), np.stack([p00, p11, p01], 1)])
-    return v, f.astype(np.intp)
-
-
-def uv_sphere(n_around: int = 24, n_down: int = 12) -> tuple[FloatArray, IntArray]:
-    """Make a unit sphere cut along meridians and parallels, like a globe's grid.
-
-    Unlike `icosphere`, its triangles are far from equal: they grow thin and
-    small near the poles, which is what makes vertex-normal weightings differ.
-
-    Parameters
-    ----------
-    n_around : int, default 24
-        Meridians (vertices around each parallel), at least 3.
-    n_down : int, default 12
-        Bands from pole to pole, at least 3.
-
-    Returns
-    -------
-    vertices : ndarray, shape (n_around · (n_down − 1) + 2, 3)
-        The parallels' vertices, then the north and the south pole.
-    faces : ndarray of int, shape (2 · n_around · (n_down − 1), 3)
-        Outward-facing, consistently wound, closed.
-
-    Examples
-    --------
-    >>> v, f = uv_sphere(8, 4)
-    >>> v.shape, f.shape
-    ((26, 3), (48, 3))
-    >>> bool(np.allclose(np.linalg.norm(v, axis=1), 1.0))
-    True
-    """
-    if n_around < 3 or n_down < 3:
-        raise ValueError(f"n_around and n_down must be >= 3, got {n_around}, {n_down}")
-    theta = np.linspace(0.0, np.pi, n_down + 1)[1:-1]
-    phi = np.linspace(0.0, 2.0 * np.pi, n_around, endpoint=False)
-    t, p = np.meshgrid(theta, phi, indexing="ij")
-    ring = np.stack([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)], -1).reshape(-1, 3)
-    vertices = np.vstack([ring, [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
-    north, south, last = len(ring), len(ring) + 1, (n_down - 2) * n_around
-    faces = []
-    for i in range(n_down - 2):  # two triangles per cell between neighbouring parallels
-        for j in range(n_around):
-            a, b = i * n_around + j, i * n_around + (j + 1) % n_around
-            faces += [(a, a + n_around, b + n_around), (a, b + n_around, b)]
-    for j in range(n_around):  # a fan at each pole
-        faces += [(north, j, (j + 1) % n_around), (south, last + (j + 1) % n_around, last + j)]
-    return vertices, np.array(faces, dtype=np.intp)
-
-
-def terrain(
-    nx: int = 32, ny: int = 32, size: float = 1.0, height: float = 0.15, seed: int = 0
-) -> tuple[FloatArray, IntArray]:
-    """Make a height-field grid: ``nx`` by ``ny`` points over a square, z a smooth landscape.
-
-    Faces are listed row by row, two triangles per grid cell, all facing up
-    (+z side), so neighbouring faces share neighbouring vertices: the natural
-    order a mesh file usually has.
-
-    Parameters
-    ----------
-    nx, ny : int
-        Grid points along x and y (at least 2 each).
-    size : float, default 1.0
-        Side of the square, centred on the origin.
-    height : float, default 0.15
-        Largest height of the landscape.
-    seed : int, default 0
-        Seed of the random hills (same seed, same terrain).
-
-    Returns
-    -------
-    vertices : ndarray, shape (nx · ny, 3)
-    faces : ndarray of int, shape (2 (nx − 1)(ny − 1), 3)
-
-    Examples
-    --------
-    >>> v, f = terrain(3, 4)
-    >>> v.shape, f.shape
-    ((12, 3), (12, 3))
-    >>> bool((face_normals(v, f)[:, 2] > 0).all())
-    True
-    """
-    if nx < 2 or ny < 2:
-        raise ValueError(f"nx and ny must be >= 2, got {nx}, {ny}")
-    rng = np.random.default_rng(seed)
-    xs = np.linspace(-size / 2, size / 2, nx)
-    ys = np.linspace(-size / 2, size / 2, ny)
-    gx, gy = np.meshgrid(xs, ys, indexing="xy")  # shape (ny, nx): row j, column i
-    k = rng.uniform(1.0, 4.0, size=(4, 2)) * (2 * np.pi / size)
-    phase = rng.uniform(0, 2 * np.pi, size=4)
-    amp = rng.uniform(0.3, 1.0, size=4)
-    z = sum(a * np.sin(kx * gx + ky * gy + p) for (kx, ky), p, a in zip(k, phase, amp, strict=True))
-    z = z * (height / amp.sum())
-    v = np.stack([gx.ravel(), gy.ravel(), np.asarray(z).ravel()], axis=1)
-    j, i = np.meshgrid(np.arange(ny - 1), np.arange(nx - 1), indexing="ij")
-    p00 = (j * nx + i).ravel()
-    p10, p01, p11 = p00 + 1, p00 + nx, p00 + nx + 1
-    f = np.stack([p00, p10, p11, p00, p11, p01], axis=1).reshape(-1, 3)
-    return v, f.astype(np.intp)

@@ -1,0 +1,117 @@
+"""Array checks and types shared by the mesh modules (private).
+
+Every public mesh function reads its ``vertices`` and ``faces`` through
+`_check_vertices` and `_check_faces`, so a bad input gets the same message,
+naming the first bad row, whichever function it reaches.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+import numpy as np
+import numpy.typing as npt
+
+from trinormal.validation import check_tolerance
+
+FloatArray = npt.NDArray[np.floating[Any]]
+IntArray = npt.NDArray[np.intp]
+BoolArray = npt.NDArray[np.bool_]
+Weighting = Literal["angle", "area", "uniform"]
+# The largest vertex index: 2**63 - 1 (numpy's intp on 64-bit machines).
+_MAX_INDEX = int(np.iinfo(np.intp).max)
+
+
+def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]:
+    """Return the vertices as float64 (V, 3) and the dtype results come back in."""
+    arr = np.asarray(vertices)
+    if arr.dtype == np.float32:
+        out_dtype: np.dtype[Any] = np.dtype(np.float32)
+    elif arr.dtype.kind in "fiu":
+        out_dtype = np.dtype(np.float64)
+    elif arr.dtype == object:
+        try:
+            arr = arr.astype(np.float64)
+        except (TypeError, ValueError):
+            raise ValueError("vertices must be real numbers") from None
+        except OverflowError:  # a Python int or Fraction beyond the float64 range
+            raise ValueError("vertices must be real numbers within the float64 range") from None
+        out_dtype = np.dtype(np.float64)
+    else:
+        raise ValueError(f"vertices must be real numbers, got dtype {arr.dtype}")
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise ValueError(f"vertices must have shape (V, 3), got shape {arr.shape}")
+    arr64 = arr.astype(np.float64, copy=False)
+    # two reductions (NaN propagates through min and max) instead of a (V, 3) mask
+    if arr64.size and not (np.isfinite(arr64.min()) and np.isfinite(arr64.max())):
+        finite = np.isfinite(arr64)
+        row = int(np.flatnonzero(~finite.all(axis=1))[0])
+        col = int(np.flatnonzero(~finite[row])[0])
+        what = "NaN" if np.isnan(arr64[row, col]) else "infinite"
+        raise ValueError(
+            f"vertices row {row}: {'xyz'[col]} is {what}; every coordinate must be a finite number"
+        )
+    return arr64, out_dtype
+
+
+def _check_faces(
+    faces: npt.ArrayLike, n_vertices: int | None, check_range: bool = True
+) -> IntArray:
+    """Return the faces as an intp (F, 3) array, every index checked against ``n_vertices``.
+
+    With ``check_range=False`` only the dtype and shape are checked here: the
+    kernel checks the indices block by block, where they are in cache anyway.
+    """
+    arr = np.asarray(faces)
+    if arr.size == 0:
+        if arr.ndim == 2 and arr.shape[1] != 3:
+            raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
+        return np.empty((0, 3), dtype=np.intp)
+    if arr.dtype.kind not in "iu":
+        raise ValueError(f"faces must hold integer vertex indices, got dtype {arr.dtype}")
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise ValueError(f"faces must have shape (F, 3), got shape {arr.shape}")
+    if arr.dtype.kind == "u" and arr.dtype.itemsize >= 8 and int(arr.max()) > _MAX_INDEX:
+        _raise_range_error(arr, _MAX_INDEX + 1)  # beyond what an index (intp) can hold
+    if check_range:
+        lo, hi = int(arr.min()), int(arr.max())
+        limit = n_vertices if n_vertices is not None else hi + 1
+        if lo < 0 or hi >= limit:
+            _raise_range_error(arr, limit)
+    return np.ascontiguousarray(arr, dtype=np.intp)
+
+
+def _raise_range_error(arr: npt.NDArray[Any], limit: int) -> None:
+    """Raise the ValueError naming the first row of ``arr`` with an index outside [0, limit)."""
+    bad = (arr < 0) | (arr >= limit)
+    row = int(np.flatnonzero(bad.any(axis=1))[0])
+    index = int(arr[row][bad[row]][0])
+    valid = (
+        f"the valid indices are 0 to {limit - 1} ({limit} vertices)"
+        if limit
+        else "there are no vertices"
+    )
+    raise ValueError(f"faces row {row} refers to vertex {index}, but {valid}")
+
+
+def _check_tol(tol: float) -> float:
+    """Return the tolerance as a float, checked by `trinormal.validation.check_tolerance`."""
+    n, d = check_tolerance(tol)
+    return n / d  # 0 <= tol <= 1: no overflow
+
+
+def _cast(values: FloatArray, dtype: np.dtype[Any]) -> FloatArray:
+    """Return float64 results in ``dtype``: beyond the float32 range they become ±inf, quietly."""
+    if values.dtype == dtype:
+        return values
+    with np.errstate(over="ignore", under="ignore"):
+        out: FloatArray = values.astype(dtype)
+    return out
+
+
+def _prepare(
+    vertices: npt.ArrayLike, faces: npt.ArrayLike
+) -> tuple[FloatArray, IntArray, np.dtype[Any]]:
+    v, dtype = _check_vertices(vertices)
+    f = _check_faces(faces, v.shape[0], check_range=False)
+    return np.ascontiguousarray(v), f, dtype
