@@ -1,4 +1,4 @@
-"""The command line calculator: ``trinormal A B C``.
+"""The command line: ``trinormal A B C`` (one triangle) and ``trinormal mesh FILE``.
 
 Points are written ``x,y,z`` and read exactly (``0.1`` is one tenth, ``1/3`` a
 third). Negative coordinates need no ``--``::
@@ -6,6 +6,19 @@ third). Negative coordinates need no ``--``::
     trinormal -1,2,3 0,0,0 1,1,1 --precision 3
     trinormal 0,0,0 1,0,0 0,1,0 --steps
     trinormal 0,0,0 1,0,0 0,1,0 --json
+
+``trinormal mesh FILE`` reads an OBJ, STL or PLY file, prints what is wrong
+with it (`trinormal.mesh.check`) and, with ``--fix OUT``, writes the faces
+rewound by `trinormal.mesh.fix_winding` (OUT's extension chooses the format;
+the same format and encoding as FILE when they match)::
+
+    trinormal mesh model.stl
+    trinormal mesh model.obj --fix fixed.obj
+    trinormal mesh model.ply --json
+
+It needs numpy (``pip install "trinormal[mesh]"``); the triangle calculator
+needs nothing beyond the standard library, and numpy is imported only when
+the mesh command runs.
 
 A degenerate triangle is an answer (exit status 0). Bad input prints one line
 naming the vertex and axis and exits with status 2; an output that cannot be
@@ -121,7 +134,8 @@ def _parser() -> argparse.ArgumentParser:
         description="The normal of the triangle ABC, computed exactly: edges U and V, "
         "N = U × V, |N|, the area, the unit normal and the plane.",
         epilog="Points are x,y,z with decimals (0.1, -2.5e3) or fractions (1/3), read exactly. "
-        "Example: trinormal 0,0,0 1,0,0 0,1,0 --steps",
+        "Example: trinormal 0,0,0 1,0,0 0,1,0 --steps. "
+        "To check a mesh file: trinormal mesh FILE [--fix OUT] [--json]",
     )
     p.add_argument("points", nargs="*", metavar="POINT", help="A, B and C, each as x,y,z")
     p.add_argument(
@@ -217,6 +231,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     args_in = list(sys.argv[1:] if argv is None else argv)
     try:
+        if args_in[:1] == ["mesh"]:
+            return _run_mesh(args_in[1:])
         return _run(args_in)
     except KeyboardInterrupt:
         return 130
@@ -280,6 +296,88 @@ def _render(r: TriangleNormal, args: argparse.Namespace, points: list[str], prec
         lines += [f"{label} = {work}" for label, work in steps(r, precision)]
         return "\n".join(lines)
     return _table(r, points, precision)
+
+
+# --------------------------------------------------------------------------- trinormal mesh
+
+
+def _mesh_parser() -> argparse.ArgumentParser:
+    p = _Parser(
+        prog="trinormal mesh",
+        description="Check a mesh file (OBJ, STL or PLY): degenerate and duplicate faces, holes, "
+        "non-manifold edges and vertices, pieces, winding and outward normals.",
+        epilog="Example: trinormal mesh model.stl --fix fixed.stl",
+    )
+    p.add_argument("file", metavar="FILE", help="the mesh: .obj, .stl or .ply")
+    p.add_argument(
+        "--fix",
+        metavar="OUT",
+        help="write the mesh with every piece wound consistently (and outward where closed) "
+        "to OUT; its extension chooses the format",
+    )
+    p.add_argument("--json", action="store_true", help="the report as JSON")
+    return p
+
+
+def _run_mesh(args_in: list[str]) -> int:
+    try:
+        args = _mesh_parser().parse_args(args_in)
+    except _UsageError as exc:
+        _error(str(exc))
+        return 2
+    try:
+        import numpy  # noqa: F401  (the one dependency of trinormal.mesh)
+    except ImportError:
+        _error('trinormal mesh needs numpy: pip install "trinormal[mesh]"')
+        return 2
+    from trinormal import mesh
+
+    try:
+        data = mesh.read_mesh(args.file)
+        report = mesh.check(data.vertices, data.faces)
+        fixed = None
+        if args.fix is not None:
+            out_fmt = mesh.io._format_of(args.fix, None)
+            encoding = data.encoding if out_fmt == data.format else None
+            faces, flipped = mesh.fix_winding(data.vertices, data.faces)
+            mesh.write_mesh(args.fix, data.vertices, faces, out_fmt, encoding)
+            fixed = (out_fmt, flipped)
+    except ValueError as exc:  # MeshFileError and bad arrays: one line, status 2
+        _error(str(exc))
+        return 2
+    if args.json:
+        out: dict[str, Any] = {
+            "file": data.path,
+            "format": data.format,
+            "encoding": data.encoding,
+            "polygons": data.n_polygons,
+            "polygons_split": data.split_polygons,
+            "report": report.to_dict(),
+        }
+        if fixed is not None:
+            out["fixed"] = {"file": args.fix, "format": fixed[0], "flipped": fixed[1].tolist()}
+        text = json.dumps(out, ensure_ascii=False)
+        if _encodable(text, sys.stdout) != text:
+            text = json.dumps(out, ensure_ascii=True)
+    else:
+        lines = [data.describe(), report.summary()]
+        if fixed is not None:
+            n = len(fixed[1])
+            lines.append(
+                f"Wrote {args.fix} ({fixed[0].upper()}): {n} {'face' if n == 1 else 'faces'} "
+                "turned over."
+            )
+        text = "\n".join(lines)
+    try:
+        _write(sys.stdout, text + "\n")
+    except BrokenPipeError:
+        _silence_stdout()
+    except (OSError, ValueError) as exc:
+        _silence_stdout()
+        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+        _error(f"cannot write the output: {reason}")
+        return 1
+    return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -18,7 +18,8 @@ The modules, each named for what it answers:
 * `report` — [`check`][trinormal.mesh.check]: everything wrong with a mesh,
   as counts, face lists and plain sentences;
 * `io` — [`read_mesh`][trinormal.mesh.read_mesh] and
-  [`write_mesh`][trinormal.mesh.write_mesh] for OBJ, STL and PLY files;
+  [`write_mesh`][trinormal.mesh.write_mesh] for OBJ, STL and PLY files, and
+  [`sample_path`][trinormal.mesh.sample_path], the models shipped with the package;
 * `shapes` — small meshes made in code ([`cube`][trinormal.mesh.cube],
   [`icosphere`][trinormal.mesh.icosphere], [`torus`][trinormal.mesh.torus],
   [`uv_sphere`][trinormal.mesh.uv_sphere], [`terrain`][trinormal.mesh.terrain]),
@@ -58,6 +59,16 @@ array([[ 0.,  0., -1.],
 True
 """
 
+from trinormal.mesh.io import (
+    FORMATS,
+    SAMPLES,
+    MeshData,
+    MeshFileError,
+    parse_mesh,
+    read_mesh,
+    sample_path,
+    write_mesh,
+)
 from trinormal.mesh.normals import (
     WEIGHTINGS,
     degenerate_faces,
@@ -65,20 +76,49 @@ from trinormal.mesh.normals import (
     face_normals,
     vertex_normals,
 )
-from trinormal.mesh.shapes import cube, icosphere, terrain, torus, uv_sphere
-from trinormal.mesh.topology import consistent_winding, inconsistent_edges
+from trinormal.mesh.repair import fix_winding, signed_volume
+from trinormal.mesh.report import ComponentReport, MeshReport, check
+from trinormal.mesh.shapes import cube, damaged_model, icosphere, terrain, torus, uv_sphere
+from trinormal.mesh.topology import (
+    boundary_edges,
+    connected_components,
+    consistent_winding,
+    duplicate_faces,
+    inconsistent_edges,
+    non_manifold_edges,
+    non_manifold_vertices,
+)
 
 __all__ = [
+    "FORMATS",
+    "SAMPLES",
     "WEIGHTINGS",
+    "ComponentReport",
+    "MeshData",
+    "MeshFileError",
+    "MeshReport",
+    "boundary_edges",
+    "check",
+    "connected_components",
     "consistent_winding",
     "cube",
+    "damaged_model",
     "degenerate_faces",
+    "duplicate_faces",
     "face_areas",
     "face_normals",
+    "fix_winding",
     "icosphere",
     "inconsistent_edges",
+    "non_manifold_edges",
+    "non_manifold_vertices",
+    "parse_mesh",
+    "read_mesh",
+    "sample_path",
+    "signed_volume",
     "terrain",
     "torus",
     "uv_sphere",
     "vertex_normals",
+    "write_mesh",
 ]

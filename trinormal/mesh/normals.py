@@ -452,8 +452,9 @@ def vertex_normals(
     -------
     ndarray, shape (V, 3)
         Unit vertex normals in the vertices' dtype. A vertex that touches no
-        face, or only degenerate ones, or whose contributions cancel exactly,
-        gets a zero row.
+        face, or only degenerate ones, or only faces that come in pairs with
+        their reversed copies (whose contributions cancel exactly), gets an
+        exactly zero row, never a direction made of rounding noise.
 
     Examples
     --------
@@ -467,6 +468,13 @@ def vertex_normals(
     array([0.57735, 0.57735, 0.57735])
     >>> np.round(vertex_normals(v, f, "area")[7], 6)
     array([0.408248, 0.408248, 0.816497])
+
+    A face glued to its own reversed copy has no side to face:
+
+    >>> vertex_normals([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 1]])
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 0.]])
     """
     if weighting not in WEIGHTINGS:
         raise ValueError(f"weighting must be one of {', '.join(WEIGHTINGS)}; got {weighting!r}")
@@ -494,7 +502,61 @@ def vertex_normals(
     for k in range(3):
         np.multiply(w.T, unit[:, k], out=wc)
         acc[:, k] = np.bincount(idx, weights=wc.ravel(), minlength=nv)
+    _cancel_reversed_pairs(acc, w, unit, f, idx)
     return _cast(_normalize_rows(acc), dtype)
+
+
+#: A vertex whose summed normal is shorter than this fraction of its total
+#: weight lost most of its digits to cancellation: its faces are looked at again.
+_CANCELLED = 1e-6
+
+
+def _cancel_reversed_pairs(
+    acc: FloatArray, w: FloatArray, unit: FloatArray, f: IntArray, idx: IntArray
+) -> None:
+    """Redo, without them, the sums at vertices where a face and its reversed copy meet.
+
+    A face and the same face wound the other way contribute exactly opposite
+    amounts (same weight, opposite normal); in floating point their sum is
+    rounding noise, which normalising would blow up into a unit vector. At
+    vertices whose sum nearly cancelled, such pairs are dropped and the sum
+    redone, so a vertex with nothing else around it gets an exactly zero row.
+    """
+    nv = acc.shape[0]
+    mass = np.bincount(idx, weights=w.T.ravel(), minlength=nv)
+    with np.errstate(invalid="ignore"):
+        suspect = np.abs(acc).sum(axis=1) <= _CANCELLED * mass
+    suspect &= mass > 0
+    if not suspect.any():
+        return
+    near = np.flatnonzero(suspect[f].any(axis=1))  # faces touching those vertices
+    g = f[near]
+    distinct = (g[:, 0] != g[:, 1]) & (g[:, 1] != g[:, 2]) & (g[:, 2] != g[:, 0])
+    near, g = near[distinct], g[distinct]
+    s = np.sort(g, axis=1)
+    even = ((g[:, 0] < g[:, 1]).astype(np.int8) + (g[:, 1] < g[:, 2]) + (g[:, 2] < g[:, 0])) == 2
+    order = np.lexsort((even, s[:, 2], s[:, 1], s[:, 0]))
+    s, even, near = s[order], even[order], near[order]
+    new = np.ones(near.size, dtype=bool)
+    new[1:] = (s[1:] != s[:-1]).any(axis=1)
+    group = np.cumsum(new) - 1
+    n_even = np.bincount(group, weights=even).astype(np.intp)
+    n_odd = np.bincount(group).astype(np.intp) - n_even
+    pairs = np.minimum(n_even, n_odd)[group]
+    start = np.flatnonzero(new)[group]
+    # odd faces come first in each group (False sorts first): rank within each side
+    rank = np.arange(near.size) - start - np.where(even, n_odd[group], 0)
+    cancelled = np.zeros(f.shape[0], dtype=bool)
+    cancelled[near[rank < pairs]] = True
+    if not cancelled.any():
+        return
+    # redo the suspect vertices' sums from the faces that remain
+    keep = np.flatnonzero(suspect[f].any(axis=1) & ~cancelled)
+    acc[suspect] = 0.0
+    for c in range(3):
+        at = f[keep, c]
+        mine = suspect[at]
+        np.add.at(acc, at[mine], w[keep[mine], c, None] * unit[keep[mine]])
 
 
 def _area_weights_per_vertex(mag: FloatArray, exps: IntArray, f: IntArray, nv: int) -> FloatArray:

@@ -264,3 +264,42 @@ def terrain(
     p10, p01, p11 = p00 + 1, p00 + nx, p00 + nx + 1
     f = np.stack([p00, p10, p11, p00, p11, p01], axis=1).reshape(-1, 3)
     return v, f.astype(np.intp)
+
+
+def damaged_model() -> tuple[FloatArray, IntArray]:
+    """Make a ball with two faults to find and fix: a flipped patch and a hole.
+
+    It is [`icosphere(3)`][trinormal.mesh.icosphere] (a unit sphere of 1280
+    triangles) with the faces of one round patch turned over (each one's last
+    two corners swapped, so its normal points inward) and the faces of another,
+    smaller patch removed, together with the vertices only they used. The
+    package ships it as ``trinormal/mesh/data/damaged_ball.obj`` (see
+    [`sample_path`][trinormal.mesh.sample_path]), written by this function.
+
+    Returns
+    -------
+    vertices : ndarray, shape (V, 3)
+    faces : ndarray of int, shape (F, 3)
+
+    Examples
+    --------
+    >>> from trinormal.mesh import check
+    >>> v, f = damaged_model()
+    >>> r = check(v, f)
+    >>> len(r.faces_to_flip), len(r.boundary_edges), r.closed, r.consistent_winding
+    (53, 13, False, False)
+    """
+    v, f = icosphere(3)
+    centre = v[f].mean(axis=1)
+    centre /= np.linalg.norm(centre, axis=1, keepdims=True)
+    toward_viewer = np.array([0.6, -0.64, 0.48])  # the patch faces a default 3D view's camera
+    hole_side = np.array([-0.48, 0.6, 0.64])
+    patch = centre @ (toward_viewer / np.linalg.norm(toward_viewer)) > math.cos(math.radians(24))
+    hole = centre @ (hole_side / np.linalg.norm(hole_side)) > math.cos(math.radians(14))
+    f = f.copy()
+    f[patch] = f[patch][:, [0, 2, 1]]
+    f = f[~hole]
+    used = np.zeros(v.shape[0], dtype=bool)
+    used[f.ravel()] = True
+    renumber = np.cumsum(used) - 1
+    return v[used], renumber[f].astype(np.intp)

@@ -1,11 +1,358 @@
-"""How faces fit together: shared edges, their directions, and winding."""
+"""How faces fit together: shared edges, their directions, and connected pieces.
+
+Every answer here comes from the faces alone (which vertex indices each face
+uses, in which order), never from coordinates. An *edge* is an unordered pair
+of vertices that some face walks from one to the other; a face ``(i, j, k)``
+walks ``i → j``, ``j → k`` and ``k → i``.
+
+* A *boundary* edge is walked by one face only: the rim of a hole or of an
+  open sheet.
+* A *non-manifold* edge is shared by three faces or more: no surface can
+  have a fin like that.
+* A *non-manifold* vertex is where pieces of surface meet at a single point
+  (two cones touching at their tips): its faces fall into more than one fan.
+* In a *consistently wound* piece, every edge shared by two faces is walked
+  once each way.
+
+A face that uses one vertex twice, like ``(4, 4, 7)``, has no edges in this
+sense (it is a degenerate face, reported by `trinormal.mesh.check`): every
+function here leaves it out.
+
+Examples
+--------
+Two triangles glued along the edge 0–2, then a third face on that edge:
+
+>>> boundary_edges([[0, 1, 2], [0, 2, 3]])
+array([[0, 1],
+       [1, 2],
+       [2, 3],
+       [3, 0]])
+>>> non_manifold_edges([[0, 1, 2], [0, 2, 3], [0, 2, 4]])
+array([[0, 2]])
+"""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import numpy.typing as npt
 
-from trinormal.mesh._arrays import IntArray, _check_faces
+from trinormal.mesh._arrays import BoolArray, IntArray, _check_faces
+
+__all__ = [
+    "boundary_edges",
+    "connected_components",
+    "consistent_winding",
+    "duplicate_faces",
+    "inconsistent_edges",
+    "non_manifold_edges",
+    "non_manifold_vertices",
+]
+
+
+def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
+    """Label the connected pieces of the graph on nodes ``0..n-1`` with edges ``a[i]–b[i]``.
+
+    Labels are 0, 1, 2, … in the order of each piece's smallest node. Pure
+    numpy: every root is hooked to the smallest root it touches, then every
+    node is pointed straight at its root, until no edge joins two roots; a
+    handful of rounds on a mesh.
+    """
+    parent = np.arange(n, dtype=np.intp)
+    a = np.asarray(a, dtype=np.intp)
+    b = np.asarray(b, dtype=np.intp)
+    while a.size:
+        ra, rb = parent[a], parent[b]
+        differ = ra != rb
+        if not differ.any():
+            break
+        a, b, ra, rb = a[differ], b[differ], ra[differ], rb[differ]
+        np.minimum.at(parent, np.maximum(ra, rb), np.minimum(ra, rb))
+        while True:  # every node straight to its root (labels only decrease: no cycles)
+            up = parent[parent]
+            if np.array_equal(up, parent):
+                break
+            parent = up
+    roots, labels = np.unique(parent, return_inverse=True)
+    del roots
+    out: IntArray = labels.astype(np.intp)
+    return out
+
+
+@dataclass(frozen=True)
+class _HalfEdges:
+    """Every edge walk of every face with three distinct vertices, grouped by edge.
+
+    Half-edge ``h`` belongs to face ``h // 3`` and runs from corner ``h % 3``
+    to the next corner. ``order`` lists the half-edges sorted by their
+    unordered edge; ``starts`` and ``counts`` delimit each edge's group in it.
+    """
+
+    faces: IntArray
+    clean: BoolArray
+    order: IntArray
+    starts: IntArray
+    counts: IntArray
+
+    @classmethod
+    def of(cls, faces: IntArray) -> _HalfEdges:
+        f = faces
+        clean = (f[:, 0] != f[:, 1]) & (f[:, 1] != f[:, 2]) & (f[:, 2] != f[:, 0])
+        h = np.flatnonzero(np.repeat(clean, 3))
+        a = f.ravel()[h]
+        b = f[:, [1, 2, 0]].ravel()[h]
+        lo, hi = np.minimum(a, b), np.maximum(a, b)
+        nv = int(hi.max()) + 1 if hi.size else 0
+        # one packed key per edge, unless it would overflow: then sort on both columns
+        order = np.argsort(lo * nv + hi) if nv < 2**31 else np.lexsort((hi, lo))
+        lo_s, hi_s = lo[order], hi[order]
+        new = np.ones(order.size, dtype=bool)
+        if order.size:
+            new[1:] = (lo_s[1:] != lo_s[:-1]) | (hi_s[1:] != hi_s[:-1])
+        starts = np.flatnonzero(new)
+        counts = np.diff(np.append(starts, order.size))
+        return cls(f, clean, h[order].astype(np.intp), starts, counts)
+
+    def start(self, h: IntArray) -> IntArray:
+        """Return the vertex each half-edge leaves from."""
+        out: IntArray = self.faces.ravel()[h]
+        return out
+
+    def end(self, h: IntArray) -> IntArray:
+        """Return the vertex each half-edge arrives at."""
+        out: IntArray = self.faces.ravel()[h - h % 3 + (h % 3 + 1) % 3]
+        return out
+
+    def edge_vertices(self, groups: IntArray) -> IntArray:
+        """Return the edges of the given groups as sorted vertex pairs, shape (k, 2)."""
+        h = self.order[self.starts[groups]]
+        a, b = self.start(h), self.end(h)
+        out: IntArray = np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1).reshape(-1, 2)
+        return out
+
+    def pairs(self, groups: IntArray) -> tuple[IntArray, IntArray]:
+        """Neighbouring half-edges within each given group: each joins the next in its group."""
+        first = self.starts[groups]
+        size = self.counts[groups]
+        # position of every half-edge but the last in its group, and its successor
+        offsets = np.repeat(first - np.cumsum(np.append(0, size[:-1] - 1)), size - 1)
+        pos = np.arange(offsets.size) + offsets
+        return self.order[pos], self.order[pos + 1]
+
+    @cached_property
+    def manifold_pairs(self) -> tuple[IntArray, IntArray]:
+        """The two half-edges of every edge shared by exactly two faces."""
+        g = self.starts[self.counts == 2]
+        return self.order[g], self.order[g + 1]
+
+    @cached_property
+    def face_components(self) -> IntArray:
+        """Pieces of faces joined through shared edges; faces left out get -1."""
+        nf = self.faces.shape[0]
+        shared = np.flatnonzero(self.counts >= 2)
+        h1, h2 = self.pairs(shared)
+        label = np.full(nf, -1, dtype=np.intp)
+        kept = np.flatnonzero(self.clean)
+        index = np.full(nf, -1, dtype=np.intp)
+        index[kept] = np.arange(kept.size)
+        label[kept] = _components(kept.size, index[h1 // 3], index[h2 // 3])
+        return label
+
+    def corner_at(self, h: IntArray, vertex: IntArray) -> IntArray:
+        """Return the corner (3 · face + position) of half-edge ``h``'s face at ``vertex``."""
+        nxt = h - h % 3 + (h % 3 + 1) % 3
+        out: IntArray = np.where(self.start(h) == vertex, h, nxt)
+        return out
+
+
+def _half_edges(faces: npt.ArrayLike) -> _HalfEdges:
+    return _HalfEdges.of(_check_faces(faces, None))
+
+
+def boundary_edges(faces: npt.ArrayLike) -> IntArray:
+    """Edges walked by one face only: the rims of holes and of open sheets.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    ndarray of int, shape (B, 2)
+        Each boundary edge as its face walks it, ``(from, to)``, sorted by
+        their vertices. A closed surface has none.
+
+    Examples
+    --------
+    >>> boundary_edges([[0, 1, 2]])
+    array([[0, 1],
+           [1, 2],
+           [2, 0]])
+    >>> from trinormal.mesh import cube
+    >>> boundary_edges(cube()[1]).shape
+    (0, 2)
+    """
+    he = _half_edges(faces)
+    h = he.order[he.starts[he.counts == 1]]
+    a, b = he.start(h), he.end(h)
+    order = np.lexsort((b, a))
+    out: IntArray = np.stack([a[order], b[order]], axis=1).reshape(-1, 2)
+    return out
+
+
+def non_manifold_edges(faces: npt.ArrayLike) -> IntArray:
+    """Edges shared by three faces or more.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    ndarray of int, shape (E, 2)
+        Each such edge once, as ``(smaller, larger)`` vertex index, sorted.
+
+    Examples
+    --------
+    Three pages of a book share its spine, the edge 0–1:
+
+    >>> non_manifold_edges([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+    array([[0, 1]])
+    """
+    he = _half_edges(faces)
+    return he.edge_vertices(np.flatnonzero(he.counts >= 3))
+
+
+def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
+    """Every vertex used by a face with three distinct vertices, and its number of fans."""
+    shared = np.flatnonzero(he.counts >= 2)
+    h1, h2 = he.pairs(shared)
+    a, b = he.start(h1), he.end(h1)
+    # the two faces meet at both ends of the edge: join their corners there
+    c1 = np.concatenate([he.corner_at(h1, a), he.corner_at(h1, b)])
+    c2 = np.concatenate([he.corner_at(h2, a), he.corner_at(h2, b)])
+    corners = np.flatnonzero(np.repeat(he.clean, 3))
+    index = np.full(he.faces.size, -1, dtype=np.intp)
+    index[corners] = np.arange(corners.size)
+    fan = _components(corners.size, index[c1], index[c2])
+    vertex = he.faces.ravel()[corners]
+    pairs = np.unique(np.stack([vertex, fan], axis=1), axis=0)
+    verts, counts = np.unique(pairs[:, 0], return_counts=True)
+    return verts.astype(np.intp), counts
+
+
+def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
+    """Vertices where separate fans of faces meet at a single point.
+
+    Around an ordinary vertex the faces form one fan: each joined to the next
+    through an edge at that vertex. Two cones touching tip to tip, or two
+    cubes sharing one corner, meet at a vertex with two fans.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    ndarray of int, shape (k,)
+        Those vertices, sorted.
+
+    Examples
+    --------
+    Two triangles that touch only at vertex 0 (a bow tie):
+
+    >>> non_manifold_vertices([[0, 1, 2], [0, 3, 4]])
+    array([0])
+    >>> non_manifold_vertices([[0, 1, 2], [0, 2, 3]])
+    array([], dtype=int64)
+    """
+    verts, fans = _fans(_half_edges(faces))
+    out: IntArray = verts[fans > 1]
+    return out
+
+
+def connected_components(faces: npt.ArrayLike) -> IntArray:
+    """Which piece each face belongs to: faces are in one piece when edges join them.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    ndarray of int, shape (F,)
+        Piece numbers 0, 1, 2, … in the order of each piece's first face; -1
+        for a face that uses one vertex twice (it has no edges to join by).
+
+    Examples
+    --------
+    Two separate triangles, and a third glued to the first:
+
+    >>> connected_components([[0, 1, 2], [3, 4, 5], [0, 2, 6]])
+    array([0, 1, 0])
+    """
+    return _half_edges(faces).face_components
+
+
+def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
+    """Faces that repeat an earlier face's three vertices.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle.
+
+    Returns
+    -------
+    same : ndarray of int
+        Faces that repeat an earlier face wound the same way (``(1, 2, 0)``
+        repeats ``(0, 1, 2)``).
+    reversed : ndarray of int
+        Faces that repeat an earlier face only wound the other way
+        (``(0, 2, 1)`` after ``(0, 1, 2)``): together they are a sheet with
+        no inside, whose normals cancel.
+
+    Every face after the first with its three vertices is in exactly one of
+    the two lists. Faces that use a vertex twice are left out.
+
+    Examples
+    --------
+    >>> duplicate_faces([[0, 1, 2], [1, 2, 0], [0, 2, 1], [2, 3, 4]])
+    (array([1]), array([2]))
+    """
+    f = _check_faces(faces, None)
+    return _duplicates(f)
+
+
+def _duplicates(f: IntArray) -> tuple[IntArray, IntArray]:
+    a, b, c = f[:, 0], f[:, 1], f[:, 2]
+    clean = np.flatnonzero((a != b) & (b != c) & (c != a))
+    s = np.sort(f[clean], axis=1)
+    fc = f[clean]
+    even = (
+        (fc[:, 0] < fc[:, 1]).astype(np.int8) + (fc[:, 1] < fc[:, 2]) + (fc[:, 2] < fc[:, 0])
+    ) == 2
+    order = np.lexsort((clean, even, s[:, 2], s[:, 1], s[:, 0]))
+    s, even, idx = s[order], even[order], clean[order]
+    same_key = np.zeros(idx.size, dtype=bool)
+    if idx.size:
+        same_key[1:] = (s[1:] == s[:-1]).all(axis=1)
+    same_side = same_key.copy()
+    same_side[1:] &= even[1:] == even[:-1]
+    same = np.sort(idx[same_side])
+    # the first face of its winding is reversed when the group began earlier (other winding)
+    key_start = np.flatnonzero(~same_key)
+    key_id = np.cumsum(~same_key) - 1
+    group_first = np.minimum.reduceat(idx, key_start) if idx.size else idx
+    lead = ~same_side & (idx > group_first[key_id])
+    reversed_ = np.sort(idx[lead])
+    return same.astype(np.intp), reversed_.astype(np.intp)
 
 
 def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:

@@ -1,0 +1,500 @@
+"""Tests of trinormal.mesh.check, fix_winding and the topology functions.
+
+Every count is compared with a second computation written here in plain
+Python (dictionaries, a union-find, a breadth-first walk), on small meshes
+with known faults and on random ones.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+from collections import Counter, defaultdict
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from trinormal import mesh
+
+DATA = Path(__file__).parent / "data" / "meshes"
+
+pytestmark = pytest.mark.filterwarnings("error")
+
+
+# --------------------------------------------------------------------------- a reference in plain Python
+
+
+def clean(face):
+    return len(set(face)) == 3
+
+
+def half_edges(faces):
+    """{unordered edge: [(face, (from, to)), ...]} over faces with three distinct vertices."""
+    out = defaultdict(list)
+    for i, f in enumerate(faces):
+        if not clean(f):
+            continue
+        for k in range(3):
+            a, b = f[k], f[(k + 1) % 3]
+            out[frozenset((a, b))].append((i, (a, b)))
+    return out
+
+
+class UnionFind:
+    def __init__(self):
+        self.parent = {}
+
+    def find(self, x):
+        self.parent.setdefault(x, x)
+        while self.parent[x] != x:
+            self.parent[x] = self.parent[self.parent[x]]
+            x = self.parent[x]
+        return x
+
+    def union(self, a, b):
+        ra, rb = self.find(a), self.find(b)
+        if ra != rb:
+            self.parent[max(ra, rb)] = min(ra, rb)
+
+
+def reference(vertices, faces):
+    """Every count of the report, computed the slow, obvious way."""
+    faces = [tuple(int(i) for i in f) for f in faces]
+    he = half_edges(faces)
+    boundary = sorted(walks[0][1] for walks in he.values() if len(walks) == 1)
+    non_manifold = sorted(tuple(sorted(e)) for e, walks in he.items() if len(walks) >= 3)
+    inconsistent = sorted(
+        tuple(sorted(e))
+        for e, walks in he.items()
+        if len(walks) == 2 and walks[0][1] == walks[1][1]
+    )
+    # pieces: faces joined through shared edges
+    uf = UnionFind()
+    for i, f in enumerate(faces):
+        if clean(f):
+            uf.find(i)
+    for walks in he.values():
+        for (i, _), (j, _) in itertools.pairwise(walks):
+            uf.union(i, j)
+    roots = {}
+    component = []
+    for i, f in enumerate(faces):
+        if not clean(f):
+            component.append(-1)
+            continue
+        r = uf.find(i)
+        roots.setdefault(r, len(roots))
+        component.append(roots[r])
+    # fans around each vertex: corners joined through shared edges at that vertex
+    fans = UnionFind()
+    for walks in he.values():
+        for (i, (a, b)), (j, _) in itertools.pairwise(walks):
+            for vtx in (a, b):
+                fans.union((i, vtx), (j, vtx))
+    fan_roots = defaultdict(set)
+    for i, f in enumerate(faces):
+        if clean(f):
+            for vtx in f:
+                fan_roots[vtx].add(fans.find((i, vtx)))
+    non_manifold_vertices = sorted(v for v, r in fan_roots.items() if len(r) > 1)
+    # duplicates: the same three vertices as an earlier face
+    seen = {}
+    same, rev = [], []
+    for i, f in enumerate(faces):
+        if not clean(f):
+            continue
+        key = frozenset(f)
+        rotations = {f, f[1:] + f[:1], f[2:] + f[:2]}
+        earlier = seen.setdefault(key, [])
+        if any(g in rotations for g in earlier):
+            same.append(i)
+        elif earlier:
+            rev.append(i)
+        earlier.append(f)
+    used = {i for f in faces for i in f}
+    unused = [i for i in range(len(vertices)) if i not in used]
+    v = [tuple(map(float, p)) for p in vertices]
+    coincident = [i for i, f in enumerate(faces) if len({v[f[0]], v[f[1]], v[f[2]]}) < 3]
+    return {
+        "boundary_edges": boundary,
+        "non_manifold_edges": non_manifold,
+        "inconsistent_edges": inconsistent,
+        "face_component": component,
+        "non_manifold_vertices": non_manifold_vertices,
+        "duplicate_faces": same,
+        "reversed_duplicate_faces": rev,
+        "unused_vertices": unused,
+        "coincident_faces": coincident,
+    }
+
+
+def orient_bfs(faces, component):
+    """Wind each piece like its first face by a breadth-first walk; None if it cannot be."""
+    faces = [tuple(int(i) for i in f) for f in faces]
+    he = half_edges(faces)
+    neighbours = defaultdict(list)
+    for walks in he.values():
+        if len(walks) == 2:
+            (i, di), (j, dj) = walks
+            neighbours[i].append((j, di == dj))
+            neighbours[j].append((i, di == dj))
+    flip = {}
+    for start in range(len(faces)):
+        if component[start] < 0 or start in flip:
+            continue
+        flip[start] = False
+        queue = [start]
+        while queue:
+            i = queue.pop()
+            for j, same_way in neighbours[i]:
+                want = flip[i] ^ same_way
+                if j not in flip:
+                    flip[j] = want
+                    queue.append(j)
+                elif flip[j] != want:
+                    return None  # not orientable
+    return flip
+
+
+def assert_matches_reference(v, f):
+    r = mesh.check(v, f)
+    ref = reference(v, f)
+    assert r.boundary_edges.tolist() == [list(e) for e in ref["boundary_edges"]]
+    assert r.non_manifold_edges.tolist() == [list(e) for e in ref["non_manifold_edges"]]
+    assert r.inconsistent_edges.tolist() == [list(e) for e in ref["inconsistent_edges"]]
+    assert r.face_component.tolist() == ref["face_component"]
+    assert r.non_manifold_vertices.tolist() == ref["non_manifold_vertices"]
+    assert r.duplicate_faces.tolist() == ref["duplicate_faces"]
+    assert r.reversed_duplicate_faces.tolist() == ref["reversed_duplicate_faces"]
+    assert r.unused_vertices.tolist() == ref["unused_vertices"]
+    assert r.coincident_faces.tolist() == ref["coincident_faces"]
+    assert len(r.components) == max(ref["face_component"], default=-1) + 1
+    assert (r.n_vertices, r.n_faces) == (len(v), len(f))
+    return r
+
+
+# --------------------------------------------------------------------------- the faults file
+
+
+def test_every_fault_is_found_once_in_the_faults_file():
+    m = mesh.read_mesh(DATA / "faults.obj")
+    r = assert_matches_reference(m.vertices, m.faces)
+    # the file's comments say what is in it; the report must say the same
+    assert r.collinear_faces.tolist() == [8]
+    assert r.coincident_faces.tolist() == [9, 10]
+    assert r.degenerate_faces.tolist() == [8, 9, 10]
+    assert r.duplicate_faces.tolist() == [6]
+    assert r.reversed_duplicate_faces.tolist() == [7]
+    assert r.unused_vertices.tolist() == [17]
+    assert r.non_manifold_edges.tolist() == [[0, 2], [10, 11], [10, 12], [11, 12]]
+    assert r.non_manifold_vertices.tolist() == [5]
+    assert len(r.boundary_edges) == 16
+    assert len(r.components) == 5
+    assert r.face_component[10] == -1
+    text = r.summary()
+    for words in (
+        "3 degenerate faces",
+        "1 face repeats another face exactly",
+        "wound the other way",
+        "1 vertex is not used",
+        "16 edges belong",
+        "4 edges are shared by three faces",
+        "1 vertex joins",
+    ):
+        assert words in " ".join(text.split()), words
+
+
+def test_the_collinear_verdict_is_the_cores_and_scale_free():
+    v = np.array([[0, 0, 0], [1, 0, 0], [2, 1e-13, 0], [0, 1, 0]], dtype=float)
+    f = [[0, 1, 2], [0, 1, 3]]
+    for scale in (1e-150, 1.0, 1e150):
+        r = mesh.check(v * scale, f)
+        assert r.collinear_faces.tolist() == [0]
+        assert r.coincident_faces.tolist() == []
+    from trinormal import triangle_normal
+
+    assert triangle_normal(*v[[0, 1, 2]].tolist()).degenerate
+    assert not triangle_normal(*v[[0, 1, 3]].tolist()).degenerate
+
+
+# --------------------------------------------------------------------------- random meshes vs the reference
+
+
+@st.composite
+def messy_meshes(draw):
+    """Small meshes with every kind of fault: flipped, duplicated, missing, glued faces."""
+    nv = draw(st.integers(3, 9))
+    faces = draw(st.lists(st.tuples(*[st.integers(0, nv - 1)] * 3), min_size=0, max_size=14))
+    rng = np.random.default_rng(draw(st.integers(0, 2**32 - 1)))
+    v = rng.normal(size=(nv, 3))
+    return v, np.array(faces, dtype=np.intp).reshape(-1, 3)
+
+
+@settings(max_examples=300, deadline=None)
+@given(messy_meshes())
+def test_report_matches_the_reference_on_random_meshes(vf):
+    v, f = vf
+    assert_matches_reference(v, f)
+
+
+def broken_sphere(seed: int, holes: int = 0):
+    v, f = mesh.icosphere(2)
+    rng = np.random.default_rng(seed)
+    f = f.copy()
+    flip = rng.random(len(f)) < 0.3
+    f[flip] = f[flip][:, [0, 2, 1]]
+    if holes:
+        f = np.delete(f, rng.choice(len(f), holes, replace=False), axis=0)
+    return v, f[rng.permutation(len(f))]
+
+
+@pytest.mark.parametrize("seed", range(5))
+@pytest.mark.parametrize("holes", [0, 3])
+def test_report_matches_the_reference_on_damaged_spheres(seed, holes):
+    v, f = broken_sphere(seed, holes)
+    r = assert_matches_reference(v, f)
+    assert not r.consistent_winding
+    assert r.closed == (holes == 0)
+
+
+# --------------------------------------------------------------------------- fix_winding
+
+
+def closed_models():
+    yield "cube", mesh.cube()
+    yield "icosphere", mesh.icosphere(2)
+    yield "torus", mesh.torus(n_major=12, n_minor=6)
+    yield "uv_sphere", mesh.uv_sphere(10, 6)
+    v, f = mesh.cube()
+    yield "two cubes", (np.vstack([v, v + np.array([5.0, 0, 0])]), np.vstack([f, f + 8]))
+
+
+@pytest.mark.parametrize("name,vf", list(closed_models()))
+@pytest.mark.parametrize("seed", range(4))
+def test_fix_winding_makes_closed_models_consistent_and_outward(name, vf, seed):
+    v, f = vf
+    rng = np.random.default_rng(seed)
+    bad = f.copy()
+    flip = rng.random(len(f)) < 0.4
+    bad[flip] = bad[flip][:, [0, 2, 1]]
+    fixed, flipped = mesh.fix_winding(v, bad)
+    assert mesh.consistent_winding(fixed)
+    r = mesh.check(v, fixed)
+    assert r.consistent_winding and r.closed and r.outward
+    for c in r.components:
+        assert c.volume is not None and c.volume > 0
+    # only the reported faces changed, each turned over with its first corner kept
+    changed = np.flatnonzero((fixed != bad).any(axis=1))
+    assert set(changed) <= set(flipped.tolist())
+    assert (fixed[flipped] == bad[flipped][:, [0, 2, 1]]).all()
+    assert mesh.check(v, bad).faces_to_flip.tolist() == flipped.tolist()
+    # the same faces as winding each piece like the original, outward model
+    assert (np.sort(fixed, axis=1) == np.sort(bad, axis=1)).all()
+    assert (fixed == f).all()
+    # idempotent
+    again, none = mesh.fix_winding(v, fixed)
+    assert (again == fixed).all() and none.size == 0
+
+
+@pytest.mark.parametrize("name,vf", list(closed_models()))
+def test_fix_winding_never_changes_a_good_mesh(name, vf):
+    v, f = vf
+    out, flipped = mesh.fix_winding(v, f)
+    assert flipped.size == 0 and (out == f).all()
+    assert mesh.check(v, f).ok
+
+
+@settings(max_examples=200, deadline=None)
+@given(messy_meshes())
+def test_fix_winding_agrees_with_a_breadth_first_walk(vf):
+    v, f = vf
+    fixed, flipped = mesh.fix_winding(v, f)
+    r = mesh.check(v, f)
+    ref = reference(v, f)
+    walk = orient_bfs(fixed, ref["face_component"])
+    pieces = defaultdict(list)
+    for i, c in enumerate(ref["face_component"]):
+        if c >= 0:
+            pieces[c].append(i)
+    for c, members in pieces.items():
+        if not r.components[c].orientable:
+            assert not set(flipped.tolist()) & set(members)
+            continue
+        # after the fix, a walk from any face turns nothing over within an orientable piece
+        assert walk is None or not any(walk[i] for i in members) or all(walk[i] for i in members)
+    fixed_report = mesh.check(v, fixed)
+    assert all(c.consistent for c in fixed_report.components if c.orientable)
+    again, none = mesh.fix_winding(v, fixed)
+    assert none.size == 0 and (again == fixed).all()
+
+
+def test_fix_winding_flips_the_fewest_faces_on_an_open_sheet():
+    v, f = mesh.terrain(6, 6)
+    bad = f.copy()
+    bad[:5] = bad[:5, [0, 2, 1]]
+    fixed, flipped = mesh.fix_winding(v, bad)
+    assert flipped.tolist() == [0, 1, 2, 3, 4]
+    assert (fixed == f).all()
+
+
+def test_a_mobius_strip_is_reported_and_left_alone():
+    n = 12
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    v = []
+    for s in (-0.3, 0.3):
+        v.append(
+            np.stack(
+                [
+                    (1 + s * np.cos(t / 2)) * np.cos(t),
+                    (1 + s * np.cos(t / 2)) * np.sin(t),
+                    s * np.sin(t / 2),
+                ],
+                axis=1,
+            )
+        )
+    v = np.vstack(v)
+    f = []
+    for i in range(n):
+        j = (i + 1) % n
+        a, b = i, n + i
+        c, d = (j, n + j) if j else (n + j, j)  # the half twist joins the strip's two edges
+        f += [(a, c, d), (a, d, b)]
+    f = np.array(f)
+    r = mesh.check(v, f)
+    assert len(r.components) == 1 and not r.components[0].orientable
+    assert "Möbius" in r.summary()
+    out, flipped = mesh.fix_winding(v, f)
+    assert flipped.size == 0 and (out == f).all()
+
+
+# --------------------------------------------------------------------------- vertex normals that cancel
+
+
+def test_a_face_and_its_reversed_copy_give_zero_vertex_normals():
+    v = np.array(
+        [[0.1, 0.2, 0.3], [1.7, 0.1, 0.2], [0.3, 1.9, 0.7], [5, 5, 5], [6, 5, 5], [5, 6, 5]]
+    )
+    for reversed_copy in ([0, 2, 1], [2, 1, 0], [1, 0, 2]):  # every way of writing it reversed
+        f = np.array([[0, 1, 2], reversed_copy, [3, 4, 5]])
+        for weighting in mesh.WEIGHTINGS:
+            n = mesh.vertex_normals(v, f, weighting)
+            assert (n[:3] == 0.0).all(), (reversed_copy, weighting, n[:3])
+            assert np.allclose(np.linalg.norm(n[3:], axis=1), 1.0)
+
+
+def test_a_reversed_copy_inside_a_mesh_changes_nothing_but_rounding():
+    v, f = mesh.icosphere(1)
+    extra = f[[5, 17]][:, [1, 0, 2]]  # two faces glued back on, reversed
+    g = np.vstack([f, extra])
+    plain = mesh.vertex_normals(v, np.delete(f, [5, 17], axis=0))
+    both = mesh.vertex_normals(v, np.vstack([np.delete(f, [5, 17], axis=0), f[[5, 17]], extra]))
+    np.testing.assert_allclose(both, plain, rtol=0, atol=1e-15)
+    assert mesh.check(v, g).reversed_duplicate_faces.tolist() == [80, 81]
+
+
+def test_only_cancelled_pairs_are_dropped():
+    # a face with two copies and one reversed copy: one pair cancels, one copy remains
+    v = np.array([[0.1, 0.2, 0.3], [1.7, 0.1, 0.2], [0.3, 1.9, 0.7]])
+    n = mesh.vertex_normals(v, [[0, 1, 2], [1, 2, 0], [0, 2, 1]])
+    np.testing.assert_allclose(
+        n, np.repeat(mesh.face_normals(v, [[0, 1, 2]]), 3, axis=0), atol=1e-15
+    )
+
+
+# --------------------------------------------------------------------------- the report as data and words
+
+
+def test_to_dict_is_json_and_matches_the_fields():
+    v, f = mesh.damaged_model()
+    r = mesh.check(v, f)
+    d = json.loads(json.dumps(r.to_dict()))
+    assert d["n_faces"] == len(f) and d["n_vertices"] == len(v)
+    assert d["faces_to_flip"] == r.faces_to_flip.tolist()
+    assert d["boundary_edges"] == r.boundary_edges.tolist()
+    assert d["components"][0]["faces_to_flip"] == len(r.faces_to_flip)
+    assert d["closed"] is False and d["consistent_winding"] is False and d["ok"] is False
+
+
+def test_the_damaged_model_has_exactly_a_flipped_patch_and_a_hole():
+    v, f = mesh.damaged_model()
+    r = mesh.check(v, f)
+    assert len(r.components) == 1
+    assert not r.closed and not r.consistent_winding
+    for name in (
+        "degenerate_faces",
+        "duplicate_faces",
+        "reversed_duplicate_faces",
+        "non_manifold_edges",
+        "non_manifold_vertices",
+        "unused_vertices",
+    ):
+        assert len(getattr(r, name)) == 0, name
+    # the flipped faces point inward (the ball is centred on the origin)
+    centres = v[f].mean(axis=1)
+    inward = np.einsum("ij,ij->i", mesh.face_normals(v, f), centres) < 0
+    assert r.faces_to_flip.tolist() == np.flatnonzero(inward).tolist()
+    fixed, _ = mesh.fix_winding(v, f)
+    assert (np.einsum("ij,ij->i", mesh.face_normals(v, fixed), centres) > 0).all()
+    # one hole: its boundary edges form a single loop
+    nxt = dict(r.boundary_edges.tolist())
+    start = next(iter(nxt))
+    loop, k = [start], nxt[start]
+    while k != start:
+        loop.append(k)
+        k = nxt[k]
+    assert len(loop) == len(r.boundary_edges)
+
+
+def test_the_shipped_sample_is_what_damaged_model_writes(tmp_path):
+    v, f = mesh.damaged_model()
+    mesh.write_mesh(tmp_path / "damaged_ball.obj", v, f)
+    assert (tmp_path / "damaged_ball.obj").read_bytes() == Path(mesh.sample_path()).read_bytes()
+
+
+def test_summary_of_an_inside_out_cube():
+    v, f = mesh.cube()
+    r = mesh.check(v, f[:, [0, 2, 1]])
+    assert r.consistent_winding and r.closed and not r.outward
+    assert r.components[0].outward is False and r.components[0].volume == -8.0
+    assert "inside out" in r.summary()
+    assert r.faces_to_flip.tolist() == list(range(12))
+
+
+def test_only_the_inside_out_piece_is_turned_over():
+    v, f = mesh.cube()
+    v2, f2 = np.vstack([v, v + np.array([5.0, 0, 0])]), np.vstack([f, f[:, [0, 2, 1]] + 8])
+    r = mesh.check(v2, f2)
+    assert [c.outward for c in r.components] == [True, False]
+    fixed, flipped = mesh.fix_winding(v2, f2)
+    assert flipped.tolist() == list(range(12, 24))
+    assert (fixed == np.vstack([f, f + 8])).all()
+
+
+def test_empty_mesh():
+    r = mesh.check(np.empty((0, 3)), np.empty((0, 3), dtype=int))
+    assert r.n_faces == 0 and r.components == ()
+    out, flipped = mesh.fix_winding(np.empty((0, 3)), np.empty((0, 3), dtype=int))
+    assert out.shape == (0, 3) and flipped.size == 0
+
+
+def test_bad_arrays_name_the_row():
+    with pytest.raises(ValueError, match="faces row 1 refers to vertex 9"):
+        mesh.check(np.zeros((3, 3)), [[0, 1, 2], [0, 1, 9]])
+    with pytest.raises(ValueError, match="vertices row 2: y is NaN"):
+        mesh.fix_winding([[0, 0, 0], [1, 0, 0], [0, np.nan, 0]], [[0, 1, 2]])
+
+
+def test_topology_functions_agree_with_the_report():
+    m = mesh.read_mesh(DATA / "faults.obj")
+    r = mesh.check(m.vertices, m.faces)
+    assert (mesh.boundary_edges(m.faces) == r.boundary_edges).all()
+    assert (mesh.non_manifold_edges(m.faces) == r.non_manifold_edges).all()
+    assert (mesh.non_manifold_vertices(m.faces) == r.non_manifold_vertices).all()
+    assert (mesh.connected_components(m.faces) == r.face_component).all()
+    same, rev = mesh.duplicate_faces(m.faces)
+    assert (same == r.duplicate_faces).all() and (rev == r.reversed_duplicate_faces).all()
+    counts = Counter(map(tuple, m.faces.tolist()))
+    assert counts[(10, 11, 12)] == 1  # the exact copy is written rotated in the file

@@ -1,0 +1,312 @@
+"""Tests of trinormal.mesh.io: files written by hand (and binary ones packed here with struct)."""
+
+from __future__ import annotations
+
+import struct
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from trinormal import mesh
+from trinormal.mesh import MeshFileError
+
+DATA = Path(__file__).parent / "data" / "meshes"
+BAD = DATA / "bad"
+
+pytestmark = pytest.mark.filterwarnings("error")
+
+
+# --------------------------------------------------------------------------- as stored
+
+
+def test_obj_quads_split_as_fans_from_their_first_corner_in_file_order():
+    m = mesh.read_mesh(DATA / "open_box.obj")
+    assert m.vertices.tolist() == [
+        [0, 0, 0],
+        [1, 0, 0],
+        [1, 1, 0],
+        [0, 1, 0],
+        [0, 0, 1],
+        [1, 0, 1],
+        [1, 1, 1],
+        [0, 1, 1],
+    ]
+    # f 1 4 3 2 / 1 2 6 5 / 2 3 7 6 / 3 4 8 7 / 1 4 8 5, each (a, b, c), (a, c, d), 0-based
+    assert m.faces.tolist() == [
+        [0, 3, 2], [0, 2, 1],
+        [0, 1, 5], [0, 5, 4],
+        [1, 2, 6], [1, 6, 5],
+        [2, 3, 7], [2, 7, 6],
+        [0, 3, 7], [0, 7, 4],
+    ]  # fmt: skip
+    assert m.source_faces.tolist() == [0, 0, 1, 1, 2, 2, 3, 3, 4, 4]
+    assert (m.format, m.encoding, m.n_polygons, m.split_polygons) == ("obj", "ascii", 5, 5)
+    assert "5 polygons with more than three corners split into 10 triangles" in m.describe()
+
+
+def test_open_box_report_names_its_two_faults():
+    m = mesh.read_mesh(DATA / "open_box.obj")
+    r = mesh.check(m.vertices, m.faces)
+    # the rim of the missing top, as the side faces walk it (the -x side is turned over)
+    assert r.boundary_edges.tolist() == [[5, 4], [6, 5], [7, 4], [7, 6]]
+    assert r.faces_to_flip.tolist() == [8, 9]  # the two halves of the -x quad
+    assert not r.closed and not r.consistent_winding
+
+
+def test_ply_polygons_keep_file_order_and_other_elements_are_skipped():
+    m = mesh.read_mesh(DATA / "mixed_polygons.ply")
+    assert m.vertices.tolist() == [
+        [0, 0, 0],
+        [1, 0, 0],
+        [1.5, 1, 0],
+        [0.5, 1.5, 0],
+        [-0.5, 1, 0],
+        [0, -1, 0],
+        [1, -1, 0],
+    ]
+    # pentagon 0 1 2 3 4, triangle 0 5 1, quad 1 5 6 2
+    assert m.faces.tolist() == [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 5, 1], [1, 5, 6], [1, 6, 2]]
+    assert m.source_faces.tolist() == [0, 0, 0, 1, 2, 2]
+    assert (m.encoding, m.n_polygons, m.split_polygons) == ("ascii", 3, 2)
+
+
+def pack_ply(order: str, fmt: str) -> bytes:
+    """The mixed_polygons.ply content, packed in binary with struct (not with our writer)."""
+    header = (
+        "ply\n"
+        f"format {fmt} 1.0\n"
+        "element vertex 7\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\n"
+        "element face 3\nproperty list uchar int vertex_indices\nproperty uchar flags\n"
+        "element edge 1\nproperty int vertex1\nproperty int vertex2\n"
+        "end_header\n"
+    ).encode()
+    verts = [(0, 0, 0), (1, 0, 0), (1.5, 1, 0), (0.5, 1.5, 0), (-0.5, 1, 0), (0, -1, 0), (1, -1, 0)]
+    body = b"".join(struct.pack(order + "fffB", *p, 255) for p in verts)
+    for poly in ([0, 1, 2, 3, 4], [0, 5, 1], [1, 5, 6, 2]):
+        body += struct.pack(f"{order}B{len(poly)}iB", len(poly), *poly, 7)
+    body += struct.pack(order + "ii", 0, 1)
+    return header + body
+
+
+@pytest.mark.parametrize("order,fmt", [("<", "binary_little_endian"), (">", "binary_big_endian")])
+def test_binary_ply_reads_like_the_ascii_file(order, fmt):
+    text = mesh.read_mesh(DATA / "mixed_polygons.ply")
+    m = mesh.parse_mesh(pack_ply(order, fmt), "ply", "packed.ply")
+    assert m.encoding == "binary"
+    assert (m.vertices == text.vertices).all()
+    assert (m.faces == text.faces).all()
+    assert (m.source_faces == text.source_faces).all()
+
+
+def test_binary_ply_of_triangles_only_is_read_in_one_go():
+    v, f = mesh.icosphere(1)
+    header = (
+        f"ply\nformat binary_little_endian 1.0\nelement vertex {len(v)}\n"
+        "property double x\nproperty double y\nproperty double z\n"
+        f"element face {len(f)}\nproperty list uchar uint vertex_indices\nend_header\n"
+    ).encode()
+    body = v.astype("<f8").tobytes() + b"".join(struct.pack("<B3I", 3, *t) for t in f.tolist())
+    m = mesh.parse_mesh(header + body, "ply")
+    assert (m.vertices == v).all() and (m.faces == f).all()
+
+
+def tetra_corners():
+    m = mesh.read_mesh(DATA / "tetra_flipped.stl")
+    return m.vertices[m.faces]
+
+
+def test_ascii_stl_corners_merge_by_exact_equality_in_order_of_first_use():
+    m = mesh.read_mesh(DATA / "tetra_flipped.stl")
+    assert (m.format, m.encoding) == ("stl", "ascii")
+    assert m.vertices.tolist() == [[0, 0, 0], [0, 1, 0], [1, 0, 0], [0, 0, 1]]
+    assert m.faces.tolist() == [[0, 1, 2], [0, 2, 3], [0, 1, 3], [2, 1, 3]]
+    r = mesh.check(m.vertices, m.faces)
+    assert r.closed and r.faces_to_flip.tolist() == [2]
+
+
+def pack_stl(corners: np.ndarray, header: bytes = b"solid (a binary file whose header says solid)"):
+    out = header.ljust(80, b"\0") + struct.pack("<I", len(corners))
+    for tri in corners.tolist():
+        out += (
+            struct.pack("<3f", 0, 0, 0)
+            + struct.pack("<9f", *(x for corner in tri for x in corner))
+            + b"\0\0"
+        )
+    return out
+
+
+def test_binary_stl_with_a_solid_header_is_read_as_binary():
+    m = mesh.parse_mesh(pack_stl(tetra_corners()), "stl", "tetra.stl")
+    text = mesh.read_mesh(DATA / "tetra_flipped.stl")
+    assert m.encoding == "binary"
+    assert (m.vertices == text.vertices).all() and (m.faces == text.faces).all()
+
+
+def test_stl_minus_zero_is_zero_and_nearby_points_stay_apart():
+    corners = np.array(
+        [[[0.0, 0, 0], [1, 0, 0], [0, 1, 0]], [[-0.0, 0, 0], [0, 1, 0], [1, 2**-20, 0]]]
+    )
+    m = mesh.parse_mesh(pack_stl(corners), "stl")
+    assert m.faces.tolist() == [[0, 1, 2], [0, 2, 3]]  # -0.0 is the vertex 0; 1+2**-20 is new
+    assert len(m.vertices) == 4
+
+
+def test_stl_and_obj_of_one_model_have_the_same_report(tmp_path):
+    v, f = mesh.damaged_model()
+    mesh.write_mesh(tmp_path / "ball.stl", v, f)
+    stl = mesh.read_mesh(tmp_path / "ball.stl")
+    obj = mesh.read_mesh(mesh.sample_path())
+    assert stl.vertices.shape == obj.vertices.shape
+    assert (stl.vertices[stl.faces] == obj.vertices[obj.faces].astype(np.float32)).all()
+    a, b = mesh.check(stl.vertices, stl.faces), mesh.check(obj.vertices, obj.faces)
+    for key in ("n_vertices", "n_faces", "faces_to_flip", "components", "closed"):
+        assert (
+            getattr(a, key) == getattr(b, key)
+            if key != "faces_to_flip"
+            else (a.faces_to_flip == b.faces_to_flip).all()
+        )
+    assert len(a.boundary_edges) == len(b.boundary_edges)
+
+
+def test_crlf_and_continued_lines(tmp_path):
+    m = mesh.read_mesh(DATA / "crlf.obj")
+    assert m.faces.tolist() == [[0, 1, 2]]
+    m = mesh.parse_mesh(b"v 0 0 0\nv 1 0 \\\n 0\nv 0 1 0\nf 1 2 \\\n3\n", "obj")
+    assert m.vertices.tolist() == [[0, 0, 0], [1, 0, 0], [0, 1, 0]] and m.faces.tolist() == [
+        [0, 1, 2]
+    ]
+
+
+def test_obj_negative_indices_count_back_from_the_latest_vertex():
+    m = mesh.parse_mesh(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 1 1 0\nf -3 -1 -2\n", "obj")
+    assert m.faces.tolist() == [[0, 1, 2], [1, 3, 2]]
+
+
+# --------------------------------------------------------------------------- round trips
+
+
+@pytest.mark.parametrize(
+    "fmt,enc",
+    [("obj", None), ("stl", "binary"), ("stl", "ascii"), ("ply", "binary"), ("ply", "ascii")],
+)
+@pytest.mark.parametrize(
+    "source", ["open_box.obj", "tetra_flipped.stl", "mixed_polygons.ply", "damaged"]
+)
+def test_read_fix_write_read(tmp_path, fmt, enc, source):
+    m = mesh.read_mesh(mesh.sample_path() if source == "damaged" else DATA / source)
+    fixed, _ = mesh.fix_winding(m.vertices, m.faces)
+    path = tmp_path / f"out.{fmt}"
+    mesh.write_mesh(path, m.vertices, fixed, encoding=enc)
+    back = mesh.read_mesh(path)
+    assert back.encoding == (enc or "ascii")
+    if fmt == "stl":  # corners merged again: the same triangles, numbered by first use
+        want = m.vertices[fixed]
+        if enc == "binary":
+            want = want.astype(np.float32)
+        assert (back.vertices[back.faces] == want).all()
+    else:
+        assert (back.vertices == m.vertices).all() and (back.faces == fixed).all()
+    r = mesh.check(back.vertices, back.faces)
+    assert r.faces_to_flip.size == 0
+    assert r.consistent_winding
+
+
+def test_text_files_keep_every_digit(tmp_path):
+    v = np.array([[0.1, 1 / 3, -2.5e-300], [1e300, np.nextafter(1, 2), -0.0], [5e-324, 7, 8]])
+    for fmt, enc in (("obj", None), ("ply", "ascii"), ("ply", "binary")):
+        mesh.write_mesh(tmp_path / f"x.{fmt}", v, [[0, 1, 2]], encoding=enc)
+        back = mesh.read_mesh(tmp_path / f"x.{fmt}")
+        assert back.vertices.tobytes() == v.tobytes(), fmt
+
+
+# --------------------------------------------------------------------------- bad files
+
+
+@pytest.mark.parametrize(
+    "name,message",
+    [
+        ("bad_number.obj", r"bad_number\.obj, line 2: 'zero' is not a number"),
+        ("bad_index.obj", r"bad_index\.obj, line 4: face 1 refers to vertex 4, but the file has 3"),
+        ("not_a_mesh.obj", r"not_a_mesh\.obj, line 1: 'Hello,' is not an OBJ statement"),
+        ("two_corners.stl", r"two_corners\.stl, line 6: the facet starting at line 3 has 2"),
+        (
+            "truncated.stl",
+            r"truncated\.stl: not an STL file: .* 3 triangles would have 234 bytes, not 184",
+        ),
+        ("png_renamed.ply", r"png_renamed\.ply, line 1: not a PLY file"),
+        (
+            "bad_index.ply",
+            r"bad_index\.ply: face 0 refers to vertex 7, but the valid vertices are 0 to 2",
+        ),
+    ],
+)
+def test_bad_files_get_one_clear_error(name, message):
+    with pytest.raises(MeshFileError, match=message) as err:
+        mesh.read_mesh(BAD / name)
+    assert isinstance(err.value, ValueError)
+    assert err.value.path.endswith(name)
+    assert "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize(
+    "data,fmt,message",
+    [
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n",
+            "obj",
+            "line 4: a face needs at least three corners",
+        ),
+        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "obj", "line 4: vertex numbers start at 1"),
+        (b"v 0 0 nan\n", "obj", "line 1: 'nan' is not a finite number"),
+        (b"v 0 0\n", "obj", "line 1: a vertex needs three coordinates"),
+        (b"# nothing\n", "obj", "no vertices and no faces"),
+        (b"v 0 0 0\0\n", "obj", "line 1: not a text OBJ file"),
+        (
+            b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n",
+            "stl",
+            "line 5: the file ends inside a facet",
+        ),
+        (
+            b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 inf\n",
+            "stl",
+            "line 4: 'inf' is not a finite number",
+        ),
+        (
+            b"ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nend_header\n0\n1\n",
+            "ply",
+            "no 'y' property",
+        ),
+        (
+            b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            b"property float z\nend_header\n0 0 0\n1 0 0\n",
+            "ply",
+            "line 9: the file ends after 2 of 3",
+        ),
+        (
+            b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+            b"property float z\nend_header\n0 zero 0\n",
+            "ply",
+            "line 8: 'zero' is not a number",
+        ),
+        (
+            b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+            b"property float y\nproperty float z\nend_header\n" + b"\0" * 20,
+            "ply",
+            "ends inside the 'vertex' element",
+        ),
+    ],
+)
+def test_bad_content_names_the_line(data, fmt, message):
+    with pytest.raises(MeshFileError, match=message):
+        mesh.parse_mesh(data, fmt, "x")
+
+
+def test_unknown_format_and_missing_file(tmp_path):
+    with pytest.raises(MeshFileError, match=r"model\.3ds: unknown mesh format \.3ds"):
+        mesh.read_mesh("model.3ds")
+    with pytest.raises(MeshFileError, match="cannot be read: No such file"):
+        mesh.read_mesh(tmp_path / "missing.obj")
+    with pytest.raises(MeshFileError, match="written as ascii, not 'binary'"):
+        mesh.write_mesh(tmp_path / "x.obj", *mesh.cube(), encoding="binary")

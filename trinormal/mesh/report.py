@@ -1,0 +1,420 @@
+"""What is wrong with a mesh, in numbers and in plain words: `check`.
+
+The report answers a student's first questions about a model that renders
+black in places or has faces missing: are some faces flat (no normal), are
+some there twice, are there holes, do pieces meet along fins or at single
+points, is every piece wound one way, and does every closed piece face out?
+"""
+
+from __future__ import annotations
+
+import textwrap
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from trinormal.mesh._arrays import IntArray, _check_faces, _check_tol, _check_vertices
+from trinormal.mesh.normals import degenerate_faces
+from trinormal.mesh.repair import _winding
+from trinormal.mesh.topology import _duplicates, _fans, _HalfEdges
+from trinormal.tolerances import DEFAULT_TOL
+
+__all__ = ["ComponentReport", "MeshReport", "check"]
+
+
+@dataclass(frozen=True)
+class ComponentReport:
+    """One connected piece of a mesh.
+
+    Attributes
+    ----------
+    faces : int
+        How many faces the piece has.
+    closed : bool
+        Every edge of the piece is shared by exactly two of its faces (no hole,
+        no fin): the piece has an inside.
+    consistent : bool
+        Every edge shared by two faces is walked once each way.
+    orientable : bool
+        The piece can be wound consistently at all (a Möbius strip cannot).
+    outward : bool or None
+        For a closed, consistently wound piece: True if its normals point out
+        (the enclosed volume is positive), False if in; None when the question
+        has no answer (an open or inconsistent piece, or no volume to speak of).
+    volume : float or None
+        The enclosed volume as the faces are wound now (negative: inside out),
+        for a closed, consistently wound piece; otherwise None.
+    faces_to_flip : int
+        How many of its faces `trinormal.mesh.fix_winding` turns over.
+    """
+
+    faces: int
+    closed: bool
+    consistent: bool
+    orientable: bool
+    outward: bool | None
+    volume: float | None
+    faces_to_flip: int
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return the fields as a JSON-ready dictionary."""
+        return {
+            "faces": self.faces,
+            "closed": self.closed,
+            "consistent": self.consistent,
+            "orientable": self.orientable,
+            "outward": self.outward,
+            "volume": self.volume,
+            "faces_to_flip": self.faces_to_flip,
+        }
+
+
+def _pairs(a: IntArray) -> list[list[int]]:
+    out: list[list[int]] = a.tolist()
+    return out
+
+
+@dataclass(frozen=True)
+class MeshReport:
+    """Everything `check` found; indices refer to the arrays it was given.
+
+    Attributes
+    ----------
+    n_vertices, n_faces : int
+        Sizes of the mesh.
+    unused_vertices : ndarray of int
+        Vertices no face uses.
+    degenerate_faces : ndarray of int
+        Faces with no normal: ``coincident_faces`` and ``collinear_faces`` together.
+    coincident_faces : ndarray of int
+        Faces with two corners at exactly the same point (or one vertex used twice).
+    collinear_faces : ndarray of int
+        The other degenerate faces: corners on one line, or so nearly that the
+        sine of the angle between the edges is at most ``tol`` (the core's test).
+    duplicate_faces, reversed_duplicate_faces : ndarray of int
+        Faces repeating an earlier face's three vertices, wound the same way
+        or only the other way (see `trinormal.mesh.duplicate_faces`).
+    boundary_edges : ndarray of int, shape (k, 2)
+        Edges used by one face only, as that face walks them: rims of holes.
+    non_manifold_edges : ndarray of int, shape (k, 2)
+        Edges shared by three faces or more.
+    non_manifold_vertices : ndarray of int
+        Vertices where separate fans of faces touch at a single point.
+    inconsistent_edges : ndarray of int, shape (k, 2)
+        Edges shared by two faces that walk them the same way (one of the two
+        is flipped), as ``(smaller, larger)`` vertex index.
+    face_component : ndarray of int, shape (F,)
+        The piece of each face (-1 for a face that uses one vertex twice).
+    components : tuple of ComponentReport
+        One entry per piece, in the order of their first faces.
+    faces_to_flip : ndarray of int
+        The faces `trinormal.mesh.fix_winding` turns over.
+
+    Examples
+    --------
+    >>> from trinormal.mesh import cube
+    >>> v, f = cube()
+    >>> r = check(v, f[:-1])  # one face missing: a hole
+    >>> r.n_faces, len(r.boundary_edges), r.closed
+    (11, 3, False)
+    """
+
+    n_vertices: int
+    n_faces: int
+    unused_vertices: IntArray
+    degenerate_faces: IntArray
+    coincident_faces: IntArray
+    collinear_faces: IntArray
+    duplicate_faces: IntArray
+    reversed_duplicate_faces: IntArray
+    boundary_edges: IntArray
+    non_manifold_edges: IntArray
+    non_manifold_vertices: IntArray
+    inconsistent_edges: IntArray
+    face_component: IntArray = field(repr=False)
+    components: tuple[ComponentReport, ...]
+    faces_to_flip: IntArray
+
+    @property
+    def consistent_winding(self) -> bool:
+        """Every piece is wound consistently."""
+        return all(c.consistent for c in self.components)
+
+    @property
+    def closed(self) -> bool:
+        """Every piece is closed (no boundary edge, no non-manifold edge)."""
+        return all(c.closed for c in self.components) and bool(self.components)
+
+    @property
+    def outward(self) -> bool | None:
+        """Whether every closed piece faces out, wound consistently; None if none is closed."""
+        closed = [c for c in self.components if c.closed]
+        if not closed:
+            return None
+        return all(c.outward is True for c in closed)
+
+    @property
+    def ok(self) -> bool:
+        """Nothing to report: a clean, closed, consistently and outward wound mesh."""
+        return (
+            self.closed
+            and self.consistent_winding
+            and self.outward is True
+            and not any(
+                len(a)
+                for a in (
+                    self.degenerate_faces,
+                    self.duplicate_faces,
+                    self.reversed_duplicate_faces,
+                    self.non_manifold_vertices,
+                    self.unused_vertices,
+                )
+            )
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """Every count and list as JSON-ready values (ints, bools, lists)."""
+        return {
+            "n_vertices": self.n_vertices,
+            "n_faces": self.n_faces,
+            "n_components": len(self.components),
+            "closed": self.closed,
+            "consistent_winding": self.consistent_winding,
+            "outward": self.outward,
+            "ok": self.ok,
+            "unused_vertices": self.unused_vertices.tolist(),
+            "degenerate_faces": self.degenerate_faces.tolist(),
+            "coincident_faces": self.coincident_faces.tolist(),
+            "collinear_faces": self.collinear_faces.tolist(),
+            "duplicate_faces": self.duplicate_faces.tolist(),
+            "reversed_duplicate_faces": self.reversed_duplicate_faces.tolist(),
+            "boundary_edges": _pairs(self.boundary_edges),
+            "non_manifold_edges": _pairs(self.non_manifold_edges),
+            "non_manifold_vertices": self.non_manifold_vertices.tolist(),
+            "inconsistent_edges": _pairs(self.inconsistent_edges),
+            "components": [c.to_dict() for c in self.components],
+            "faces_to_flip": self.faces_to_flip.tolist(),
+        }
+
+    def summary(self, width: int = 88) -> str:
+        """Say what the report found in plain sentences, one finding per paragraph.
+
+        Parameters
+        ----------
+        width : int, default 88
+            Lines are wrapped at this many characters (0: no wrapping).
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> from trinormal.mesh import cube
+        >>> v, f = cube()
+        >>> print(check(v, f).summary())
+        8 vertices, 12 triangles, 1 piece.
+        No problems found: the surface is closed, every face is wound the same way round, and
+          every normal points outward.
+        """
+        lines = _summary_lines(self)
+        if width > 0:
+            lines = [textwrap.fill(line, width, subsequent_indent="  ") for line in lines]
+        return "\n".join(lines)
+
+
+def _n(count: int, one: str, many: str | None = None) -> str:
+    return f"{count} {one if count == 1 else (many or one + 's')}"
+
+
+def _summary_lines(r: MeshReport) -> list[str]:
+    lines = [
+        f"{_n(r.n_vertices, 'vertex', 'vertices')}, {_n(r.n_faces, 'triangle')}, "
+        f"{_n(len(r.components), 'piece')}."
+    ]
+    if r.ok:
+        lines.append(
+            "No problems found: the surface is closed, every face is wound the same way "
+            "round, and every normal points outward."
+        )
+        return lines
+    nd = len(r.degenerate_faces)
+    if nd:
+        parts = []
+        if len(r.coincident_faces):
+            parts.append(f"{len(r.coincident_faces)} with two corners at the same point")
+        if len(r.collinear_faces):
+            parts.append(f"{len(r.collinear_faces)} with corners on one line")
+        lines.append(
+            f"{_n(nd, 'degenerate face')} ({', '.join(parts)}): no area and no normal, "
+            "so they cannot be lit or oriented."
+        )
+    if len(r.duplicate_faces):
+        lines.append(
+            f"{_n(len(r.duplicate_faces), 'face repeats', 'faces repeat')} another face exactly."
+        )
+    if len(r.reversed_duplicate_faces):
+        lines.append(
+            f"{_n(len(r.reversed_duplicate_faces), 'face repeats', 'faces repeat')} another "
+            "face wound the other way: the two normals cancel, and the pair is a sheet "
+            "with no inside."
+        )
+    if len(r.unused_vertices):
+        lines.append(
+            f"{_n(len(r.unused_vertices), 'vertex is', 'vertices are')} not used by any face."
+        )
+    if len(r.boundary_edges):
+        lines.append(
+            f"{_n(len(r.boundary_edges), 'edge belongs', 'edges belong')} to one face only: "
+            "the surface has holes (or is an open sheet), so it has no inside. Through a "
+            "hole you see the back of the faces behind it."
+        )
+    if len(r.non_manifold_edges):
+        lines.append(
+            f"{_n(len(r.non_manifold_edges), 'edge is', 'edges are')} shared by three faces or "
+            "more, like the spine of a book: no single surface does that."
+        )
+    if len(r.non_manifold_vertices):
+        lines.append(
+            f"{_n(len(r.non_manifold_vertices), 'vertex joins', 'vertices join')} pieces of "
+            "surface that touch only at that point."
+        )
+    for i, c in enumerate(r.components):
+        name = f"Piece {i + 1} ({_n(c.faces, 'face')})" if len(r.components) > 1 else "The mesh"
+        if not c.orientable:
+            lines.append(
+                f"{name} cannot be wound consistently at all, like a Möbius strip: "
+                "it has only one side."
+            )
+        elif not c.consistent:
+            lines.append(
+                f"{name} is wound inconsistently: some faces are turned the other way round "
+                "from their neighbours, so their normals point the wrong way. Lighting makes "
+                "such faces dark, and back-face culling makes them vanish."
+            )
+        elif c.closed and c.outward is False:
+            lines.append(
+                f"{name} is inside out: every normal points inward (the enclosed volume is "
+                "negative)."
+            )
+        elif c.closed and c.outward is None:
+            lines.append(f"{name} is closed but encloses no volume, so it has no outside.")
+    n_flip = len(r.faces_to_flip)
+    if n_flip:
+        lines.append(
+            f"fix_winding turns {_n(n_flip, 'face')} over to wind every piece consistently"
+            + (" and outward." if any(c.closed for c in r.components) else ".")
+        )
+    return lines
+
+
+def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TOL) -> MeshReport:
+    """Find everything wrong with a mesh: degenerate, duplicate and flipped faces, holes, fins.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle, in winding order.
+    tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
+        Degeneracy threshold on the sine of the angle between a face's edges:
+        the same scale-free test as `trinormal.triangle_normal`.
+
+    Returns
+    -------
+    MeshReport
+        Counts, face and edge lists, and `MeshReport.summary` in words.
+
+    Raises
+    ------
+    ValueError
+        Bad arrays, with the message naming the first bad row.
+
+    Examples
+    --------
+    A cube with its top face turned over and its bottom missing:
+
+    >>> from trinormal.mesh import cube
+    >>> v, f = cube()
+    >>> f = f.copy()
+    >>> f[10:] = f[10:, [0, 2, 1]]
+    >>> r = check(v, f[2:])
+    >>> len(r.boundary_edges), r.faces_to_flip
+    (4, array([8, 9]))
+    >>> print(r.summary())
+    8 vertices, 10 triangles, 1 piece.
+    4 edges belong to one face only: the surface has holes (or is an open sheet), so it has
+      no inside. Through a hole you see the back of the faces behind it.
+    The mesh is wound inconsistently: some faces are turned the other way round from their
+      neighbours, so their normals point the wrong way. Lighting makes such faces dark, and
+      back-face culling makes them vanish.
+    fix_winding turns 2 faces over to wind every piece consistently.
+    """
+    t = _check_tol(tol)
+    v, _ = _check_vertices(vertices)
+    f = _check_faces(faces, v.shape[0])
+    nv, nf = v.shape[0], f.shape[0]
+    he = _HalfEdges.of(f)
+
+    deg = degenerate_faces(v, f, t)
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    coincident = (a == b).all(axis=1) | (b == c).all(axis=1) | (c == a).all(axis=1)
+    deg |= coincident
+    collinear = deg & ~coincident
+
+    used = np.zeros(nv, dtype=bool)
+    used[f.ravel()] = True
+    same, rev = _duplicates(f)
+
+    boundary = he.order[he.starts[he.counts == 1]]
+    ba, bb = he.start(boundary), he.end(boundary)
+    border = np.lexsort((bb, ba))
+    boundary_edges = np.stack([ba[border], bb[border]], axis=1).reshape(-1, 2)
+    non_manifold = he.edge_vertices(np.flatnonzero(he.counts >= 3))
+    verts, fans = _fans(he)
+
+    w = _winding(v, he)
+    h1, _ = w.inconsistent_pairs
+    ia, ib = he.start(h1), he.end(h1)
+    inc = np.stack([np.minimum(ia, ib), np.maximum(ia, ib)], axis=1).reshape(-1, 2)
+    inc = inc[np.lexsort((inc[:, 1], inc[:, 0]))]
+
+    nc = w.n_components
+    sizes = np.bincount(w.component[w.component >= 0], minlength=nc)[:nc]
+    flips = np.bincount(w.component[w.flip], minlength=nc)[:nc]
+    outward = w.outward(w.volume)
+    comps = []
+    for i in range(nc):
+        consistent = bool(w.inconsistent[i] == 0)
+        measurable = bool(w.closed[i]) and consistent
+        comps.append(
+            ComponentReport(
+                faces=int(sizes[i]),
+                closed=bool(w.closed[i]),
+                consistent=consistent,
+                orientable=bool(w.orientable[i]),
+                outward=outward[i] if measurable else None,
+                volume=float(w.volume[i]) / 6.0 if measurable else None,
+                faces_to_flip=int(flips[i]),
+            )
+        )
+    return MeshReport(
+        n_vertices=nv,
+        n_faces=nf,
+        unused_vertices=np.flatnonzero(~used).astype(np.intp),
+        degenerate_faces=np.flatnonzero(deg).astype(np.intp),
+        coincident_faces=np.flatnonzero(coincident).astype(np.intp),
+        collinear_faces=np.flatnonzero(collinear).astype(np.intp),
+        duplicate_faces=same,
+        reversed_duplicate_faces=rev,
+        boundary_edges=boundary_edges,
+        non_manifold_edges=non_manifold,
+        non_manifold_vertices=verts[fans > 1],
+        inconsistent_edges=inc,
+        face_component=w.component,
+        components=tuple(comps),
+        faces_to_flip=np.flatnonzero(w.flip).astype(np.intp),
+    )
