@@ -119,7 +119,7 @@ def main() -> None:
     print(
         f"numpy {np.__version__}, trimesh {trimesh.__version__}, Python {platform.python_version()}"
     )
-    print(f"machine: {platform.machine()}, block of {mesh._BLOCK} faces")
+    print(f"machine: {platform.machine()}, block of {mesh.normals._BLOCK} faces")
     bandwidth = copy_bandwidth()
     print(f"measured copy bandwidth: {bandwidth / 1e9:.2f} GB/s (read + write)")
     v, f = mesh.terrain(GRID, GRID)

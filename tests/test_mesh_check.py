@@ -498,3 +498,32 @@ def test_topology_functions_agree_with_the_report():
     assert (same == r.duplicate_faces).all() and (rev == r.reversed_duplicate_faces).all()
     counts = Counter(map(tuple, m.faces.tolist()))
     assert counts[(10, 11, 12)] == 1  # the exact copy is written rotated in the file
+
+
+# --------------------------------------------------------------------------- threads
+
+
+def test_threads_give_the_same_bits_as_one_thread(monkeypatch):
+    from trinormal.mesh import normals
+
+    v, f = mesh.terrain(200, 200)  # 79 202 faces: ten blocks, shared among threads
+    v = v.copy()
+    v[:50] *= 1e-200  # a few faces for the careful path, in the first block
+    v[-50:] *= 1e200  # and in the last
+    results = {}
+    for threads in (1, 4):
+        monkeypatch.setattr(normals, "_MAX_THREADS", threads)
+        monkeypatch.setattr(normals, "_THREADED_BLOCKS", 2)
+        results[threads] = (
+            mesh.face_normals(v, f),
+            mesh.face_normals(v, f, unit=False),
+            mesh.vertex_normals(v, f),
+            mesh.degenerate_faces(v, f),
+        )
+        bad = f.copy()
+        bad[-3, 1] = len(v)
+        with pytest.raises(ValueError, match=f"faces row {len(f) - 3} refers to vertex {len(v)}"):
+            mesh.face_normals(v, bad)
+    for a, b in zip(results[1], results[4], strict=True):
+        assert a.tobytes() == b.tobytes()
+    assert np.isfinite(results[4][0]).all()

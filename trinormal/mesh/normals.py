@@ -8,6 +8,9 @@ angles. Every public function here is one call to it plus a little numpy.
 from __future__ import annotations
 
 import math
+import os
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
 
 from trinormal._optional import missing_extra
 
@@ -37,14 +40,14 @@ WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 #: Faces per block: small enough that the block's temporaries stay in cache.
 _BLOCK = 8192
 
+#: Meshes of at least this many blocks are shared among threads, at most this many.
+_THREADED_BLOCKS = 8
+_MAX_THREADS = 4
+
 # A row goes to the careful path unless |U|²|V|² < 2**900 (no product can
 # overflow) and |N|² > 2**-900 (|N| and the unit normal are full precision).
 _HI = 2.0**900
 _LO = 2.0**-900
-
-# One vertex row (3 float64) as a single item, so a gather moves whole rows.
-_ROW = np.dtype((np.void, 24))
-
 
 # --------------------------------------------------------------------------- the kernel
 
@@ -52,16 +55,20 @@ _ROW = np.dtype((np.void, 24))
 class _Block:
     """Scratch arrays for one block of ``n`` faces, reused block after block.
 
+    Every array is laid out coordinate by coordinate (one contiguous row of
+    ``n`` numbers per coordinate), so every arithmetic step runs on contiguous
+    memory.
+
     Attributes
     ----------
-    corners : ndarray (3, n, 3)
-        The corners A, B, C of each face; the kernel then turns B and C into
-        the edges U = B − A and V = C − A in place.
-    corner_rows : ndarray (3, n)
-        The same memory seen as one 24-byte item per corner, for gathering.
-    normal : ndarray (n, 3)
+    index : ndarray of int (3, n)
+        The block's vertex indices, corner by corner.
+    corners : ndarray (3, 3, n)
+        ``corners[c, k]``: coordinate k of corner c (A, B, C); the kernel then
+        turns B and C into the edges U = B − A and V = C − A in place.
+    normal : ndarray (3, n)
         N = U × V.
-    products : ndarray (n, 3)
+    products : ndarray (3, n)
         Component-wise products (N·N, U·V, U·U) before they are summed.
     norm : ndarray (n,)
         |N|², then |N|.
@@ -75,21 +82,23 @@ class _Block:
         Rows the fast arithmetic handles; rows whose sine is at most tol.
     """
 
-    _ROWS = ("normal", "products", "norm", "dot", "bound", "temp", "in_range", "degenerate")
+    _LAST = ("index", "normal", "products")  # 2-D: cut along the last axis
+    _ROWS = ("norm", "dot", "bound", "temp", "in_range", "degenerate")
 
     def __init__(self, n: int) -> None:
         e = np.empty
-        self.corners = e((3, n, 3))
-        self.corner_rows = self.corners.view(_ROW).reshape(3, n)
-        self.normal, self.products = e((n, 3)), e((n, 3))
+        self.index = e((3, n), dtype=np.intp)
+        self.corners = e((3, 3, n))
+        self.normal, self.products = e((3, n)), e((3, n))
         self.norm, self.dot, self.bound, self.temp = e(n), e(n), e(n), e(n)
         self.in_range, self.degenerate = e(n, dtype=bool), e(n, dtype=bool)
 
     def view(self, n: int) -> _Block:
-        """Return the first ``n`` rows of every scratch array (for the last, shorter block)."""
+        """Return the first ``n`` faces of every scratch array (for the last, shorter block)."""
         out = object.__new__(_Block)
-        out.corners = self.corners[:, :n]
-        out.corner_rows = self.corner_rows[:, :n]
+        out.corners = self.corners[:, :, :n]
+        for name in self._LAST:
+            setattr(out, name, getattr(self, name)[:, :n])
         for name in self._ROWS:
             setattr(out, name, getattr(self, name)[:n])
         return out
@@ -157,6 +166,106 @@ def _blocks(n: int) -> range:
     return range(0, n, _BLOCK)
 
 
+def _workers(n_blocks: int) -> int:
+    """How many threads share the blocks: numpy releases the GIL inside each operation."""
+    if n_blocks < _THREADED_BLOCKS:
+        return 1
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        cores = os.cpu_count() or 1
+    return max(1, min(cores, _MAX_THREADS, n_blocks // 2))
+
+
+@dataclass
+class _Outputs:
+    """Where `_face_rows` writes: any of the four per-face results (None: not wanted)."""
+
+    unit: FloatArray | None
+    degenerate: BoolArray | None
+    magnitude: FloatArray | None
+    angles: FloatArray | None
+
+
+def _face_block(
+    w: _Block, columns: FloatArray, f: IntArray, s: int, e: int, tol2: float, out: _Outputs
+) -> IntArray | None:
+    """Compute faces ``s`` to ``e`` into ``out``; return the rows the careful path must redo."""
+    nv = columns.shape[1]
+    mul, sub, add = np.multiply, np.subtract, np.add
+    unit_out, deg_out, mag_out, angles_out = out.unit, out.degenerate, out.magnitude, out.angles
+    with np.errstate(all="ignore"):
+        np.copyto(w.index, f[s:e].T)
+        if w.index.min() < 0 or w.index.max() >= nv:
+            _raise_range_error(f, nv)
+        # short local names for the block's arrays (see _Block): the kernel reads as formulas
+        g, n, sq, ss = w.corners, w.normal, w.products, w.norm
+        d, q, t = w.dot, w.bound, w.temp
+        for c in range(3):  # gather: one contiguous take per corner and coordinate
+            for k in range(3):
+                np.take(columns[k], w.index[c], out=g[c, k], mode="clip")
+        sub(g[1], g[0], out=g[1])  # U = B - A
+        sub(g[2], g[0], out=g[2])  # V = C - A
+        ux, uy, uz = g[1]
+        vx, vy, vz = g[2]
+        # N = U × V
+        mul(uy, vz, out=n[0])
+        mul(uz, vy, out=t)
+        sub(n[0], t, out=n[0])
+        mul(uz, vx, out=n[1])
+        mul(ux, vz, out=t)
+        sub(n[1], t, out=n[1])
+        mul(ux, vy, out=n[2])
+        mul(uy, vx, out=t)
+        sub(n[2], t, out=n[2])
+        # |N|² and U·V
+        mul(n, n, out=sq)
+        add(sq[0], sq[1], out=ss)
+        add(ss, sq[2], out=ss)
+        mul(g[1], g[2], out=sq)
+        add(sq[0], sq[1], out=d)
+        add(d, sq[2], out=d)
+        # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
+        mul(d, d, out=q)
+        add(q, ss, out=q)
+        # (NaN fails every comparison, so it goes to the careful path too)
+        careful = not (q.max() < _HI and ss.min() > _LO)
+        if careful:
+            np.less(q, _HI, out=w.in_range)
+            np.greater(ss, _LO, out=w.degenerate)
+            np.logical_and(w.in_range, w.degenerate, out=w.in_range)
+        # degenerate: |N|² <= tol² |U|²|V|²
+        mul(q, tol2, out=q)
+        np.less_equal(ss, q, out=w.degenerate)
+        if deg_out is not None:
+            deg_out[s:e] = w.degenerate
+        np.sqrt(ss, out=ss)  # |N|
+        if mag_out is not None:
+            mag_out[s:e] = ss
+        if angles_out is not None:
+            # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
+            ang = angles_out[s:e]
+            np.arctan2(ss, d, out=ang[:, 0])
+            mul(g[1], g[1], out=sq)
+            add(sq[0], sq[1], out=q)
+            add(q, sq[2], out=q)
+            sub(q, d, out=q)
+            np.arctan2(ss, q, out=ang[:, 1])
+            add(ang[:, 0], ang[:, 1], out=t)
+            sub(math.pi, t, out=ang[:, 2])
+        if unit_out is not None:
+            np.divide(1.0, ss, out=t)
+            if w.degenerate.any():
+                t[w.degenerate] = 0.0
+            rows_out = unit_out[s:e]
+            for k in range(3):  # column by column: a broadcast over rows of 3 is slow
+                mul(n[k], t, out=rows_out[:, k])
+        if careful:
+            rows: IntArray = s + np.flatnonzero(~w.in_range)
+            return rows
+    return None
+
+
 def _face_rows(
     vertices: FloatArray,
     f: IntArray,
@@ -171,107 +280,63 @@ def _face_rows(
     ``unit_out`` (F, 3) unit normals (zero rows where degenerate), ``deg_out``
     (F,) degeneracy, ``mag_out`` (F,) |N| as a mantissa (times ``2**exp``),
     ``angles_out`` (F, 3) the interior angle at each corner.
+
+    Blocks of faces are independent: on a big mesh, a few threads take a
+    share of them each (every face is computed the same way whichever thread
+    does it, so the result never depends on the threads). Rows at extreme
+    scales are redone afterwards by `_careful`.
     """
     nf = f.shape[0]
     tol2 = tol * tol
     exps: IntArray | None = None
-    rows_v = vertices.view(_ROW).ravel()  # (V,) items of 24 bytes, no copy
-    x, y, z = vertices[:, 0], vertices[:, 1], vertices[:, 2]
-    full = _Block(min(_BLOCK, max(nf, 1)))
-    mul, sub, add = np.multiply, np.subtract, np.add
-    with np.errstate(all="ignore"):
-        for s in _blocks(nf):
+    columns = np.ascontiguousarray(vertices.T)  # x, y and z, each one contiguous array
+    out = _Outputs(unit_out, deg_out, mag_out, angles_out)
+    starts = list(_blocks(nf))
+
+    def run(share: list[int]) -> list[IntArray]:
+        full = _Block(min(_BLOCK, max(nf, 1)))
+        found = []
+        for s in share:
             e = min(s + _BLOCK, nf)
             w = full if e - s == _BLOCK else full.view(e - s)
-            # gather whole rows: one memory access per corner, not one per coordinate
-            fb = f[s:e]
-            try:  # take checks the upper bound itself; it would wrap negative indices
-                if fb.min() < 0:
-                    raise IndexError
-                np.take(rows_v, fb.T, out=w.corner_rows)
-            except IndexError:
-                _raise_range_error(f, rows_v.shape[0])
-            # short local names for the block's arrays (see _Block): the kernel reads as formulas
-            g, n, sq, ss = w.corners, w.normal, w.products, w.norm
-            d, q, t = w.dot, w.bound, w.temp
-            sub(g[1], g[0], out=g[1])  # U = B - A
-            sub(g[2], g[0], out=g[2])  # V = C - A
-            ux, uy, uz = g[1, :, 0], g[1, :, 1], g[1, :, 2]
-            vx, vy, vz = g[2, :, 0], g[2, :, 1], g[2, :, 2]
-            # N = U × V
-            mul(uy, vz, out=n[:, 0])
-            mul(uz, vy, out=t)
-            sub(n[:, 0], t, out=n[:, 0])
-            mul(uz, vx, out=n[:, 1])
-            mul(ux, vz, out=t)
-            sub(n[:, 1], t, out=n[:, 1])
-            mul(ux, vy, out=n[:, 2])
-            mul(uy, vx, out=t)
-            sub(n[:, 2], t, out=n[:, 2])
-            # |N|² and U·V
-            mul(n, n, out=sq)
-            add(sq[:, 0], sq[:, 1], out=ss)
-            add(ss, sq[:, 2], out=ss)
-            mul(g[1], g[2], out=sq)
-            add(sq[:, 0], sq[:, 1], out=d)
-            add(d, sq[:, 2], out=d)
-            # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
-            mul(d, d, out=q)
-            add(q, ss, out=q)
-            # (NaN fails every comparison, so it goes to the careful path too)
-            careful = not (q.max() < _HI and ss.min() > _LO)
-            if careful:
-                np.less(q, _HI, out=w.in_range)
-                np.greater(ss, _LO, out=w.degenerate)
-                np.logical_and(w.in_range, w.degenerate, out=w.in_range)
-            # degenerate: |N|² <= tol² |U|²|V|²
-            mul(q, tol2, out=q)
-            np.less_equal(ss, q, out=w.degenerate)
-            if deg_out is not None:
-                deg_out[s:e] = w.degenerate
-            np.sqrt(ss, out=ss)  # |N|
-            if mag_out is not None:
-                mag_out[s:e] = ss
-            if angles_out is not None:
-                # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
-                ang = angles_out[s:e]
-                np.arctan2(ss, d, out=ang[:, 0])
-                mul(g[1], g[1], out=sq)
-                add(sq[:, 0], sq[:, 1], out=q)
-                add(q, sq[:, 2], out=q)
-                sub(q, d, out=q)
-                np.arctan2(ss, q, out=ang[:, 1])
-                add(ang[:, 0], ang[:, 1], out=t)
-                sub(math.pi, t, out=ang[:, 2])
-            if unit_out is not None:
-                np.divide(1.0, ss, out=t)
-                if w.degenerate.any():
-                    t[w.degenerate] = 0.0
-                out = unit_out[s:e]
-                for k in range(3):  # column by column: a broadcast over rows of 3 is slow
-                    mul(n[:, k], t, out=out[:, k])
-            if careful:
-                rows = np.flatnonzero(~w.in_range)
-                uc, vc, nn, ns, mag, exp, deg = _careful(x, y, z, f[s + rows], tol2)
-                at = s + rows
-                if deg_out is not None:
-                    deg_out[at] = deg
-                if mag_out is not None:
-                    if exps is None:
-                        exps = np.zeros(nf, dtype=np.intp)
-                    mag_out[at] = mag
-                    exps[at] = exp
-                if unit_out is not None:
-                    safe = np.where(mag == 0.0, 1.0, mag)
-                    unit_out[at] = np.where(deg[:, None], 0.0, ns / safe[:, None])
-                if angles_out is not None:
-                    uv = np.einsum("ij,ij->i", uc, vc)
-                    uu = np.einsum("ij,ij->i", uc, uc)
-                    ang_a = np.arctan2(nn, uv)
-                    ang_b = np.arctan2(nn, uu - uv)
-                    angles_out[at, 0] = ang_a
-                    angles_out[at, 1] = ang_b
-                    angles_out[at, 2] = math.pi - (ang_a + ang_b)
+            rows = _face_block(w, columns, f, s, e, tol2, out)
+            if rows is not None:
+                found.append(rows)
+        return found
+
+    workers = _workers(len(starts))
+    if workers == 1:
+        found = run(starts)
+    else:  # each thread a run of neighbouring blocks (neighbouring faces share vertices)
+        shares = [
+            starts[i * len(starts) // workers : (i + 1) * len(starts) // workers]
+            for i in range(workers)
+        ]
+        with ThreadPoolExecutor(workers) as pool:
+            found = [rows for part in pool.map(run, shares) for rows in part]
+    if not found:
+        return None
+    at = np.concatenate(found)
+    x, y, z = columns
+    with np.errstate(all="ignore"):
+        uc, vc, nn, ns, mag, exp, deg = _careful(x, y, z, f[at], tol2)
+    if deg_out is not None:
+        deg_out[at] = deg
+    if mag_out is not None:
+        exps = np.zeros(nf, dtype=np.intp)
+        mag_out[at] = mag
+        exps[at] = exp
+    if unit_out is not None:
+        safe = np.where(mag == 0.0, 1.0, mag)
+        unit_out[at] = np.where(deg[:, None], 0.0, ns / safe[:, None])
+    if angles_out is not None:
+        uv = np.einsum("ij,ij->i", uc, vc)
+        uu = np.einsum("ij,ij->i", uc, uc)
+        ang_a = np.arctan2(nn, uv)
+        ang_b = np.arctan2(nn, uu - uv)
+        angles_out[at, 0] = ang_a
+        angles_out[at, 1] = ang_b
+        angles_out[at, 2] = math.pi - (ang_a + ang_b)
     return exps
 
 
