@@ -179,6 +179,11 @@ def test_crlf_and_continued_lines(tmp_path):
     ]
 
 
+def test_a_byte_order_mark_is_not_part_of_the_first_line():
+    m = mesh.parse_mesh("\ufeffv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".encode(), "obj")
+    assert m.faces.tolist() == [[0, 1, 2]]
+
+
 def test_obj_negative_indices_count_back_from_the_latest_vertex():
     m = mesh.parse_mesh(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 1 1 0\nf -3 -1 -2\n", "obj")
     assert m.faces.tolist() == [[0, 1, 2], [1, 3, 2]]

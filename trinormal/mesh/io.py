@@ -290,7 +290,7 @@ def _text(data: bytes, name: str, what: str) -> str:
         line = data.count(b"\n", 0, nul) + 1
         raise MeshFileError(name, f"not a text {what} file (binary data)", line)
     try:
-        return data.decode("utf-8")
+        return data.decode("utf-8").removeprefix("\ufeff")  # without a byte-order mark
     except UnicodeDecodeError:
         return data.decode("latin-1")
 
@@ -602,6 +602,8 @@ def _read_ply(data: bytes, name: str) -> MeshData:
     vert = next((e for e in elements if e.name == "vertex"), None)
     if vert is None:
         raise MeshFileError(name, "the header has no 'vertex' element")
+    if not vert.fixed:
+        raise MeshFileError(name, "the vertex element has a list property", vert.line)
     for axis in "xyz":
         if not any(p[0] == axis and p[2] is None for p in vert.props):
             raise MeshFileError(name, f"the vertex element has no '{axis}' property", vert.line)
