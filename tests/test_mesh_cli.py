@@ -103,8 +103,9 @@ def test_without_numpy_one_line_names_the_extra():
     )
     p = run("mesh", str(DATA / "crlf.obj"), code=code)
     assert p.returncode == 2
-    assert (
-        p.stderr == 'trinormal: error: trinormal mesh needs numpy: pip install "trinormal[mesh]"\n'
+    assert p.stderr == (
+        "trinormal: error: trinormal mesh needs numpy, which is not installed. "
+        'Install the notebooks extra: pip install "trinormal[notebooks]"\n'
     )
 
 

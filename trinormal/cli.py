@@ -16,7 +16,7 @@ the same format and encoding as FILE when they match)::
     trinormal mesh model.obj --fix fixed.obj
     trinormal mesh model.ply --json
 
-It needs numpy (``pip install "trinormal[mesh]"``); the triangle calculator
+It needs numpy (the ``notebooks`` extra brings it); the triangle calculator
 needs nothing beyond the standard library, and numpy is imported only when
 the mesh command runs.
 
@@ -41,6 +41,7 @@ from fractions import Fraction
 from typing import Any, NoReturn
 
 from trinormal import fields
+from trinormal._optional import missing_extra
 from trinormal.core import ARITHMETICS, TriangleNormal, triangle_normal
 from trinormal.steps import points_text, steps, working
 from trinormal.tolerances import DEFAULT_TOL
@@ -326,11 +327,10 @@ def _run_mesh(args_in: list[str]) -> int:
         _error(str(exc))
         return 2
     try:
-        import numpy  # noqa: F401  (the one dependency of trinormal.mesh)
-    except ImportError:
-        _error('trinormal mesh needs numpy: pip install "trinormal[mesh]"')
+        from trinormal import mesh
+    except ModuleNotFoundError as exc:  # numpy is missing: the message names the extra
+        _error(str(missing_extra(exc, "trinormal mesh")))
         return 2
-    from trinormal import mesh
 
     try:
         data = mesh.read_mesh(args.file)

@@ -59,6 +59,13 @@ array([[ 0.,  0., -1.],
 True
 """
 
+from trinormal._optional import missing_extra
+
+try:
+    import numpy  # noqa: F401  (only to name the extra if it is missing)
+except ModuleNotFoundError as exc:
+    raise missing_extra(exc, __name__) from exc
+
 from trinormal.mesh.io import (
     FORMATS,
     SAMPLES,
