@@ -27,6 +27,7 @@ QUERY = "?a=0,0,0&b=2,0,0&c=0,1,1&w=ABC&p=4"
 
 
 def main() -> None:
+    """Render the calculator's live 3D view in Chromium and save it as the home page picture."""
     from PIL import Image
     from playwright.sync_api import sync_playwright
 
