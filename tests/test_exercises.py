@@ -238,6 +238,13 @@ def test_reading_numbers_in_every_form():
     ):
         assert read_number(form) == Fraction(-5, 2), form
     assert read_number(np.int64(7)) == 7 and read_number(np.array(7)) == 7
+    # typed the way math is printed or typed on a phone: superscripts, full-width digits, ½
+    assert read_number("(2√3)²") == 12 and read_number("１/３") == third
+    assert read_number("½") == Fraction(1, 2) and read_number("10⁻³") == Fraction(1, 1000)
+    for form in ("12.5°", "12.5 °", "12.5º", "12.5 deg", "12.5 degrees"):
+        assert read_number(form, degrees=True) == Fraction(25, 2), form
+        with pytest.raises(AnswerError, match="marked as degrees"):
+            read_number(form)
     assert read_number(sp.sqrt(3) / 2) == pytest.approx(0.8660254037844386)
     for bad in (True, None, "thirty", "x + 1", "sqrt(-1)", "1e400", float("nan"), 10**400):
         with pytest.raises(AnswerError):
@@ -505,7 +512,7 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         ("Ux*(", "Your answer could not be read: 'Ux*(' could not be read as an expression in Ux, Uy, Uz, Vx, Vy, Vz."),
         (sp.Matrix(sp.symbols("Vy Vz Vx")), "That is a whole vector: give only its z component, one expression."),
         (("Uy*Vz - Uz*Vy", "Uz*Vx - Ux*Vz", "Uy*Vx - Ux*Vy"), "Your last component is right: give it alone, not the whole vector."),
-        (None, "Your answer could not be read: None is not an expression."),
+        (None, "Your answer could not be read: None is not an expression in Ux, Uy, Uz, Vx, Vy, Vz."),
     ],
     "02-scaling-power": [
         (1, "Each edge grows by s, but N is a product of two edges."),
@@ -612,7 +619,7 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         ("45/46", "That is the neighbour's share: the sliver gets the rest, its own angle over the sum."),
         (lambda: round(float(_sol("08-sliver-weight")), 3), "Your answer looks like the right value rounded to 3 decimals, which is further off than this exercise allows (within 0.5 % of the right value): keep more decimals."),
         (2, "Angle weighting weighs each face by its corner angle: divide the sliver's angle by the sum of both."),
-        ("2°", "Your answer could not be read: '2°' has a degree sign, but this answer is not an angle."),
+        ("2°", "Your answer could not be read: '2°' is marked as degrees, but this answer is not an angle."),
     ],
     "09-lambert": [
         (0.6, "That is l's y component; n · l multiplies matching components and adds."),
@@ -804,3 +811,19 @@ def test_a_notebooks_exercise_wins_over_one_registered_by_hand():
 def test_negative_tolerance_is_refused():
     with pytest.raises(ValueError, match="tol"):
         exercise("98-bad", "?", expected=1, tol=-1)
+
+
+def test_notebook_modules_read_answers_only_with_the_shared_reader():
+    """No exercise parses an answer its own way: reading.py and judging.py hold the rules."""
+    ad_hoc = (
+        "parse_expr",
+        "sympify(",
+        "str(answer",
+        "float(answer",
+        "hasattr(answer",
+        "len(answer",
+    )
+    for module in NOTEBOOK_MODULES:
+        source = (ROOT / "trinormal" / "exercises" / f"{module}.py").read_text(encoding="utf-8")
+        for word in ad_hoc:
+            assert word not in source, (module, word)

@@ -409,11 +409,6 @@ def exercise(
 def get(name: str) -> Exercise:
     """Return the exercise called ``name``.
 
-    Examples
-    --------
-    >>> get("01-normal").prompt[:28]
-    'Compute N = (B − A) × (C − A'
-
     ``get(name).solution()`` returns a right answer: call it on purpose,
     after trying.
 
@@ -421,6 +416,11 @@ def get(name: str) -> Exercise:
     ------
     KeyError
         With the closest names, when there is no such exercise.
+
+    Examples
+    --------
+    >>> get("01-normal").prompt[:28]
+    'Compute N = (B − A) × (C − A'
     """
     found = _load().get(name) or _REGISTRY.get(name)
     if found is not None:

@@ -3,12 +3,11 @@
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 from typing import Any
 
 from trinormal.core import triangle_normal
 from trinormal.exercises import AnswerError, Exercise, Verdict
-from trinormal.exercises.reading import describe, sympify_text
+from trinormal.exercises.reading import VectorGiven, read_expression
 
 #: The edges of exercise 02-lagrange.
 LAGRANGE_U, LAGRANGE_V = (1, 2, 2), (2, 0, 0)
@@ -33,55 +32,12 @@ def _scaling_power() -> int:
 
 
 _NAMES = ("Ux", "Uy", "Uz", "Vx", "Vy", "Vz")
+_WHAT = "an expression in Ux, Uy, Uz, Vx, Vy, Vz"
 
 
 def _nz_example() -> str:
     """Return the z component of V × U (order A → C → B), which the notebook never prints."""
     return "Uy*Vx - Ux*Vy"
-
-
-def _expression(answer: Any, symbols: dict[str, Any]) -> Any:
-    """Read the answer as one sympy expression, or raise AnswerError saying why not."""
-    import sympy as sp
-
-    if isinstance(answer, str):
-        return sympify_text(answer, symbols, what="an expression in Ux, Uy, Uz, Vx, Vy, Vz")
-    if isinstance(answer, sp.Basic) and not getattr(answer, "is_Matrix", False):
-        if isinstance(answer, sp.Expr):
-            return answer
-        raise AnswerError(f"{describe(answer)} is not an expression")
-    size = _size(answer)
-    if size == 1:  # ("Uy*Vx - Ux*Vy",), [expr], a 1 × 1 matrix: the one thing inside
-        inner = answer[0] if not getattr(answer, "is_Matrix", False) else answer[0, 0]
-        return _expression(inner, symbols)
-    if size == 3:
-        raise _WholeVector(answer)
-    if isinstance(answer, bool) or answer is None:
-        raise AnswerError(f"{describe(answer)} is not an expression")
-    if isinstance(answer, int | float | Fraction):
-        return sp.nsimplify(answer) if isinstance(answer, float) else sp.Rational(answer)
-    raise AnswerError(
-        f"{describe(answer)} is not an expression: give a string or a sympy expression"
-    )
-
-
-class _WholeVector(Exception):
-    """The answer is a whole vector of three components."""
-
-    def __init__(self, items: Any) -> None:
-        super().__init__("a whole vector")
-        self.items = items
-
-
-def _size(answer: Any) -> int:
-    if isinstance(answer, str | bytes | dict | set | frozenset):
-        return -1
-    if getattr(answer, "is_Matrix", False):
-        rows, cols = answer.shape
-        return int(rows * cols) if 1 in (rows, cols) else -1
-    if isinstance(answer, tuple | list):
-        return len(answer)
-    return -1
 
 
 def _check_nz(answer: Any) -> Verdict:
@@ -94,13 +50,13 @@ def _check_nz(answer: Any) -> Verdict:
     loose = {name.lower(): symbols[name] for name in _NAMES}
     nz = normal_components("edges").z
     try:
-        expr = _expression(answer, symbols)
-    except _WholeVector as whole:
+        expr = read_expression(answer, symbols, what=_WHAT)
+    except VectorGiven as whole:
         items = list(whole.items)
         try:
-            last = _expression(items[-1], symbols)
+            last = read_expression(items[-1], symbols, what=_WHAT)
             right = _rename(last, loose)[1] == [] and sp.expand(_rename(last, loose)[0] + nz) == 0
-        except (AnswerError, _WholeVector):
+        except (AnswerError, VectorGiven):
             right = False
         if right:
             return Verdict(
@@ -109,10 +65,6 @@ def _check_nz(answer: Any) -> Verdict:
         return Verdict(False, "That is a whole vector: give only its z component, one expression.")
     except AnswerError as error:
         return Verdict(False, f"Your answer could not be read: {error}.")
-    except Exception:  # an object that misbehaves when asked what it is
-        return Verdict(
-            False, f"Your answer could not be read: {describe(answer)} is not an expression."
-        )
     expr, unknown = _rename(expr, loose)
     for name in unknown:  # "UxVy": two names run together
         key = name.replace("_", "").lower()

@@ -52,9 +52,11 @@ from trinormal.validation import check_coordinate
 __all__ = [
     "AnswerError",
     "Number",
+    "VectorGiven",
     "describe",
     "is_exact",
     "read_bool",
+    "read_expression",
     "read_number",
     "read_points",
     "read_vector",
@@ -75,7 +77,17 @@ ALLOWED_FUNCTIONS = frozenset(
 )  # fmt: skip
 
 AXIS_NAMES = ("x", "y", "z")
-DEGREE_SIGNS = ("°", "º", "˚")
+DEGREE_SIGNS = ("°", "º", "˚", "degrees", "degree", "deg")
+_SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+_POWER = re.compile("([⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
+
+
+def _plain_text(text: str) -> str:
+    """Turn typed math into plain text: ``x²`` → ``x**2``, full-width digits → ASCII (NFKC)."""
+    import unicodedata
+
+    text = _POWER.sub(lambda m: "**" + m[1].translate(_SUPERSCRIPTS), text)
+    return unicodedata.normalize("NFKC", text).replace("\u2044", "/")
 
 
 class AnswerError(ValueError):
@@ -320,13 +332,15 @@ _UNSAFE = re.compile(r"__|\.\s*[A-Za-z_]|lambda|[;:`\[\]{}@$!?'\"\\]")
 def _text_number(text: str, degrees: bool) -> Number:
     s = text.strip()
     for sign in DEGREE_SIGNS:
-        if s.endswith(sign):
+        head = s[: len(s) - len(sign)].rstrip()
+        if s.lower().endswith(sign) and (len(sign) == 1 or not head[-1:].isalpha()):
             if not degrees:
                 raise AnswerError(
-                    f"{describe(text)} has a degree sign, but this answer is not an angle"
+                    f"{describe(text)} is marked as degrees, but this answer is not an angle"
                 )
-            s = s[: -len(sign)].strip()
+            s = head
             break
+    s = _plain_text(s).strip()
     if not s:
         raise AnswerError("empty text is not a number")
     try:  # decimals and fractions, exactly, with the package's own reader and limits
@@ -476,7 +490,7 @@ _BRACKETS = "()[]{}⟨⟩"
 
 
 def _text_items(text: str) -> list[str]:
-    s = text.strip()
+    s = _plain_text(text).strip()
     while len(s) >= 2 and s[0] in "([{⟨" and s[-1] in ")]}⟩":
         s = s[1:-1].strip()
     if not s:
@@ -681,3 +695,82 @@ def read_word(x: Any) -> str:
         raise AnswerError("answer with a word, in quotes")
     words = [w for w in x.strip().lower().strip(".!").split() if w not in _FILLER]
     return " ".join(words)
+
+
+# --------------------------------------------------------------------------- expressions
+
+
+class VectorGiven(AnswerError):
+    """A whole vector (three items) given where one expression is asked for."""
+
+    def __init__(self, items: Any) -> None:
+        super().__init__("that is a whole vector, not one expression")
+        self.items = items
+
+
+def read_expression(answer: Any, symbols: dict[str, Any], *, what: str) -> Any:
+    """Read one sympy expression: text, a sympy expression, or either in a box of one.
+
+    Parameters
+    ----------
+    answer : object
+        Text (read by `sympify_text`), a sympy expression, a number, or a
+        one-element tuple, list or matrix holding one of them.
+    symbols : dict
+        The names the expression may use.
+    what : str
+        What the answer should be, for messages.
+
+    Raises
+    ------
+    VectorGiven
+        For three items (a whole vector); its ``items`` holds them.
+    AnswerError
+        For anything else that is not one expression.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> a, b = sp.symbols("a b")
+    >>> read_expression(("a·b − 1",), {"a": a, "b": b}, what="an expression in a, b")
+    a*b - 1
+    """
+    try:
+        return _expression(answer, symbols, what, 0)
+    except AnswerError:
+        raise
+    except Exception:  # an object that misbehaves when asked what it is
+        raise AnswerError(f"{describe(answer)} is not {what}") from None
+
+
+def _expression(answer: Any, symbols: dict[str, Any], what: str, depth: int) -> Any:
+    import sympy as sp
+
+    if isinstance(answer, str):
+        return sympify_text(answer, symbols, what=what)
+    if isinstance(answer, sp.Basic) and not getattr(answer, "is_Matrix", False):
+        if isinstance(answer, sp.Expr):
+            return answer
+        raise AnswerError(f"{describe(answer)} is not {what}")
+    size = _box_size(answer)
+    if size == 1 and depth < 4:  # ("Uy*Vx - Ux*Vy",), [expr], a 1 × 1 matrix: what is inside
+        inner = answer[0, 0] if getattr(answer, "is_Matrix", False) else answer[0]
+        return _expression(inner, symbols, what, depth + 1)
+    if size == 3:
+        raise VectorGiven(list(answer))
+    if answer is None or isinstance(answer, bool):
+        raise AnswerError(f"{describe(answer)} is not {what}")
+    if isinstance(answer, int | Fraction):
+        return sp.Rational(answer)
+    if isinstance(answer, float) and math.isfinite(answer):
+        return sp.Float(answer)
+    raise AnswerError(f"{describe(answer)} is not {what}: give text or a sympy expression")
+
+
+def _box_size(answer: Any) -> int:
+    if getattr(answer, "is_Matrix", False):
+        rows, cols = answer.shape
+        return int(rows * cols) if 1 in (rows, cols) else -1
+    if isinstance(answer, tuple | list):
+        return len(answer)
+    return -1
