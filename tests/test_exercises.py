@@ -597,8 +597,12 @@ WRONG: dict[str, list[tuple[object, str]]] = {
     "06-float64-digits": [
         (lambda: get("06-float64-bits").solution(), "That is the number of bits: multiply it by log10(2)."),
         (17, "17 digits are what it takes to write any float64 so that it reads back exactly; the digits it carries are fewer: count log10(2) per significand bit."),
-        (7, "That is float32's count, from its 24 significand bits: a float64 has more."),
+        (7, "That is about float32's count, from its 24 significand bits: a float64 has more."),
+        (lambda: 24 * math.log10(2), "That is float32's count, from its 24 significand bits: a float64 has more."),
         (14, "Each significand bit is worth log10(2), about 0.301 decimal digits."),
+        (lambda: math.ceil(_sol("06-float64-digits")), "That is p · log10(2) rounded up to a whole number: give the value itself."),
+        (lambda: math.floor(_sol("06-float64-digits")), "That is p · log10(2) rounded down to a whole number: give the value itself."),
+        (lambda: (get("06-float64-bits").solution() - 1) * math.log10(2), "That counts the stored bits (nmant) only: p includes the implicit leading bit."),
     ],
     "07-needle-degenerate": [
         (lambda: not _sol("07-needle-degenerate"), "Compute its sine, |N| / (|U| |V|), and compare it with DEFAULT_TOL = 1e-12: degenerate means sine <= tol."),

@@ -7,8 +7,9 @@ import math
 from trinormal.exercises import Exercise
 from trinormal.exercises.judging import tolerance_text
 
-#: Relative tolerance of 06-float64-digits: 15 and 16 count, 14 and 17 do not.
-DIGITS_TOL = 0.06
+#: Relative tolerance of 06-float64-digits: tight enough that the slip of counting the stored
+#: bits only (52 instead of 53) and the whole numbers around the answer fail.
+DIGITS_TOL = 1e-3
 
 
 def _float64_bits() -> int:
@@ -43,16 +44,32 @@ EXERCISES = (
     ),
     Exercise(
         "06-float64-digits",
-        "About how many decimal digits does a float64 carry? (Answers "
-        f"{tolerance_text(DIGITS_TOL)} count.)",
+        "How many decimal digits does a float64 carry: p · log10(2), p being its number of "
+        f"significand bits? (Answers {tolerance_text(DIGITS_TOL)} count.)",
         expected=_float64_digits,
         tol=DIGITS_TOL,
         hint="Each significand bit is worth log10(2), about 0.301 decimal digits.",
         mistakes=(
             (_float64_bits, "That is the number of bits: multiply it by log10(2)."),
             (
+                lambda: (_float64_bits() - 1) * math.log10(2),
+                "That counts the stored bits (nmant) only: p includes the implicit leading bit.",
+            ),
+            (
+                lambda: math.ceil(_float64_digits()),
+                "That is p · log10(2) rounded up to a whole number: give the value itself.",
+            ),
+            (
+                lambda: math.floor(_float64_digits()),
+                "That is p · log10(2) rounded down to a whole number: give the value itself.",
+            ),
+            (
                 _float32_digits,
                 "That is float32's count, from its 24 significand bits: a float64 has more.",
+            ),
+            (
+                lambda: round(_float32_digits()),
+                "That is about float32's count, from its 24 significand bits: a float64 has more.",
             ),
             (
                 17,
