@@ -527,3 +527,19 @@ def test_threads_give_the_same_bits_as_one_thread(monkeypatch):
     for a, b in zip(results[1], results[4], strict=True):
         assert a.tobytes() == b.tobytes()
     assert np.isfinite(results[4][0]).all()
+
+
+@settings(max_examples=50, deadline=None)
+@given(messy_meshes())
+def test_huge_vertex_numbers_take_the_unpacked_sorts(vf):
+    # above 2**20 the duplicate search, above 2**31 the edge sort, cannot pack their keys
+    _, f = vf
+    for offset in (2**21, 2**31 + 5):
+        g = f + offset
+        same, rev = mesh.duplicate_faces(f)
+        same_g, rev_g = mesh.duplicate_faces(g)
+        assert (same == same_g).all() and (rev == rev_g).all()
+        assert (mesh.boundary_edges(g) == mesh.boundary_edges(f) + offset).all()
+        assert (mesh.non_manifold_edges(g) == mesh.non_manifold_edges(f) + offset).all()
+        assert (mesh.non_manifold_vertices(g) == mesh.non_manifold_vertices(f) + offset).all()
+        assert (mesh.connected_components(g) == mesh.connected_components(f)).all()

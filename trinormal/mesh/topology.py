@@ -75,9 +75,9 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
             if np.array_equal(up, parent):
                 break
             parent = up
-    roots, labels = np.unique(parent, return_inverse=True)
-    del roots
-    out: IntArray = labels.astype(np.intp)
+    # every root is the smallest node of its piece: number the roots in order
+    is_root = parent == np.arange(n)
+    out: IntArray = (np.cumsum(is_root) - 1)[parent].astype(np.intp)
     return out
 
 
@@ -240,8 +240,10 @@ def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
     index[corners] = np.arange(corners.size)
     fan = _components(corners.size, index[c1], index[c2])
     vertex = he.faces.ravel()[corners]
-    pairs = np.unique(np.stack([vertex, fan], axis=1), axis=0)
-    verts, counts = np.unique(pairs[:, 0], return_counts=True)
+    # a fan lies around one vertex: count the fans of each vertex
+    fan_vertex = np.empty(int(fan.max()) + 1 if fan.size else 0, dtype=np.intp)
+    fan_vertex[fan] = vertex
+    verts, counts = np.unique(fan_vertex, return_counts=True)
     return verts.astype(np.intp), counts
 
 
@@ -338,7 +340,12 @@ def _duplicates(f: IntArray) -> tuple[IntArray, IntArray]:
     even = (
         (fc[:, 0] < fc[:, 1]).astype(np.int8) + (fc[:, 1] < fc[:, 2]) + (fc[:, 2] < fc[:, 0])
     ) == 2
-    order = np.lexsort((clean, even, s[:, 2], s[:, 1], s[:, 0]))
+    top = int(s[:, 2].max()) + 1 if s.size else 0
+    if top <= 2**20:  # the three vertices and the winding packed in one 61-bit key
+        key = ((s[:, 0] * top + s[:, 1]) * top + s[:, 2]) * 2 + even
+        order = np.argsort(key, kind="stable")  # stable: file order within a key
+    else:
+        order = np.lexsort((clean, even, s[:, 2], s[:, 1], s[:, 0]))
     s, even, idx = s[order], even[order], clean[order]
     same_key = np.zeros(idx.size, dtype=bool)
     if idx.size:
