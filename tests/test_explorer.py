@@ -8,7 +8,6 @@ import math
 import re
 from fractions import Fraction
 
-import ipywidgets as widgets
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -19,6 +18,7 @@ from trinormal import Winding, triangle_normal
 from trinormal.explorer import COORDINATES, Explorer, ExplorerView, view_state
 from trinormal.explorer import widget as tw
 from trinormal.explorer.view import BUNDLE
+from trinormal.explorer.widget import Control
 
 KEYS = ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz")
 SHARED: dict[str, Explorer] = {}
@@ -35,9 +35,17 @@ def decimal(points):
     return [[repr(float(x)) for x in p] for p in points]
 
 
-def from_browser(widget, name, value):
-    """Change a trait the way a message from the browser does (ipywidgets' set_state)."""
-    widget.set_state({name: value})
+def edit(ex, changes, base=None, view="w1"):
+    """Send an edit the way the view in the browser does (an anywidget custom message)."""
+    edit.seq = getattr(edit, "seq", 0) + 1
+    content = {
+        "edit": changes,
+        "seq": edit.seq,
+        "view": view,
+        "base": ex.view.version if base is None else base,
+    }
+    ex.view._handle_custom_msg(content, [])
+    return ex.view.last_edit
 
 
 def assert_readout_shows(ex, expected, precision):
@@ -56,17 +64,15 @@ def test_controls_are_the_contracted_widgets():
     assert COORDINATES == KEYS
     for key in KEYS:
         slider = ex.controls[key]
-        assert isinstance(slider, widgets.FloatSlider)
+        assert isinstance(slider, Control)
         assert (slider.min, slider.max, slider.step) == (-5.0, 5.0, 0.1)
     assert [ex.controls[k].value for k in KEYS] == [0, 0, 0, 1, 0, 0, 0, 1, 0]
     toggle = ex.controls["winding"]
-    assert isinstance(toggle, widgets.ToggleButtons)
     assert toggle.options == (("A→B→C", "ABC"), ("A→C→B", "ACB"))
     assert toggle.value == "ABC"
     precision = ex.controls["precision"]
-    assert isinstance(precision, widgets.IntSlider)
     assert (precision.min, precision.max, precision.value) == (0, 15, 4)
-    assert isinstance(ex.readout, widgets.HTML)
+    assert ex.view.precision_range == [0, 15]
     assert isinstance(ex.view, ExplorerView)
     assert [ex.inputs[k].value for k in KEYS] == ["0", "0", "0", "1", "0", "0", "0", "1", "0"]
 
@@ -377,27 +383,18 @@ def test_figure_can_be_saved_in_full_by_matplotlib():
 # --------------------------------------------------------------------------- display
 
 
-def test_display_bundle_has_the_live_view_controls_and_a_plain_text_summary():
+def test_display_bundle_is_the_one_view_with_a_plain_text_summary():
     ex = Explorer(precision=2)
-    bundle = ex._repr_mimebundle_()
+    shown = ex._repr_mimebundle_()
+    bundle = shown[0] if isinstance(shown, tuple) else shown
     view = bundle["application/vnd.jupyter.widget-view+json"]
-    assert view["model_id"] == ex.widget.model_id
+    # one widget: the controls are drawn by the view's module, no second widget can echo
+    assert view["model_id"] == ex.view.model_id and ex.widget is ex.view
+    assert ex.view.show_controls
     assert bundle["text/plain"] == ex.summary()
     f = ex.result.format(2)
     for key in ("u", "v", "normal", "magnitude", "area", "unit_normal", "plane", "status"):
         assert f[key] in bundle["text/plain"]
-    box = ex.widget
-    assert box.children[0] is ex.view
-
-    def shown(widget):
-        yield widget
-        for child in getattr(widget, "children", ()):
-            yield from shown(child)
-
-    ids = {id(w) for w in shown(box)}
-    assert {id(c) for c in ex.controls.values()} <= ids
-    assert {id(c) for c in ex.inputs.values()} <= ids
-    assert id(ex.message) in ids
 
 
 def test_repr_names_the_state():
@@ -424,30 +421,93 @@ def test_exact_values_set_by_code_stay_exact_everywhere():
     assert ex.result == triangle_normal(("0.1", "0.2", "0.3"), ("1/3", 0, 0), (0, "2.35", 0))
 
 
-@pytest.mark.parametrize("key", KEYS)
-def test_the_browser_snapping_a_slider_to_its_grid_changes_nothing(key):
-    # ipywidgets' slider puts a value on its grid in the browser and sends it back
-    ex = Explorer(a=("0.1", "0.2", "0.3"), b=("1/3", 0, 0), c=(0, "2.35", 0))
-    before = (ex.result, ex.texts)
-    value = ex.controls[key].value
-    grid = -5 + round((value + 5) / 0.1) * 0.1  # what the browser computes
-    from_browser(ex.controls[key], "value", grid)
-    assert (ex.result, ex.texts) == before
-
-
 def test_a_slider_moved_in_the_browser_lands_exactly_on_the_grid():
+    # the view sends the grid point as text ("3.3"), never the float 3.3000000000000007
     ex = Explorer()
-    from_browser(ex.controls["bx"], "value", -5 + 83 * 0.1)  # 3.3000000000000007
+    assert edit(ex, {"b": ["3.3", "0", "0"]})["ok"]
     assert ex.texts["bx"] == "3.3" and ex.result.exact.b[0] == Fraction(33, 10)
     assert ex.inputs["bx"].value == "3.3" and ex.view.b == ["3.3", "0", "0"]
-    coarse = Explorer(step=0.25)
-    from_browser(coarse.controls["cz"], "value", 1.2500000000000002)
-    assert coarse.texts["cz"] == "1.25" and coarse.result.exact.c[2] == Fraction(5, 4)
+
+
+# --------------------------------------------------------------------------- the edit protocol
+
+
+def test_code_makes_new_versions_and_browser_edits_do_not():
+    ex = Explorer()
+    v0 = ex.view.version
+    ex.set(b=(2, 0, 0))
+    v1 = ex.view.version
+    assert v1 > v0
+    ex.view.show_parallelogram = True  # a trait set from a cell is the kernel's too
+    assert ex.view.version > v1
+    v2 = ex.view.version
+    answer = edit(ex, {"c": ["0", "2", "0"]})
+    assert answer == {"view": "w1", "seq": edit.seq, "ok": True, "stale": False, "error": ""}
+    assert ex.view.version == v2 and ex.result.exact.c == (0, 2, 0)
+
+
+def test_an_edit_made_before_a_cell_set_values_is_refused():
+    # Run All: the browser answers an old state after a later cell has set a new one
+    ex = Explorer(c=(0, 1, 0))
+    old = ex.view.version
+    ex.set(a=(0, 0, 0), b=(1, 0, 0), c=(0, "1/3", 0))  # the last cell
+    answer = edit(ex, {"c": ["0", "0.3", "0"]}, base=old)  # the late answer
+    assert answer["ok"] is False and answer["stale"] is True
+    assert ex.result.exact.c == (0, Fraction(1, 3), 0) and ex.view.c == ["0", "1/3", "0"]
+    assert ex.message.value == ""  # a stale edit is dropped quietly
+
+
+def test_fifty_sets_then_a_final_one_leave_the_final_triangle():
+    ex = Explorer()
+    versions = []
+    for i in range(50):
+        ex.set(c=(0, f"{i % 10}/7", 0))
+        versions.append(ex.view.version)
+    assert versions == sorted(set(versions))  # every set is a new version
+    stale = [edit(ex, {"c": ["0", "0.1", "0"]}, base=v) for v in versions[:-1]]
+    ex.set(a=(0, 0, 0), b=(1, 0, 0), c=(0, 1, 0))
+    late = edit(ex, {"c": ["0", "0.2", "0"]}, base=versions[-1])
+    assert not any(a["ok"] for a in [*stale, late])
+    assert ex.result.exact == triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).exact
+    assert ex.view.state == view_state(ex.result, 4)
+
+
+def test_two_views_share_one_model():
+    ex = Explorer()
+    assert edit(ex, {"a": ["0.5", "0", "0"]}, view="first")["ok"]
+    assert edit(ex, {"b": ["2", "0", "0"]}, view="second")["ok"]  # same version: both taken
+    assert ex.view.a == ["0.5", "0", "0"] and ex.view.b == ["2", "0", "0"]
+    assert ex.view.last_edit["view"] == "second"
+
+
+@pytest.mark.parametrize(
+    ("changes", "message"),
+    [
+        ({"a": [0.5, "0", "0"]}, r"A\.x must be sent as text"),
+        ({"a": ["0", "0"]}, r"A has 2 coordinates"),
+        ({"zz": "1"}, r"unknown field 'zz'"),
+        ({"winding": "CBA"}, r"winding must be 'ABC' or 'ACB'"),
+        ({"precision": 99}, r"precision must be from 0 to 15"),
+        ({"show_unit_normal": "yes"}, r"show_unit_normal must be true or false"),
+    ],
+)
+def test_a_malformed_edit_is_refused_with_a_message(changes, message):
+    ex = Explorer()
+    before = (ex.result, ex.view.version)
+    answer = edit(ex, changes)
+    assert answer["ok"] is False and re.search(message, answer["error"])
+    assert re.search(message, ex.view.message) and (ex.result, ex.view.version) == before
+
+
+def test_toggles_and_precision_from_the_view():
+    ex = Explorer()
+    assert edit(ex, {"show_unit_normal": True, "precision": 2})["ok"]
+    assert ex.view.show_unit_normal and ex.precision == 2 and ex.view.precision == 2
 
 
 def test_dragging_a_vertex_in_the_view_updates_every_surface():
     ex = Explorer(precision=3)
-    from_browser(ex.view, "c", ["0.4", "1.1", "-0.7"])
+    edit(ex, {"c": ["0.4", "1.1", "-0.7"]})
     expected = triangle_normal((0, 0, 0), (1, 0, 0), ("0.4", "1.1", "-0.7"))
     assert ex.result == expected and ex.result.exact.c == (
         Fraction(2, 5),
@@ -462,19 +522,20 @@ def test_dragging_a_vertex_in_the_view_updates_every_surface():
 
 def test_the_view_flips_the_winding():
     ex = Explorer()
-    from_browser(ex.view, "winding", "ACB")
+    edit(ex, {"winding": "ACB"})
     assert ex.result.winding is Winding.ACB and ex.controls["winding"].value == "ACB"
     assert ex.view.state["normal"] == [0.0, 0.0, -1.0]
     assert [row["label"] for row in ex.view.state["readout"][:2]] == ["U = C − A", "V = B − A"]
 
 
-def test_a_bad_move_from_the_view_is_refused_and_the_view_put_back():
+def test_a_bad_move_from_the_view_is_refused_and_the_view_keeps_the_kernel_values():
     ex = Explorer()
     before = ex.result
-    from_browser(ex.view, "a", ["9", "0", "0"])
+    edit(ex, {"a": ["9", "0", "0"]})
     assert ex.result is before and ex.view.a == ["0", "0", "0"]
     assert "A.x = 9 is outside the slider range -5 to 5" in ex.message.value
-    from_browser(ex.view, "b", ["1", "nan", "0"])
+    assert ex.view.message.startswith("A.x = 9 is outside")
+    edit(ex, {"b": ["1", "nan", "0"]})
     assert ex.result is before and ex.view.b == ["1", "0", "0"]
     assert "B.y" in ex.message.value and "NaN" in ex.message.value
 
@@ -485,7 +546,7 @@ def test_a_bad_move_from_the_view_is_refused_and_the_view_put_back():
 )
 def test_typing_a_coordinate_reads_it_exactly(typed, value):
     ex = Explorer()
-    from_browser(ex.inputs["by"], "value", typed)
+    assert edit(ex, {"by": typed})["ok"]
     assert ex.result.exact.b[1] == value and ex.message.value == ""
     assert ex.controls["by"].value == float(value)
 
@@ -497,12 +558,13 @@ def test_typing_a_coordinate_reads_it_exactly(typed, value):
 def test_a_typo_gets_a_message_naming_the_field_and_changes_nothing(typed, message):
     ex = Explorer()
     before = ex.result
-    from_browser(ex.inputs["by"], "value", typed)
+    edit(ex, {"by": typed})
     assert ex.result is before
     assert re.search(message, ex.message.value), ex.message.value
     assert "nan" not in ex.readout.value.lower()
-    from_browser(ex.inputs["by"], "value", "0.5")  # fixing it clears the message
-    assert ex.message.value == "" and ex.result.exact.b[1] == Fraction(1, 2)
+    ex.inputs["by"].value = "0.5"  # fixing it clears the message
+    assert ex.message.value == "" and ex.view.message == ""
+    assert ex.result.exact.b[1] == Fraction(1, 2)
 
 
 def test_view_state_follows_the_contract():
@@ -541,16 +603,9 @@ def test_the_colour_code_is_the_package_one():
     assert Explorer().view.palette == palette()
 
 
-def test_after_the_echo_of_a_tie_one_notch_is_a_real_move():
-    ex = Explorer(c=(0, "2.35", 0))  # halfway between 2.3 and 2.4 on the 0.1 grid
-    from_browser(ex.controls["cy"], "value", 2.3000000000000007)  # the browser picks 2.3
-    assert ex.texts["cy"] == "2.35"
-    from_browser(ex.controls["cy"], "value", 2.400000000000001)  # the student moves it
+def test_an_off_grid_value_stays_until_someone_moves_it():
+    ex = Explorer(b=("1/3", 0, 0), c=(0, "2.35", 0))
+    assert ex.view.b == ["1/3", "0", "0"] and ex.controls["bx"].value == 1 / 3
+    edit(ex, {"c": ["0", "2.4", "0"]})  # the student moves the C.y slider one notch
     assert ex.texts["cy"] == "2.4" and ex.result.exact.c[1] == Fraction(12, 5)
-
-
-def test_showing_an_explorer_twice_keeps_an_off_grid_value():
-    ex = Explorer(b=("1/3", 0, 0))
-    for _ in range(2):  # each view in the browser snaps to 0.3 and sends it
-        from_browser(ex.controls["bx"], "value", 0.30000000000000027)
     assert ex.result.exact.b[0] == Fraction(1, 3)

@@ -2,6 +2,13 @@
 //   node build.mjs [OUTDIR]      (default: ../../trinormal/explorer/static)
 // Writes explorer.js (three.js bundled in, CSS as a string, minified, deterministic) and
 // THIRD_PARTY_LICENSES.txt (three.js's licence, copied from node_modules, with its version).
+//
+// One three.js per page: anywidget imports the module afresh for every widget (and again
+// when a cell is re-run), and each import would evaluate three.js again (three warns about
+// "multiple instances"). So the bundle is an IIFE wrapped in a small ES module that keeps
+// the evaluated runtime on globalThis, keyed by a hash of the code: the first import runs
+// it, every later import of the same build reuses it.
+import { createHash } from "node:crypto";
 import { readFileSync, writeFileSync, mkdirSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -24,12 +31,14 @@ const cssAsText = {
 
 const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.json"), "utf8"));
 
-await build({
+const result = await build({
   absWorkingDir: here,
   entryPoints: ["src/index.js"],
   outfile: join(out, "explorer.js"),
+  write: false,
   bundle: true,
-  format: "esm",
+  format: "iife",
+  globalName: "tnxModule",
   target: "es2020",
   minify: true,
   legalComments: "none", // the licence travels in THIRD_PARTY_LICENSES.txt next to the bundle
@@ -38,10 +47,16 @@ await build({
   sourcemap: false,
   metafile: false,
   logLevel: "warning",
-  banner: {
-    js: `/* trinormal 3D view. Bundles three.js ${three.version} (MIT licence, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
-  },
 });
+const inner = result.outputFiles[0].text.trim();
+const key = createHash("sha256").update(inner).digest("hex").slice(0, 16);
+writeFileSync(
+  join(out, "explorer.js"),
+  `/* trinormal 3D view. Bundles three.js ${three.version} (MIT licence, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */\n` +
+    `const G=globalThis.__trinormalExplorer||(globalThis.__trinormalExplorer={});\n` +
+    `const R=G["${key}"]||(G["${key}"]=(()=>{${inner}\nreturn tnxModule.default})());\n` +
+    `export default R;\n`,
+);
 
 const licence = readFileSync(join(here, "node_modules/three/LICENSE"), "utf8").replace(/\r\n/g, "\n");
 writeFileSync(

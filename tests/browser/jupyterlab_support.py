@@ -103,6 +103,10 @@ def running_lab(root: Path, python: str | Path = sys.executable) -> Iterator[Lab
     settings = root.parent / "lab-settings" / "@jupyterlab" / "apputils-extension"
     settings.mkdir(parents=True, exist_ok=True)
     (settings / "notification.jupyterlab-settings").write_text('{"fetchNews": "false"}')
+    # every cell in the page (no windowing), so a test can reach any cell of a long notebook
+    tracker = root.parent / "lab-settings" / "@jupyterlab" / "notebook-extension"
+    tracker.mkdir(parents=True, exist_ok=True)
+    (tracker / "tracker.jupyterlab-settings").write_text('{"windowingMode": "none"}')
     args.append(f"--LabApp.user_settings_dir={root.parent / 'lab-settings'}")
     args.append(f"--JupyterNotebookApp.user_settings_dir={root.parent / 'lab-settings'}")
     args.append(f"--LabApp.workspaces_dir={root.parent / 'lab-workspaces'}")
@@ -176,5 +180,6 @@ def output_text(page: Any, cell_index: int) -> str:
 def run_cell(page: Any, cell_index: int) -> None:
     """Select one cell and run it with Shift+Enter."""
     cell = page.locator(".jp-Notebook .jp-Cell").nth(cell_index)
+    cell.scroll_into_view_if_needed()
     cell.locator(".jp-InputArea-prompt").click()
     page.keyboard.press("Shift+Enter")

@@ -5,23 +5,53 @@
 three.js) renders it. The same module renders the site's calculator with a small
 model object fed by the site's JavaScript core, so the view is written once.
 
-State flows one way, kernel → traitlets → view, plus the learner's moves, view
-→ traitlets → kernel: a drag or an arrow key writes the moved vertex's
-coordinates as exact grid text (``"0.3"``) into ``a``, ``b`` or ``c``; the
-kernel recomputes with the exact core and answers with ``state``.
+State flows one way, kernel → traitlets → view. The browser never writes a
+traitlet: a learner's move (a drag, an arrow key, a slider, a typed value, a
+toolbar toggle) reaches the kernel as an *identified edit*, a custom message
+``{"edit": {...}, "seq": n, "view": id, "base": version}``. ``version`` counts
+the kernel's own changes (a cell calling ``ex.set``, a trait set from code); an
+edit made against an older version is refused, so a browser's late answer
+never overwrites what a cell set. The kernel applies an accepted edit with the
+exact core and answers in one update: the new values, ``state`` and
+``last_edit`` (which edit this was, and whether it was taken).
+
+Examples
+--------
+>>> v = ExplorerView()
+>>> v.version
+0
+>>> v.a = ["0.5", "0", "0"]  # set from code: a new version
+>>> v.version
+1
+>>> v._handle_custom_msg({"edit": {"b": ["2", "0", "0"]}, "seq": 1, "view": "w", "base": 0}, [])
+>>> v.b, v.last_edit["ok"], v.last_edit["stale"]  # made against version 0: refused
+(['1', '0', '0'], False, True)
+>>> v._handle_custom_msg({"edit": {"b": ["2", "0", "0"]}, "seq": 2, "view": "w", "base": 1}, [])
+>>> v.b, v.last_edit["ok"], v.version  # a browser edit is not a new version
+(['2', '0', '0'], True, 1)
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 import anywidget
 import traitlets
 
 from trinormal.colors import palette
 from trinormal.fields import fields_spec
+from trinormal.validation import MAX_PRECISION, MIN_PRECISION
 
 __all__ = ["BUNDLE", "ExplorerView"]
+
+#: The traits a learner can change in the browser (through an edit) and code can set.
+EDITABLE = ("a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal")
+
+#: An edit handler: applies one edit and returns why it was refused, or None.
+EditHandler = Callable[[dict[str, Any]], "str | None"]
 
 #: The bundled ES module (three.js included), built by ``make js``.
 BUNDLE = Path(__file__).with_name("static") / "explorer.js"
@@ -49,6 +79,17 @@ class ExplorerView(anywidget.AnyWidget):
     state : dict
         What to draw and print, from
         [`trinormal.explorer.state.view_state`][trinormal.explorer.view_state].
+    show_controls : bool
+        Whether the sliders and exact text boxes are shown under the view.
+    precision_range : list of 2 int
+        The decimals the precision control offers.
+    message : str
+        Empty, or why the last edit was refused (shown in the view).
+    version : int
+        Counts the changes made by the kernel; browser edits name the version
+        they were made against.
+    last_edit : dict
+        The last edit the kernel answered: ``view``, ``seq``, ``ok``, ``stale``, ``error``.
     """
 
     _esm = BUNDLE
@@ -66,3 +107,58 @@ class ExplorerView(anywidget.AnyWidget):
     palette = traitlets.Dict(default_value=palette()).tag(sync=True)
     fields = traitlets.List(default_value=fields_spec()).tag(sync=True)
     state = traitlets.Dict().tag(sync=True)
+    show_controls = traitlets.Bool(True).tag(sync=True)
+    precision_range = traitlets.List(
+        traitlets.Int(), default_value=[MIN_PRECISION, MAX_PRECISION]
+    ).tag(sync=True)
+    message = traitlets.Unicode("").tag(sync=True)
+    version = traitlets.Int(0).tag(sync=True)
+    last_edit = traitlets.Dict().tag(sync=True)
+
+    def __init__(self, **kwargs: Any) -> None:
+        self._editing = 1  # the starting values are version 0
+        super().__init__(**kwargs)
+        self._editing = 0
+        #: Applies a browser edit (set by `Explorer`); without one, edits set the traits.
+        self.edit_handler: EditHandler | None = None
+        self.on_msg(self._on_msg)
+
+    @traitlets.observe(*EDITABLE)
+    def _kernel_changed(self, change: Any) -> None:
+        if not self._editing:
+            self.version += 1  # a change the kernel made: edits made before it are stale
+
+    @contextmanager
+    def browser_edit(self) -> Iterator[None]:
+        """Apply changes that answer a browser edit (they do not make a new version)."""
+        self._editing += 1
+        try:
+            yield
+        finally:
+            self._editing -= 1
+
+    def _on_msg(self, _widget: Any, content: Any, _buffers: Any) -> None:
+        if not isinstance(content, dict) or not isinstance(content.get("edit"), dict):
+            return
+        ident = {"view": str(content.get("view", "")), "seq": content.get("seq", 0)}
+        if content.get("base") != self.version:
+            self.last_edit = {**ident, "ok": False, "stale": True, "error": ""}
+            return
+        edit = content["edit"]
+        with self.hold_sync(), self.browser_edit():
+            try:
+                error = (self.edit_handler or self._set_traits)(edit)
+            except Exception as problem:  # a message handler must never raise
+                error = str(problem)
+            self.last_edit = {**ident, "ok": error is None, "stale": False, "error": error or ""}
+
+    def _set_traits(self, edit: dict[str, Any]) -> str | None:
+        unknown = sorted(set(edit) - set(EDITABLE))
+        if unknown:
+            return f"unknown field {unknown[0]!r}"
+        try:
+            for key, value in edit.items():
+                setattr(self, key, value)
+        except traitlets.TraitError as error:
+            return str(error)
+        return None

@@ -8,10 +8,13 @@ setting a control's ``value``). Every surface then shows the new state: the view
 sliders, the text boxes and the readout.
 
 The sliders live on a grid (``step``, default 0.1) and a value the kernel set
-stays exactly as set: a slider's own rounding in the browser is recognised and
-ignored (ipywidgets snaps a value to its step grid and sends the snapped value
-back), so ``Explorer(a=("0.1", "0.2", "0.3"))`` computes with one tenth, one
-fifth and three tenths for as long as nobody moves them.
+stays exactly as set: the controls are drawn by the view's own ES module and
+write nothing back unless the learner moves them, and every move reaches the
+kernel as an identified edit made against a version of the kernel's state (see
+[`ExplorerView`][trinormal.explorer.ExplorerView]). So ``Explorer(a=("0.1", "0.2", "0.3"))``
+computes with one tenth, one fifth and three tenths for as long as nobody moves
+them, and a cell's ``ex.set(...)`` is never overwritten by a late answer from
+the browser.
 
 Everything works without a browser or a kernel, which is how the doctests and
 the tests drive it.
@@ -21,19 +24,15 @@ from __future__ import annotations
 
 import html
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from fractions import Fraction
 from typing import Any
 
-import ipywidgets as widgets
-import traitlets
-
-from trinormal.colors import ROLE_COLORS
 from trinormal.core import TriangleNormal, Winding, triangle_normal
 from trinormal.display import format_number, format_vector
 from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
-from trinormal.explorer.state import coordinate_text, exact_value, grid_text, view_state
+from trinormal.explorer.state import coordinate_text, exact_value, view_state
 from trinormal.explorer.view import ExplorerView
 from trinormal.validation import (
     MAX_PRECISION,
@@ -43,7 +42,7 @@ from trinormal.validation import (
     check_winding,
 )
 
-__all__ = ["COORDINATES", "PRECISION_RANGE", "Explorer"]
+__all__ = ["COORDINATES", "PRECISION_RANGE", "Control", "Explorer", "Text"]
 
 #: Keys of the nine coordinates, in order: A's x, y, z, then B's, then C's.
 COORDINATES: tuple[str, ...] = tuple(p + q for p in "abc" for q in "xyz")
@@ -51,10 +50,7 @@ COORDINATES: tuple[str, ...] = tuple(p + q for p in "abc" for q in "xyz")
 #: Smallest and largest number of decimal places the precision control offers.
 PRECISION_RANGE: tuple[int, int] = (MIN_PRECISION, MAX_PRECISION)
 
-_WINDING_OPTIONS = [(w.label, w.value) for w in Winding]
-#: Rounding slack when comparing a slider value from the browser with the grid: the
-#: browser computes min + k * step in floating point.
-_ECHO_TOLERANCE = Fraction(1, 10**9)
+_WINDING_OPTIONS = tuple((w.label, w.value) for w in Winding)
 
 _RANGE_HINT = "create the Explorer with min= and max= to widen the range"
 
@@ -85,38 +81,43 @@ def _check_winding(value: object) -> str:
     return check_winding(value).value
 
 
-class _CoordinateSlider(widgets.FloatSlider):  # type: ignore[misc]
-    """A FloatSlider that refuses values outside its range instead of clamping them."""
+class Control:
+    """One of the explorer's controls as code sees it: setting ``value`` works like moving it.
 
-    def __init__(self, name: str, **kwargs: Any) -> None:
-        self._coordinate_name = name
-        super().__init__(**kwargs)
+    The controls themselves (sliders, exact text boxes, the order toggle, the
+    decimals) are drawn by the 3D view's ES module, so there is no second widget in
+    the browser whose own rounding could come back as a move. Other attributes
+    (``min``, ``max``, ``step``, ``options``) describe the control.
+    """
 
-    @traitlets.validate("value")
-    def _validate_value(self, proposal: Any) -> float:
-        name = str(getattr(self, "_coordinate_name", self.description))
-        return _check_in_range(name, float(proposal["value"]), self.min, self.max)
+    def __init__(
+        self, read: Callable[[], Any], write: Callable[[Any], None], **attributes: Any
+    ) -> None:
+        self._read, self._write = read, write
+        for name, value in attributes.items():
+            setattr(self, name, value)
+
+    @property
+    def value(self) -> Any:
+        """The control's current value."""
+        return self._read()
+
+    @value.setter
+    def value(self, value: Any) -> None:
+        self._write(value)
+
+    def __repr__(self) -> str:
+        return f"Control(value={self.value!r})"
 
 
-class _PrecisionSlider(widgets.IntSlider):  # type: ignore[misc]
-    """An IntSlider for the decimal places that refuses values outside its range."""
+class Text:
+    """A piece of HTML the explorer keeps up to date (its readout, its message)."""
 
-    @traitlets.validate("value")
-    def _validate_value(self, proposal: Any) -> int:
-        return check_precision(proposal["value"])
+    def __init__(self, value: str = "") -> None:
+        self.value = value
 
-
-class _WindingButtons(widgets.ToggleButtons):  # type: ignore[misc]
-    """ToggleButtons for the winding whose bad values are a ValueError."""
-
-    @traitlets.validate("value")
-    def _validate_value(self, proposal: Any) -> str:
-        return _check_winding(proposal["value"])
-
-
-def _from_browser(widget: widgets.Widget, name: str) -> bool:
-    """Say whether the change being handled came from the browser (not from Python code)."""
-    return name in getattr(widget, "_property_lock", {})
+    def _repr_html_(self) -> str:
+        return self.value
 
 
 class Explorer:
@@ -143,26 +144,27 @@ class Explorer:
     Attributes
     ----------
     view : ExplorerView
-        The live 3D view (an anywidget): drag empty space to turn it, drag a
-        vertex (or its label) to move it, arrow keys and Page Up/Down move a
-        focused vertex one grid step.
-    controls : dict of str to ipywidgets.Widget
-        ``"ax"`` … ``"cz"``: one `ipywidgets.FloatSlider` per coordinate;
-        ``"winding"``: `ipywidgets.ToggleButtons` with values ``"ABC"``
-        and ``"ACB"``, labelled A→B→C and A→C→B; ``"precision"``: an
-        `ipywidgets.IntSlider` from 0 to 15. Setting ``.value`` from
-        code works like a move; a value outside the range is a
-        `ValueError` (ipywidgets would silently clamp it).
-    inputs : dict of str to ipywidgets.Text
-        ``"ax"`` … ``"cz"``: a text box per coordinate holding its exact text;
-        type ``1/3`` or ``-2.35`` and press Enter.
+        The live explorer (one anywidget): the 3D view with its toolbar and
+        readout, then a slider and an exact text box per coordinate and the
+        decimals. Drag empty space to turn the view, drag a vertex (or its
+        label) to move it; arrow keys and Page Up/Down move a focused vertex
+        one grid step; type ``1/3`` or ``-2.35`` in a box and press Enter.
+    controls : dict of str to Control
+        ``"ax"`` … ``"cz"``: each coordinate as a float, with ``min``, ``max``
+        and ``step``; ``"winding"``: ``"ABC"`` or ``"ACB"`` (``options`` pairs
+        the labels A→B→C and A→C→B with them); ``"precision"``: 0 to 15.
+        Setting ``.value`` from code works like a move; a value outside the
+        range is a `ValueError`, never a clamp.
+    inputs : dict of str to Control
+        ``"ax"`` … ``"cz"``: each coordinate's exact text; setting ``.value``
+        works like typing it (a bad value is a message, as in the box).
     result : TriangleNormal
         The current result, recomputed on every change.
-    readout : ipywidgets.HTML
-        U, V, N, |N|, the area, the unit normal, the plane and a status line,
-        with exactly the strings of ``result.format(precision)``.
-    message : ipywidgets.HTML
-        Empty, or why the last typed value was refused.
+    readout : Text
+        U, V, N, |N|, the area, the unit normal, the plane and a status line as
+        HTML, with exactly the strings of ``result.format(precision)``.
+    message : Text
+        Empty, or why the last typed or moved value was refused.
 
     Raises
     ------
@@ -239,14 +241,11 @@ class Explorer:
 
         self._texts: dict[str, str] = texts
         self._precision = precision
-        self._syncing = False
-        self._pushed: dict[str, Fraction] = {k: exact_value(t) for k, t in texts.items()}
-        self._widget: widgets.Widget | None = None
         self._snapshot: Snapshot | None = None
         self.result: TriangleNormal = self._compute(texts, w)
 
-        self.readout = widgets.HTML()
-        self.message = widgets.HTML(layout=widgets.Layout(min_height="1.2em"))
+        self.readout = Text()
+        self.message = Text()
         self.view = ExplorerView(
             a=[texts[k] for k in COORDINATES[0:3]],
             b=[texts[k] for k in COORDINATES[3:6]],
@@ -255,55 +254,49 @@ class Explorer:
             step=step_text,
             bounds=[low, high],
             precision=precision,
-            layout=widgets.Layout(width="100%"),
+            precision_range=list(PRECISION_RANGE),
         )
-        self.controls: dict[str, widgets.Widget] = {}
-        self.inputs: dict[str, widgets.Text] = {}
+        self.view.add_class("trinormal-explorer")
+        self.view.edit_handler = self._edit
+        self.controls: dict[str, Control] = {}
+        self.inputs: dict[str, Control] = {}
         for key in COORDINATES:
-            name = _name(key)
-            self.controls[key] = _CoordinateSlider(
-                name,
-                value=float(exact_value(texts[key])),
-                min=low,
-                max=high,
-                step=float(step_value),
-                description=key[1],
-                readout=False,
-                continuous_update=True,
-                style={"description_width": "1.2em"},
-                layout=widgets.Layout(width="8.5em"),
+            self.controls[key] = Control(
+                self._reader(key), self._slider_writer(key), min=low, max=high, step=self.step
             )
-            self.inputs[key] = widgets.Text(
-                value=texts[key],
-                continuous_update=False,
-                description_allow_html=False,
-                tooltip=f"{name}: type a number such as 0.1, -2 or 1/3 and press Enter",
-                layout=widgets.Layout(width="5em", margin="0 0.8em 0 0"),
-            )
-        self.controls["winding"] = _WindingButtons(
+            self.inputs[key] = Control(self._text_reader(key), self._typist(key))
+        self.controls["winding"] = Control(
+            lambda: self.result.winding.value,
+            lambda value: self.set(winding=value),
             options=_WINDING_OPTIONS,
-            value=w,
-            description="order",
-            tooltips=["U = B − A, V = C − A", "U = C − A, V = B − A"],
-            style={"button_width": "5.5em", "description_width": "3.5em"},
         )
-        self.controls["precision"] = _PrecisionSlider(
-            value=precision,
+        self.controls["precision"] = Control(
+            lambda: self._precision,
+            lambda value: self.set(precision=value),
             min=PRECISION_RANGE[0],
             max=PRECISION_RANGE[1],
-            step=1,
-            description="decimals",
-            style={"description_width": "4.5em"},
-            layout=widgets.Layout(width="17em"),
         )
         self._refresh()
-        for key in COORDINATES:
-            self.controls[key].observe(self._slider_moved, names="value")
-            self.inputs[key].observe(self._typed, names="value")
-        self.controls["winding"].observe(self._winding_changed, names="value")
-        self.controls["precision"].observe(self._precision_changed, names="value")
-        self.view.observe(self._view_moved, names=["a", "b", "c"])
-        self.view.observe(self._winding_changed, names="winding")
+
+    def _reader(self, key: str) -> Callable[[], float]:
+        return lambda: float(exact_value(self._texts[key]))
+
+    def _text_reader(self, key: str) -> Callable[[], str]:
+        return lambda: self._texts[key]
+
+    def _slider_writer(self, key: str) -> Callable[[Any], None]:
+        def write(value: Any) -> None:
+            number = _check_in_range(_name(key), float(value), self.min, self.max)
+            text = coordinate_text(number, _name(key))
+            self._apply({**self._texts, key: text}, self.result.winding.value, self._precision)
+
+        return write
+
+    def _typist(self, key: str) -> Callable[[Any], None]:
+        def write(value: Any) -> None:
+            self._edit({key: value})
+
+        return write
 
     # ------------------------------------------------------------------ reading values
 
@@ -425,33 +418,17 @@ class Explorer:
         self._apply(self._texts, self.result.winding.value, self._precision)
 
     def _refresh(self) -> None:
-        """Push the current state to the sliders, text boxes, view and readout."""
+        """Push the current state to the view (one update), the readout and the snapshot."""
         r, p = self.result, self._precision
-        self._syncing = True
-        try:
-            # the view first: its readout is what the learner is watching
-            with self.view.hold_sync():
-                for i, name in enumerate("abc"):
-                    point = [self._texts[k] for k in COORDINATES[3 * i : 3 * i + 3]]
-                    if getattr(self.view, name) != point:
-                        setattr(self.view, name, point)
-                self.view.winding = r.winding.value
-                self.view.precision = p
-                self.view.state = view_state(r, p)
-            for key in COORDINATES:
-                text = self._texts[key]
-                value = float(exact_value(text))
-                if self.controls[key].value != value:
-                    self.controls[key].value = value
-                    self._pushed[key] = Fraction(value)
-                if self.inputs[key].value != text:
-                    self.inputs[key].value = text
-            if self.controls["winding"].value != r.winding.value:
-                self.controls["winding"].value = r.winding.value
-            if self.controls["precision"].value != p:
-                self.controls["precision"].value = p
-        finally:
-            self._syncing = False
+        with self.view.hold_sync():
+            for i, name in enumerate("abc"):
+                point = [self._texts[k] for k in COORDINATES[3 * i : 3 * i + 3]]
+                if getattr(self.view, name) != point:
+                    setattr(self.view, name, point)
+            self.view.winding = r.winding.value
+            self.view.precision = p
+            self.view.state = view_state(r, p)
+            self.view.message = self.message.value
         self.readout.value = readout_html(r, p)
         if self._snapshot is not None:
             self._snapshot.update(r, p)
@@ -461,74 +438,45 @@ class Explorer:
             '<span role="alert" style="color:#B3261E">'
             f"{html.escape(str(error), quote=False)}</span>"
         )
+        self.view.message = str(error)
 
-    def _slider_moved(self, change: Any) -> None:
-        if self._syncing:
-            return
-        slider = change["owner"]
-        key = next(k for k in COORDINATES if self.controls[k] is slider)
-        value = float(change["new"])
-        if _from_browser(slider, "value"):
-            # the browser's slider moves a value we set to a nearby grid point and sends that
-            # back: an echo, not a move, so the exact value stays
-            if self._is_echo(key, Fraction(value)):
-                return
-            text = grid_text(value, self._step_text)
-        else:
-            text = coordinate_text(value, _name(key))
-        self._apply({**self._texts, key: text}, self.result.winding.value, self._precision)
-
-    def _is_echo(self, key: str, value: Fraction) -> bool:
-        half = Fraction(self._step_text) / 2
-        pushed = self._pushed.pop(key, None)
-        if pushed is not None and abs(value - pushed) <= half + _ECHO_TOLERANCE:
-            return True  # the first answer to a value we pushed, even from a tie
-        return abs(value - exact_value(self._texts[key])) < half - _ECHO_TOLERANCE
-
-    def _typed(self, change: Any) -> None:
-        if self._syncing:
-            return
-        box = change["owner"]
-        key = next(k for k in COORDINATES if self.inputs[k] is box)
-        try:
-            text = self._check_text(key, coordinate_text(str(change["new"]), _name(key)))
-        except (TypeError, ValueError) as error:
-            self._refuse(error)
-            return
-        self._apply({**self._texts, key: text}, self.result.winding.value, self._precision)
-
-    def _view_moved(self, change: Any) -> None:
-        if self._syncing:
-            return
-        p = change["name"]
+    def _edit(self, edit: dict[str, Any]) -> str | None:
+        """Apply one edit from the browser (or a typed value); return why it was refused."""
         texts = dict(self._texts)
+        winding, precision = self.result.winding.value, self._precision
+        toggles: dict[str, bool] = {}
         try:
-            values = list(change["new"])
-            if len(values) != 3:
-                raise ValueError(f"{p.upper()} has {len(values)} coordinates, expected 3")
-            for q, value in zip("xyz", values, strict=True):
-                texts[p + q] = self._check_text(p + q, coordinate_text(str(value), _name(p + q)))
+            for key, value in edit.items():
+                if key in ("a", "b", "c"):
+                    values = list(value)
+                    if len(values) != 3:
+                        raise ValueError(f"{key.upper()} has {len(values)} coordinates, expected 3")
+                    for q, v in zip("xyz", values, strict=True):
+                        texts[key + q] = self._typed_text(key + q, v)
+                elif key in COORDINATES:
+                    texts[key] = self._typed_text(key, value)
+                elif key == "winding":
+                    winding = _check_winding(value)
+                elif key == "precision":
+                    precision = check_precision(value)
+                elif key in ("show_parallelogram", "show_unit_normal"):
+                    if not isinstance(value, bool):
+                        raise ValueError(f"{key} must be true or false, got {value!r}")
+                    toggles[key] = value
+                else:
+                    raise ValueError(f"unknown field {key!r}")
         except (TypeError, ValueError) as error:
             self._refuse(error)
-            self._refresh()  # put the view back where the kernel is
-            return
-        self._apply(texts, self.result.winding.value, self._precision)
+            return str(error)
+        for key, on in toggles.items():
+            setattr(self.view, key, on)
+        self._apply(texts, winding, precision)
+        return None
 
-    def _winding_changed(self, change: Any) -> None:
-        if self._syncing:
-            return
-        try:
-            w = _check_winding(change["new"])
-        except ValueError as error:
-            self._refuse(error)
-            self._refresh()
-            return
-        self._apply(self._texts, w, self._precision)
-
-    def _precision_changed(self, change: Any) -> None:
-        if self._syncing:
-            return
-        self._apply(self._texts, self.result.winding.value, int(change["new"]))
+    def _typed_text(self, key: str, value: Any) -> str:
+        if not isinstance(value, str):
+            raise ValueError(f"{_name(key)} must be sent as text, got {value!r}")
+        return self._check_text(key, coordinate_text(value, _name(key)))
 
     # ------------------------------------------------------------------ static snapshot
 
@@ -566,42 +514,16 @@ class Explorer:
     # ------------------------------------------------------------------ display
 
     @property
-    def widget(self) -> widgets.Widget:
-        """The whole explorer as one box: the 3D view with its readout, then the controls."""
-        if self._widget is None:
-            rows = []
-            for p in "abc":
-                color = ROLE_COLORS[p.upper()]
-                cells: list[widgets.Widget] = [
-                    widgets.HTML(
-                        f'<b style="color:{color};font-size:16px">{p.upper()}</b>',
-                        layout=widgets.Layout(width="1.6em"),
-                    )
-                ]
-                for q in "xyz":
-                    cells += [self.controls[p + q], self.inputs[p + q]]
-                rows.append(widgets.HBox(cells, layout=widgets.Layout(align_items="center")))
-            settings = widgets.HBox(
-                [self.controls["winding"], self.controls["precision"]],
-                layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
-            )
-            self._widget = widgets.VBox(
-                [
-                    self.view,
-                    *rows,
-                    settings,
-                    self.message,
-                ],
-                layout=widgets.Layout(width="100%"),
-            )
-            self._widget.add_class("trinormal-explorer")
-        return self._widget
+    def widget(self) -> ExplorerView:
+        """The whole explorer, one widget: the 3D view, its readout and its controls."""
+        return self.view
 
-    def _repr_mimebundle_(self, **kwargs: Any) -> dict[str, Any]:
+    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
         """Show the live explorer in Jupyter, with a plain-text summary for everywhere else."""
-        bundle: dict[str, Any] = dict(self.widget._repr_mimebundle_(**kwargs))
-        bundle["text/plain"] = self.summary()
-        return bundle
+        shown = self.view._repr_mimebundle_(**kwargs)
+        data, metadata = shown if isinstance(shown, tuple) else (shown, None)
+        bundle: dict[str, Any] = {**(data or {}), "text/plain": self.summary()}
+        return bundle if metadata is None else (bundle, metadata)
 
     def summary(self) -> str:
         """Write the readout as plain text, one quantity a line.

@@ -55,10 +55,13 @@ function readoutRows(out, winding) {
 }
 
 /**
- * A model with anywidget's API (get, set, save_changes, on, off). `state` follows a, b, c,
- * winding and precision. `onSave(changes)` receives what the view wrote ({key: value}).
+ * A model with the part of anywidget's API the view uses (get, send, on, off) and its edit
+ * protocol: the view sends { edit, seq, view, base }; the host's own changes (`update`) count
+ * as new versions, and an edit made against an older version is refused, as the kernel does.
+ * `state` follows a, b, c, winding and precision. `onEdit(changes)` receives an accepted edit
+ * ({key: value}); without it the model applies the edit itself.
  */
-export function createModel(initial, onSave, maxPrecision) {
+export function createModel(initial, onEdit, maxPrecision) {
   const C = constants();
   const view = C.view || {};
   const data = {
@@ -72,11 +75,15 @@ export function createModel(initial, onSave, maxPrecision) {
     show_parallelogram: false,
     show_unit_normal: false,
     show_readout: true,
+    show_controls: false,
     palette: C.palette || {},
+    message: "",
+    version: 0,
+    last_edit: {},
     ...initial,
   };
   const listeners = new Map();
-  let dirty = {};
+  let answering = false; // applying an edit: the changes answer it, they are no new version
 
   function emit(key) {
     for (const cb of [...(listeners.get("change:" + key) || [])]) cb({ name: key, new: data[key] });
@@ -91,30 +98,42 @@ export function createModel(initial, onSave, maxPrecision) {
     emit("state");
   }
 
-  /** Change values without reporting them back to the host (the host's own updates). */
+  /** Change values: the host's own updates (a new version), or the answer to an edit. */
   function update(values) {
     const changed = Object.keys(values).filter((k) => !same(data[k], values[k]));
     for (const k of changed) data[k] = values[k];
+    if (changed.length && !answering) {
+      data.version += 1;
+      changed.push("version");
+    }
     for (const k of changed) emit(k);
     if (changed.some((k) => KEYS.includes(k))) recompute();
     return changed.length > 0;
   }
 
+  function send(content) {
+    if (!content || typeof content.edit !== "object") return;
+    const ident = { view: String(content.view || ""), seq: content.seq || 0 };
+    if (content.base !== data.version) {
+      data.last_edit = { ...ident, ok: false, stale: true, error: "" };
+      emit("last_edit");
+      return;
+    }
+    answering = true;
+    try {
+      if (onEdit) onEdit(content.edit);
+      else update(content.edit);
+    } finally {
+      answering = false;
+    }
+    data.last_edit = { ...ident, ok: true, stale: false, error: "" };
+    emit("last_edit");
+  }
+
   data.state = computeState(data.a, data.b, data.c, data.winding, data.precision, maxPrecision);
   return {
     get: (key) => data[key],
-    set(key, value) {
-      if (same(data[key], value)) return;
-      data[key] = value;
-      dirty[key] = value;
-      emit(key);
-      if (KEYS.includes(key)) recompute();
-    },
-    save_changes() {
-      const changes = dirty;
-      dirty = {};
-      if (Object.keys(changes).length && onSave) onSave(changes);
-    },
+    send,
     on(event, cb) {
       if (!listeners.has(event)) listeners.set(event, new Set());
       listeners.get(event).add(cb);
@@ -163,8 +182,10 @@ function boundsFor(values) {
 async function mountCalculator(host) {
   const calc = document.getElementById("tn-calculator");
   const values = readCalculator();
-  const model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
+  let model = null;
+  model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
     // the view moved a vertex or flipped the order: write the form, let the calculator update
+    // (its input event comes back to sync() below while the edit is being answered)
     let last = null;
     for (const [key, value] of Object.entries(changes)) {
       if (FORM[key]) {
@@ -179,6 +200,8 @@ async function mountCalculator(host) {
         const select = document.getElementById("winding");
         select.value = value;
         select.dispatchEvent(new Event("change", { bubbles: true }));
+      } else if (key === "show_parallelogram" || key === "show_unit_normal") {
+        model.update({ [key]: value });
       }
     }
     if (last) last.dispatchEvent(new CustomEvent("input", { bubbles: true, detail: { fromView: true } }));

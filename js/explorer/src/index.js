@@ -2,22 +2,36 @@
  * The trinormal 3D view: an anywidget-style module, `export default { render }`.
  *
  * render({ model, el }) draws the triangle described by the model into `el` and returns a
- * cleanup function. It uses only model.get / set / save_changes / on / off, so the same
- * module runs in JupyterLab (anywidget) and on the site (a small model fed by the site's
- * exact core). The host computes every printed string (`state`); the view draws, and writes
- * a vertex's coordinates (`a`, `b`, `c`) only when the user moves it.
+ * cleanup function. It uses only model.get / send / on / off, so the same module runs in
+ * JupyterLab (anywidget) and on the site (a small model fed by the site's exact core). The
+ * host computes every printed string (`state`); the view draws.
+ *
+ * The view never writes the host's values. A learner's move (drag, arrow key, slider, typed
+ * value, toolbar toggle) is sent as an identified edit,
+ *   model.send({ edit: { c: ["0.4", "1.1", "0"] }, seq, view, base: version }),
+ * made against the host's `version` (which counts the host's own changes). The host refuses
+ * an edit made against an older version, so a late edit never overwrites what a cell set,
+ * and answers with its values and `last_edit` ({ view, seq, ok }). Until that answer the view
+ * draws its own edit (so a drag follows the pointer); a new `version` from the host ends a
+ * drag in progress and drops whatever the view had not yet had answered.
  */
-import { Vector3 } from "three";
+import { TOUCH, Vector3 } from "three";
 import { Drawing } from "./geometry.js";
 import { setupInteraction } from "./interaction.js";
 import { LabelLayer } from "./labels.js";
 import { niceCeil, parsePoint, powerOfTen, readStep, tickText } from "./numbers.js";
+import { createControls } from "./controls.js";
 import { createReadout } from "./readout.js";
 import { createStage, DEFAULT_DIRECTION } from "./scene.js";
 import { injectStyle } from "./style.js";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
 
-const KEYS = ["a", "b", "c", "winding", "step", "bounds", "show_parallelogram", "show_unit_normal", "show_readout", "palette", "state"];
+const KEYS = [
+  "a", "b", "c", "winding", "precision", "step", "bounds", "show_parallelogram", "show_unit_normal",
+  "show_readout", "show_controls", "precision_range", "palette", "state", "message",
+];
+// what the view draws from its own edit until the host answers
+const DRAWN = new Set(["a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal"]);
 const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
 const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
 
@@ -64,32 +78,60 @@ function button(text, label, onClick) {
   return b;
 }
 
+let views = 0;
+
 function render({ model, el }) {
   injectStyle(el.ownerDocument || document);
+  const viewId = `v${++views}-${Math.random().toString(36).slice(2, 8)}`;
   const root = element("div", "tnx-root");
+  // keys pressed in the explorer (arrows on a vertex, typing a value) are the explorer's, not
+  // JupyterLab's or Notebook 7's shortcuts: Lumino skips an element with this attribute (it
+  // must be on the focused element itself, which a selector such as ":focus" matches)
+  root.dataset.lmSuppressShortcuts = "true";
   const main = element("div", "tnx-main");
+  const side = element("div", "tnx-side");
   const toolbar = element("div", "tnx-toolbar");
   toolbar.setAttribute("role", "toolbar");
   toolbar.setAttribute("aria-label", "3D view");
   const stageEl = element("div", "tnx-stage");
+  // the banner and the legend sit under the view, never over a label or an arrow
   const message = element("p", "tnx-message");
   message.hidden = true;
+  message.setAttribute("role", "status");
   const legend = element("p", "tnx-legend");
   legend.hidden = true;
+  const error = element("p", "tnx-error");
+  error.hidden = true;
+  error.setAttribute("role", "alert");
   const hint = element(
     "p",
     "tnx-hint",
     "Drag empty space to turn the view, scroll or pinch to zoom; x, y, z look along an axis. " +
       "Drag A, B or C to move a point, or Tab to it and press the arrow keys (x, y) or " +
-      "Page Up/Page Down (z).",
+      "Page Up/Page Down (z). On a touch screen, tap the view first, then drag.",
   );
-  main.append(toolbar, stageEl, hint);
-  root.appendChild(main);
+  main.append(toolbar, stageEl, message, legend);
+  root.append(main, side);
   el.appendChild(root);
-  const readout = createReadout(root);
+  const readout = createReadout(side);
+  side.appendChild(hint);
+
+  // ------------------------------------------------------------------ edits and their answers
+  let seq = 0;
+  let pending = {}; // key -> { value, seq }: the view's own edits the host has not answered yet
+  const value = (key) => (key in pending ? pending[key].value : model.get(key));
+  const get = value;
+
+  /** Send a learner's move to the host as an identified edit; draw it until the answer. */
+  function edit(changes) {
+    seq += 1;
+    for (const [key, v] of Object.entries(changes)) {
+      if (DRAWN.has(key)) pending[key] = { value: v, seq };
+    }
+    model.send({ edit: changes, seq, view: viewId, base: model.get("version") ?? 0 });
+  }
 
   let dark = isDark();
-  const get = (key) => model.get(key);
   const colors = (role) => {
     const s = surface(dark);
     switch (role) {
@@ -106,6 +148,7 @@ function render({ model, el }) {
         return roleColor(get("palette"), role, dark);
     }
   };
+  const controls = createControls(root, { get, edit, color: (role) => colors(role) });
 
   let stage;
   try {
@@ -118,38 +161,36 @@ function render({ model, el }) {
     );
     const show = () => {
       readout.show(true);
-      readout.update(get("state"));
+      readout.update(model.get("state"));
+      controls.update();
     };
     show();
-    model.on("change:state", show);
+    for (const key of KEYS) model.on("change:" + key, show);
     return () => {
-      model.off("change:state", show);
+      for (const key of KEYS) model.off("change:" + key, show);
       root.remove();
     };
   }
-  stageEl.append(message, legend);
   const labels = new LabelLayer(stageEl);
   const drawing = new Drawing(stage.scene);
 
   // ------------------------------------------------------------------ toolbar
-  const flip = button("", null, () => {
-    const next = get("winding") === "ACB" ? "ABC" : "ACB";
-    written.winding = next;
-    model.set("winding", next);
-    model.save_changes();
-  });
-  const toggle = (key, text) =>
-    button(text, null, () => {
-      model.set(key, !get(key));
-      model.save_changes();
-    });
-  const para = toggle("show_parallelogram", "Parallelogram");
+  const flip = button("", null, () => edit({ winding: get("winding") === "ACB" ? "ABC" : "ACB" }));
+  const toggle = (key, text) => button(text, null, () => edit({ [key]: !get(key) }));
+  const para = toggle("show_parallelogram", "");
+  para.append(element("span", "tnx-long", "Parallelogram"), element("span", "tnx-short", "▱"));
+  para.setAttribute("aria-label", "Parallelogram");
   const unit = toggle("show_unit_normal", "N/|N|");
   unit.setAttribute("aria-label", "Unit normal N/|N|");
   unit.title = "Show the unit normal N/|N|";
   para.title = "Show the parallelogram on U and V (area |N|)";
+  const reset = button("", "Reset the camera", () => {
+    if (frame) applyFrame(computeFrame(lastGood || dataPoints(), get("winding")), true);
+    stage.reset();
+  });
+  reset.append(element("span", "tnx-long", "Reset view"), element("span", "tnx-short", "Reset"));
   toolbar.append(
-    button("Reset view", "Reset the camera", () => stage.reset()),
+    reset,
     button("x", "View along the x axis", () => stage.along("x")),
     button("y", "View along the y axis", () => stage.along("y")),
     button("z", "View along the z axis", () => stage.along("z")),
@@ -165,6 +206,7 @@ function render({ model, el }) {
     const e = item.el;
     e.dataset.vertex = name;
     e.tabIndex = 0;
+    e.dataset.lmSuppressShortcuts = "true";
     e.setAttribute("role", "button");
     e.setAttribute("aria-roledescription", "movable point");
     e.setAttribute("aria-keyshortcuts", "ArrowLeft ArrowRight ArrowUp ArrowDown PageUp PageDown");
@@ -177,9 +219,9 @@ function render({ model, el }) {
   let frame = null; // { S, offset: Vector3, includeOrigin, radius, L, t }
   let dragging = false;
   let lastGood = null; // last drawable points (data floats)
-  const written = {}; // what the view itself last wrote, per key
-  let hostMoved = false; // the host (not a drag or a key here) changed the triangle
+  let hostMoved = false; // the host (a cell, not this view) changed the triangle
   let display = null; // display-unit points of the last drawing
+  let heads = {}; // display-unit arrow heads of the last drawing
 
   function dataPoints() {
     const pts = [get("a"), get("b"), get("c")].map(parsePoint);
@@ -268,14 +310,16 @@ function render({ model, el }) {
     para.setAttribute("aria-pressed", String(!!get("show_parallelogram")));
     unit.setAttribute("aria-pressed", String(!!get("show_unit_normal")));
     readout.show(!!get("show_readout"));
-    // beside the view when the readout is there (the view stays short enough for a projector)
-    const hintHome = get("show_readout") ? readout.el : main;
-    if (hint.parentNode !== hintHome) hintHome.appendChild(hint);
+    side.classList.toggle("tnx-no-readout", !get("show_readout"));
     if (get("show_readout")) readout.update(st);
     const problem = st.ok === false ? st.error || st.status : st.degenerate ? st.status : "";
     message.hidden = !problem;
     message.textContent = problem || "";
     message.dataset.state = st.ok === false ? "error" : "degenerate";
+    const refused = model.get("message") || "";
+    error.hidden = !refused;
+    error.textContent = refused;
+    controls.update();
     for (const name of "ABC") {
       const values = get(name.toLowerCase()) || [];
       vertexEls[name].setAttribute(
@@ -293,8 +337,9 @@ function render({ model, el }) {
     if (!dragging) {
       const next = computeFrame(pts, winding);
       if (!frame) applyFrame(next, true);
-      else if (hostMoved && stage.atHome() && next.start.angleTo(frame.start) > 0.01) {
-        applyFrame(next, true); // a new triangle from the host: face it, unless the user turned the view
+      else if (hostMoved) {
+        // a new triangle from the host: frame it, facing it unless the user turned the view
+        applyFrame(next, stage.atHome() ? true : "keep");
       } else if (!sameScale(frame, next)) applyFrame(next, "keep");
       else {
         if (next.L !== frame.L || next.t !== frame.t) applyFrame({ ...next, center: frame.center, radius: frame.radius }, false);
@@ -323,6 +368,7 @@ function render({ model, el }) {
     const g = { A, B, C, P, Q, centroid, nDraw, unitDraw, degenerate, showParallelogram: !!get("show_parallelogram"), r };
     drawing.update(g);
     display = { A, B, C };
+    heads = { U: P, V: Q, N: degenerate ? null : centroid.clone().add(nDraw), unit: unitDraw ? centroid.clone().add(unitDraw) : null };
 
     // labels: vertices beyond their points (and the arrow heads there), arrows beside their shafts
     for (const name of "ABC") {
@@ -358,7 +404,36 @@ function render({ model, el }) {
     sync();
   }
 
+  // touch: a finger scrolls the page over the view until a tap activates it (as maps do);
+  // two fingers always zoom and turn it
+  let touchActive = false;
+  function setTouchActive(on) {
+    touchActive = on;
+    root.classList.toggle("tnx-touch-active", on);
+    stage.controls.touches.ONE = on ? TOUCH.ROTATE : null;
+    stage.canvas.style.touchAction = on ? "none" : "pan-y";
+  }
+  setTouchActive(false);
+  let tap = null;
+  const onTapStart = (event) => {
+    tap = event.pointerType === "touch" ? { x: event.clientX, y: event.clientY, t: performance.now(), id: event.pointerId } : null;
+  };
+  const onTapEnd = (event) => {
+    if (!tap || event.pointerId !== tap.id) return;
+    const still = Math.hypot(event.clientX - tap.x, event.clientY - tap.y) < 10 && performance.now() - tap.t < 600;
+    tap = null;
+    if (still && !touchActive) setTouchActive(true);
+  };
+  const onOutside = (event) => {
+    if (touchActive && !root.contains(event.target)) setTouchActive(false);
+  };
+  stageEl.addEventListener("pointerdown", onTapStart, { capture: true });
+  stageEl.addEventListener("pointerup", onTapEnd);
+  const doc = el.ownerDocument || document;
+  doc.addEventListener("pointerdown", onOutside, { capture: true });
+
   const interaction = setupInteraction({
+    touchActive: () => touchActive,
     container: stageEl,
     canvas: stage.canvas,
     camera: stage.camera,
@@ -368,9 +443,7 @@ function render({ model, el }) {
     values: (name) => (get(name.toLowerCase()) || ["", "", ""]).map(String),
     position: (name) => (display ? display[name] : null),
     write(name, strings) {
-      written[name.toLowerCase()] = strings.join("\u0000");
-      model.set(name.toLowerCase(), strings);
-      model.save_changes();
+      edit({ [name.toLowerCase()]: strings });
       flush();
     },
     dragging(on) {
@@ -399,31 +472,59 @@ function render({ model, el }) {
   const handlers = {};
   for (const key of KEYS) {
     handlers[key] = key === "palette" ? onPalette : onChange;
-    if (key === "a" || key === "b" || key === "c" || key === "winding") {
-      handlers[key] = () => {
-        const now = [].concat(get(key)).join("\u0000");
-        if (written[key] !== now) hostMoved = true;
-        onChange();
-      };
-    }
     model.on("change:" + key, handlers[key]);
   }
+  // the host answered an edit: what it answered is no longer drawn from the view's own copy
+  handlers.last_edit = () => {
+    const answer = model.get("last_edit") || {};
+    if (answer.view !== viewId) return;
+    for (const [key, p] of Object.entries(pending)) if (p.seq <= answer.seq) delete pending[key];
+    onChange();
+  };
+  // the host changed its values itself (a cell ran): that is the truth from now on
+  handlers.version = () => {
+    interaction.cancel();
+    pending = {};
+    controls.reset();
+    hostMoved = true;
+    onChange();
+  };
+  model.on("change:last_edit", handlers.last_edit);
+  model.on("change:version", handlers.version);
   const stopTheme = watchTheme((d) => {
     dark = d;
     repaint();
   });
+
+  /** Where the vertices and arrow heads are on screen (px in the view), for tests and tools. */
+  root.tnxProject = () => {
+    if (!display || !frame) return null;
+    const { width, height } = stage.size();
+    stage.camera.updateMatrixWorld();
+    const out = {};
+    for (const [key, p] of Object.entries({ ...display, ...heads })) {
+      if (!p) continue;
+      const q = p.clone().project(stage.camera);
+      out[key] = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
+    }
+    return { width, height, points: out, values: ["a", "b", "c"].map((k) => (get(k) || []).map(String)) };
+  };
 
   stage.resize();
   repaint();
 
   return () => {
     for (const key of KEYS) model.off("change:" + key, handlers[key]);
+    model.off("change:last_edit", handlers.last_edit);
+    model.off("change:version", handlers.version);
+    doc.removeEventListener("pointerdown", onOutside, { capture: true });
     stopTheme();
     interaction();
     labels.dispose();
     drawing.dispose();
     stage.dispose();
     readout.dispose();
+    controls.dispose();
     root.remove();
   };
 }

@@ -19,7 +19,9 @@ const KEYS = {
 
 /**
  * view: { container, canvas, camera, size(), scale(), grid(), bounds(), values(name),
- *         position(name) -> display Vector3, write(name, strings), dragging(bool) }
+ *         position(name) -> display Vector3, write(name, strings), dragging(bool),
+ *         touchActive() -> bool }
+ * Returns a cleanup function; its .cancel() ends a drag in progress without writing.
  */
 export function setupInteraction(view) {
   const raycaster = new Raycaster();
@@ -101,6 +103,8 @@ export function setupInteraction(view) {
 
   function onPointerDown(event) {
     if (drag || event.button > 0) return;
+    // a finger on an inactive view scrolls the page (see index.js: a tap activates the view)
+    if (event.pointerType === "touch" && view.touchActive && !view.touchActive()) return;
     const target = event.target.closest?.("[data-vertex]");
     const name = target ? target.dataset.vertex : event.target === view.canvas ? pick(event.clientX, event.clientY) : null;
     if (!name) return;
@@ -124,17 +128,31 @@ export function setupInteraction(view) {
     if (!frame) frame = requestAnimationFrame(apply);
   }
 
+  function end(pointerId) {
+    const name = drag.name;
+    drag = null;
+    pending = null;
+    view.container.classList.remove("tnx-dragging");
+    if (view.container.hasPointerCapture?.(pointerId)) view.container.releasePointerCapture(pointerId);
+    view.dragging(false, name);
+  }
+
   function onPointerUp(event) {
     if (!drag || event.pointerId !== drag.pointerId) return;
     if (pending) {
       cancelAnimationFrame(frame);
-      apply();
+      frame = 0;
+      if (event.type !== "pointercancel") apply();
     }
-    const name = drag.name;
-    drag = null;
-    view.container.classList.remove("tnx-dragging");
-    if (view.container.hasPointerCapture?.(event.pointerId)) view.container.releasePointerCapture(event.pointerId);
-    view.dragging(false, name);
+    end(event.pointerId);
+  }
+
+  /** The host set new values: the drag ends where it is, and writes nothing more. */
+  function cancel() {
+    if (!drag) return;
+    if (frame) cancelAnimationFrame(frame);
+    frame = 0;
+    end(drag.pointerId);
   }
 
   function onKeyDown(event) {
@@ -159,7 +177,7 @@ export function setupInteraction(view) {
   c.addEventListener("pointerup", onPointerUp);
   c.addEventListener("pointercancel", onPointerUp);
   c.addEventListener("keydown", onKeyDown);
-  return () => {
+  const dispose = () => {
     if (frame) cancelAnimationFrame(frame);
     c.removeEventListener("pointerdown", onPointerDown, { capture: true });
     c.removeEventListener("pointermove", onPointerMove);
@@ -167,4 +185,6 @@ export function setupInteraction(view) {
     c.removeEventListener("pointercancel", onPointerUp);
     c.removeEventListener("keydown", onKeyDown);
   };
+  dispose.cancel = cancel;
+  return dispose;
 }

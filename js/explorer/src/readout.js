@@ -4,6 +4,21 @@
  * Every string comes from `state`: the view prints nothing it computed itself.
  */
 
+/** A value as spans, one per vector component, so a line can break only between them. */
+function setValue(cell, text) {
+  if (cell.dataset.text === text) return;
+  cell.dataset.text = text;
+  cell.textContent = "";
+  const parts = String(text).split(/(?<=,) /);
+  parts.forEach((part, i) => {
+    const span = document.createElement("span");
+    span.className = "tnx-part";
+    span.textContent = part;
+    cell.appendChild(span);
+    if (i < parts.length - 1) cell.appendChild(document.createTextNode(" "));
+  });
+}
+
 export function createReadout(parent) {
   const panel = document.createElement("section");
   panel.className = "tnx-readout";
@@ -34,7 +49,7 @@ export function createReadout(parent) {
       }
       tr.dataset.key = row.key;
       tr.cells[0].textContent = row.label;
-      tr.cells[1].textContent = state.ok === false ? "—" : row.value;
+      setValue(tr.cells[1], state.ok === false ? "—" : row.value);
     });
     status.textContent = (state?.ok === false ? state.error : state?.status) || "";
     status.dataset.state = state?.ok === false ? "error" : state?.degenerate ? "degenerate" : "ok";

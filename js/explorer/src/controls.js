@@ -1,0 +1,126 @@
+/*
+ * The explorer's controls, drawn by the view itself: per coordinate a slider on the grid
+ * (`step`, inside `bounds`) and a box holding its exact text, and the number of decimals.
+ * They write nothing on their own: a learner's move becomes an edit (`edit({...})`), which
+ * the host applies (the kernel, with the exact core) and answers with new values. So a
+ * value the host set (1/3, 2.35) is shown as set and is never rounded back to the grid.
+ */
+import { gridIndex, gridText, parseCoordinate, readStep } from "./numbers.js";
+
+function make(tag, className, text) {
+  const e = document.createElement(tag);
+  // typing here is not a JupyterLab shortcut (see index.js)
+  if (tag === "input" || tag === "select") e.dataset.lmSuppressShortcuts = "true";
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+/**
+ * view: { get(key), edit(changes), color(role) } -> { el, update(), dispose() }
+ */
+export function createControls(parent, view) {
+  const panel = make("div", "tnx-controls");
+  panel.setAttribute("role", "group");
+  panel.setAttribute("aria-label", "Coordinates");
+  const rows = {};
+  for (const p of "abc") {
+    const row = make("div", "tnx-vertex-row");
+    const name = make("span", "tnx-vertex-name", p.toUpperCase());
+    row.appendChild(name);
+    rows[p] = { name, cells: [] };
+    ["x", "y", "z"].forEach((q, i) => {
+      const cell = make("span", "tnx-coord");
+      const slider = make("input", "tnx-slider");
+      slider.type = "range";
+      slider.setAttribute("aria-label", `${p.toUpperCase()}.${q} slider`);
+      const box = make("input", "tnx-exact");
+      box.type = "text";
+      box.spellcheck = false;
+      box.autocomplete = "off";
+      box.setAttribute("aria-label", `${p.toUpperCase()}.${q}, exact value: type a number such as 0.1, -2 or 1/3 and press Enter`);
+      box.title = `${p.toUpperCase()}.${q}: type a number such as 0.1, -2 or 1/3 and press Enter`;
+      cell.append(make("span", "tnx-axis-name", q), slider, box);
+      row.appendChild(cell);
+      rows[p].cells.push({ slider, box });
+
+      let frame = 0;
+      slider.addEventListener("input", () => {
+        // one edit per animation frame while the thumb moves
+        if (frame) return;
+        frame = requestAnimationFrame(() => {
+          frame = 0;
+          const grid = readStep(view.get("step"));
+          const k = gridIndex(Number(slider.value), grid, view.get("bounds"));
+          const values = (view.get(p) || ["0", "0", "0"]).map(String);
+          const text = gridText(k, grid);
+          if (values[i] === text) return;
+          values[i] = text;
+          box.value = text;
+          view.edit({ [p]: values });
+        });
+      });
+      box.addEventListener("input", () => {
+        box.dataset.dirty = "true";
+      });
+      box.addEventListener("change", () => {
+        delete box.dataset.dirty;
+        view.edit({ [p + q]: box.value });
+      });
+      box.addEventListener("keydown", (event) => {
+        if (event.key === "Escape") {
+          delete box.dataset.dirty;
+          box.value = String((view.get(p) || [])[i] ?? "");
+        }
+      });
+    });
+    panel.appendChild(row);
+  }
+  const settings = make("div", "tnx-settings");
+  const decimalsLabel = make("label", "tnx-decimals", "decimals ");
+  const decimals = make("select");
+  decimalsLabel.appendChild(decimals);
+  decimals.addEventListener("change", () => view.edit({ precision: Number(decimals.value) }));
+  settings.appendChild(decimalsLabel);
+  panel.appendChild(settings);
+  parent.appendChild(panel);
+
+  function update() {
+    panel.hidden = view.get("show_controls") === false;
+    const grid = readStep(view.get("step"));
+    const [lo, hi] = (view.get("bounds") || [-5, 5]).map(Number);
+    for (const p of "abc") {
+      rows[p].name.style.color = view.color(p.toUpperCase());
+      const values = (view.get(p) || ["", "", ""]).map(String);
+      rows[p].cells.forEach(({ slider, box }, i) => {
+        slider.min = String(lo);
+        slider.max = String(hi);
+        slider.step = String(grid.value);
+        const x = parseCoordinate(values[i]);
+        // the thumb shows the value; the value itself stays the host's exact text
+        if (Number.isFinite(x) && Number(slider.value) !== x) slider.value = String(x);
+        slider.setAttribute("aria-valuetext", values[i]);
+        if (!box.dataset.dirty && box.value !== values[i]) box.value = values[i];
+      });
+    }
+    const [pMin, pMax] = view.get("precision_range") || [0, 15];
+    if (decimals.options.length !== pMax - pMin + 1) {
+      decimals.textContent = "";
+      for (let n = pMin; n <= pMax; n++) decimals.appendChild(new Option(String(n), String(n)));
+    }
+    const p = String(view.get("precision") ?? 4);
+    if (decimals.value !== p) decimals.value = p;
+  }
+
+  return {
+    el: panel,
+    update,
+    /** Forget what was typed but not sent: the host has set new values. */
+    reset() {
+      for (const p of "abc") for (const { box } of rows[p].cells) delete box.dataset.dirty;
+    },
+    dispose() {
+      panel.remove();
+    },
+  };
+}
