@@ -152,8 +152,12 @@ def kernel_ready(lab: Lab, timeout_s: float = 60) -> None:
     """Wait until the server has a kernel that is idle and connected to the page."""
     deadline = time.monotonic() + timeout_s
     while time.monotonic() < deadline:
-        with urllib.request.urlopen(lab.url + "api/kernels", timeout=5) as r:
-            kernels = json.load(r)
+        try:
+            with urllib.request.urlopen(lab.url + "api/kernels", timeout=5) as r:
+                kernels = json.load(r)
+        except OSError:  # a kernel of an earlier test is shutting down, or the machine is busy
+            time.sleep(0.3)
+            continue
         if any(k["execution_state"] == "idle" and k["connections"] > 0 for k in kernels):
             return
         time.sleep(0.3)

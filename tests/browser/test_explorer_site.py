@@ -326,3 +326,265 @@ def test_keys_stop_at_the_range_and_never_rewrite_a_value(view):
     label.press("ArrowLeft")
     assert view.locator("#bx").input_value() == "4.9"
     assert outputs(view) == python_outputs(inputs(view))
+
+
+# --------------------------------------------------------------------------- framing, overlays
+
+#: Where the view draws A, B, C and the arrow heads (px in the view), and its size.
+PROJECTED = "() => document.querySelector('#tn-view .tnx-root').tnxProject()"
+
+
+def set_triangle(page, a, b, c) -> None:
+    for key, point in zip("abc", (a, b, c), strict=True):
+        for q, value in zip("xyz", point, strict=True):
+            page.fill(f"#{key}{q}", value)
+    settle(page)
+    settle(page)
+
+
+def boxes(page, selector: str) -> list[dict[str, float]]:
+    """Boxes of the visible elements, cut to the view (which clips the labels at its edges)."""
+    stage = page.locator("#tn-view .tnx-stage").bounding_box()
+    found = [
+        b for b in (e.bounding_box() for e in page.locator(selector).all()) if b and b["width"]
+    ]
+    cut = []
+    for b in found:
+        x0, y0 = max(b["x"], stage["x"]), max(b["y"], stage["y"])
+        x1 = min(b["x"] + b["width"], stage["x"] + stage["width"])
+        y1 = min(b["y"] + b["height"], stage["y"] + stage["height"])
+        if x1 > x0 and y1 > y0:
+            cut.append({"x": x0, "y": y0, "width": x1 - x0, "height": y1 - y0})
+    return cut
+
+
+def overlaps(a: dict[str, float], b: dict[str, float]) -> bool:
+    return not (
+        a["x"] + a["width"] <= b["x"]
+        or b["x"] + b["width"] <= a["x"]
+        or a["y"] + a["height"] <= b["y"]
+        or b["y"] + b["height"] <= a["y"]
+    )
+
+
+def assert_framed(page) -> dict[str, list[float]]:
+    """The triangle spans at least 40 % of the view's smaller side; nothing is clipped."""
+    drawn = page.evaluate(PROJECTED)
+    w, h = drawn["width"], drawn["height"]
+    corners = [drawn["points"][k] for k in "ABC"]
+    xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+    span = max(max(xs) - min(xs), max(ys) - min(ys))
+    assert span >= 0.4 * min(w, h), (span, w, h)
+    for key, (x, y) in drawn["points"].items():
+        assert 0 <= x <= w and 0 <= y <= h, (key, x, y, w, h)
+    stage = page.locator("#tn-view .tnx-stage").bounding_box()
+    for label in boxes(page, "#tn-view .tnx-vertex:visible, #tn-view .tnx-arrow:visible"):
+        assert label["x"] >= stage["x"] and label["y"] >= stage["y"], label
+        assert label["x"] + label["width"] <= stage["x"] + stage["width"], label
+        assert label["y"] + label["height"] <= stage["y"] + stage["height"], label
+    return drawn["points"]
+
+
+@pytest.mark.parametrize(
+    "triangle",
+    [
+        (("0", "0", "0"), ("0.1", "0", "0"), ("0", "0.1", "0")),  # a tenth of the usual size
+        (("0.3", "0.1", "0.2"), ("0.1", "0.4", "0"), ("0", "0", "0.3")),
+        (("3", "3", "3"), ("3.5", "3", "3"), ("3", "3.5", "3.2")),  # far from the origin
+        (("-4", "4", "1"), ("-3", "4.5", "1"), ("-3.6", "3.4", "2")),
+    ],
+)
+def test_the_camera_frames_a_new_triangle_and_a_drag_never_moves_it(view, triangle):
+    set_triangle(view, *triangle)
+    before = assert_framed(view)
+    # dragging A moves A only: B and C stay where they are on the screen (no re-framing)
+    x, y = centre(view, '#tn-view [data-vertex="A"]')
+    view.mouse.move(x, y)
+    view.mouse.down()
+    for i in range(1, 6):
+        view.mouse.move(x + 4 * i, y - 3 * i)
+    view.mouse.up()
+    settle(view)
+    after = view.evaluate(PROJECTED)["points"]
+    for key in ("B", "C"):
+        assert after[key] == pytest.approx(before[key], abs=0.5), key
+    # Reset view frames it again
+    view.get_by_role("button", name="Reset the camera").click()
+    settle(view)
+    assert_framed(view)
+
+
+def test_the_banner_and_the_legend_never_cover_a_label_or_an_arrow(view):
+    set_triangle(view, ("0", "0", "0"), ("1", "0", "0"), ("2", "0", "0"))  # collinear
+    banner = view.locator("#tn-view .tnx-message")
+    assert banner.is_visible()
+    labels = boxes(view, "#tn-view .tnx-label:visible")
+    assert labels and not any(overlaps(banner.bounding_box(), b) for b in labels)
+    set_triangle(view, ("1", "0", "0"), ("3", "1", "0"), ("2", "3", "0"))
+    view.get_by_role("button", name="Parallelogram").click()
+    settle(view)
+    legend = view.locator("#tn-view .tnx-legend")
+    assert legend.is_visible() and "|N|" in legend.inner_text()
+    stage = view.locator("#tn-view .tnx-stage").bounding_box()
+    drawn = view.evaluate(PROJECTED)
+    heads = [
+        {"x": stage["x"] + x - 4, "y": stage["y"] + y - 4, "width": 8, "height": 8}
+        for x, y in drawn["points"].values()
+    ]
+    for overlay in (legend.bounding_box(), view.locator("#tn-view .tnx-hint").bounding_box()):
+        if overlay is None:
+            continue
+        for b in [*boxes(view, "#tn-view .tnx-label:visible"), *heads]:
+            assert not overlaps(overlay, b), (overlay, b)
+
+
+# --------------------------------------------------------------------------- phones and touch
+
+
+def swipe(cdp, x: float, y: float, dx: float, dy: float, steps: int = 10) -> None:
+    """One finger from (x, y), moving (dx, dy) px a step (CDP touch events)."""
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]})
+    for i in range(1, steps + 1):
+        point = {"x": x + dx * i, "y": y + dy * i}
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [point]})
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+
+
+def _touch_page(browser, width: int):
+    context = browser.new_context(
+        viewport={"width": width, "height": 640}, has_touch=True, is_mobile=True
+    )
+    page = context.new_page()
+    return context, page
+
+
+def test_a_swipe_over_the_view_scrolls_the_page_a_tap_activates_it_and_a_pinch_zooms(
+    browser, server
+):
+    context, page = _touch_page(browser, 360)
+    messages: list[str] = []
+    page.on(
+        "console", lambda m: messages.append(m.text) if m.type in ("warning", "error") else None
+    )
+    try:
+        page.goto(server + "calculator/")
+        page.wait_for_selector("#tn-view[data-ready='true']")
+        page.locator("#tn-view canvas").evaluate("c => c.scrollIntoView({block: 'center'})")
+        settle(page)
+        cdp = context.new_cdp_session(page)
+        box = page.locator("#tn-view .tnx-stage").bounding_box()
+        x, y = box["x"] + box["width"] * 0.3, box["y"] + box["height"] * 0.6
+        # one finger, downwards over the view: the page scrolls back up
+        start = page.evaluate("window.scrollY")
+        assert start > 100
+        swipe(cdp, x, y, 0, 12)
+        page.wait_for_timeout(300)
+        assert page.evaluate("window.scrollY") < start - 50
+        # a tap activates the view (as a map does); then one finger turns it, not the page
+        page.locator("#tn-view canvas").evaluate("c => c.scrollIntoView({block: 'center'})")
+        settle(page)
+        box = page.locator("#tn-view .tnx-stage").bounding_box()
+        x, y = box["x"] + box["width"] * 0.3, box["y"] + box["height"] * 0.6
+        for kind, points in (("touchStart", [{"x": x, "y": y}]), ("touchEnd", [])):
+            cdp.send("Input.dispatchTouchEvent", {"type": kind, "touchPoints": points})
+        settle(page)
+        assert page.locator("#tn-view .tnx-touch-active").count() == 1
+        before = page.evaluate(PROJECTED)["points"]
+        scroll = page.evaluate("window.scrollY")
+        cdp.send(
+            "Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]}
+        )
+        for i in range(1, 8):
+            point = {"x": x + 12 * i, "y": y - 6 * i}
+            cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [point]})
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        settle(page)
+        assert page.evaluate("window.scrollY") == scroll
+        assert page.evaluate(PROJECTED)["points"]["A"] != before["A"]  # the view turned
+        # two fingers apart: the view zooms in (the triangle grows on the screen)
+        page.locator("#tn-view").get_by_role("button", name="Reset the camera").click()
+        settle(page)
+
+        drawn = page.evaluate(PROJECTED)
+        far = drawn["distance"]
+        # the fingers start away from the points (a finger on a point would drag it)
+        spots = [
+            (drawn["width"] * fx, drawn["height"] * fy)
+            for fx in (0.3, 0.5, 0.7)
+            for fy in (0.3, 0.5, 0.7)
+        ]
+        sx, sy = max(
+            spots,
+            key=lambda s: min(abs(s[0] - x) + abs(s[1] - y) for x, y in drawn["points"].values()),
+        )
+        cx, cy = box["x"] + sx, box["y"] + sy
+        for i in range(0, 8):
+            kind = "touchStart" if i == 0 else "touchMove"
+            d = 20 + 10 * i
+            points = [{"x": cx - d, "y": cy, "id": 1}, {"x": cx + d, "y": cy, "id": 2}]
+            cdp.send("Input.dispatchTouchEvent", {"type": kind, "touchPoints": points})
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        settle(page)
+        assert page.evaluate(PROJECTED)["distance"] < far * 0.8  # the camera came closer
+        assert [m for m in messages if "GPU stall due to ReadPixels" not in m] == []
+    finally:
+        context.close()
+
+
+@pytest.mark.parametrize("width", [360, 768, 1280])
+def test_no_readout_value_is_cut_on_the_explorer_page(browser, server, width):
+    context = browser.new_context(viewport={"width": width, "height": 800})
+    page = context.new_page()
+    try:
+        page.goto(server + "notebooks/05_explorer/")
+        page.wait_for_selector(".tn-explorer-live[data-ready='true']")
+        for scheme in ("default", "slate"):
+            page.evaluate(f"document.body.setAttribute('data-md-color-scheme', '{scheme}')")
+            settle(page)
+            assert page.evaluate("document.documentElement.scrollWidth") <= width
+            cells = page.locator(".tn-explorer-live .tnx-readout td").evaluate_all(
+                """(cells) => cells.map((td) => {
+                    const r = td.getBoundingClientRect();
+                    const parts = [...td.querySelectorAll('.tnx-part')].map(
+                        (p) => p.getClientRects().length);
+                    let box = td.parentElement;
+                    while (box && getComputedStyle(box).overflowX === 'visible') box = box.parentElement;
+                    return {text: td.textContent, right: r.right, cut: td.scrollWidth > td.clientWidth + 1,
+                            parts, clip: box ? box.getBoundingClientRect().right : innerWidth};
+                })"""
+            )
+            assert len(cells) == 7
+            for cell in cells:
+                assert not cell["cut"] and cell["right"] <= min(width, cell["clip"]) + 1, cell
+                assert all(n == 1 for n in cell["parts"]), cell  # no component breaks
+    finally:
+        context.close()
+
+
+def test_one_three_js_however_many_views_and_no_console_warnings(page, server, traffic):
+    messages: list[str] = []
+    page.on(
+        "console", lambda m: messages.append(m.text) if m.type in ("warning", "error") else None
+    )
+    page.goto(server + "notebooks/05_explorer/")
+    page.wait_for_selector(".tn-explorer-live[data-ready='true']")
+    # a second and a third view of the same bundle, as a re-run cell would import it again
+    count = page.evaluate(
+        """async () => {
+            const url = new URL('../../assets/explorer/explorer.js', location.href).href;
+            for (let i = 0; i < 2; i++) {
+                const view = (await import(url + '?again=' + i)).default;
+                const el = document.createElement('div');
+                document.body.appendChild(el);
+                const state = {a: ['0', '0', '0'], b: ['1', '0', '0'], c: ['0', '1', '0'],
+                               winding: 'ABC', state: {}, bounds: [-5, 5], step: '0.1'};
+                view.render({model: {get: (k) => state[k], send() {}, on() {}, off() {}}, el});
+            }
+            await new Promise((r) => setTimeout(r, 300));
+            return document.querySelectorAll('.tnx-root canvas').length;
+        }"""
+    )
+    assert count == 3
+    assert page.evaluate("Object.keys(globalThis.__trinormalExplorer).length") == 1
+    assert [m for m in messages if "GPU stall due to ReadPixels" not in m] == []
+    assert not traffic.problems()

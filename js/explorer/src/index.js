@@ -32,6 +32,9 @@ const KEYS = [
 ];
 // what the view draws from its own edit until the host answers
 const DRAWN = new Set(["a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal"]);
+// N is drawn at its length, but at least 0.6 and at most N_MAX times the longest edge, so
+// the triangle and N fit the picture together
+const N_MAX = 1.1;
 const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
 const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
 
@@ -252,13 +255,17 @@ function render({ model, el }) {
     const extD = Math.max(...disp.map((p) => Math.max(Math.abs(p.x), Math.abs(p.y), Math.abs(p.z))));
     const t = niceCeil(Math.max(extD, 1e-9) / 1.5); // a labelled tick every t, grid lines every t/2
     const L = t * (Math.floor(extD / t + 1e-9) + 1.5);
-    // the framed box: the points, the tip of N as drawn, and the origin when it is in view
+    // the framed box: the points and the tips of N and the unit normal as drawn (the origin
+    // and the axes are context: framing them too would make a triangle away from it small)
     const box = disp.slice();
     const [a, b, c] = disp;
     const n = new Vector3().crossVectors(b.clone().sub(a), c.clone().sub(a));
     const lMax = Math.max(a.distanceTo(b), a.distanceTo(c), b.distanceTo(c));
-    if (n.length() > 0) box.push(a.clone().add(b).add(c).divideScalar(3).add(n.setLength(Math.min(n.length(), 1.4 * lMax))));
-    if (includeOrigin) box.push(new Vector3());
+    const centroid = a.clone().add(b).add(c).divideScalar(3);
+    if (n.length() > 0) {
+      box.push(centroid.clone().add(n.clone().setLength(Math.min(Math.max(n.length(), 0.6 * lMax), N_MAX * lMax))));
+      if (get("show_unit_normal")) box.push(centroid.clone().add(n.clone().setLength(Math.min(Math.max(1 / S, 0.35 * lMax), 2 * lMax))));
+    }
     const lo = box[0].clone();
     const hi = box[0].clone();
     for (const p of box) {
@@ -267,12 +274,12 @@ function render({ model, el }) {
     }
     const center = lo.clone().add(hi).multiplyScalar(0.5);
     const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
-    return { S, offset, includeOrigin, radius, center, L, t, start: startDirection(winding === "ACB" ? n.negate() : n) };
+    return { S, offset, includeOrigin, radius, center, box, L, t, start: startDirection(winding === "ACB" ? n.negate() : n) };
   }
 
   function applyFrame(next, moveCamera) {
     frame = next;
-    stage.frameSphere(next.center, next.radius * 1.05, moveCamera, next.start);
+    if (moveCamera !== false) stage.framePoints(next.box, moveCamera, next.start);
     const r = frame.radius * 0.014;
     const ticks = drawing.setAxes(next.L, next.t, r * 0.5, colors, next.includeOrigin);
     drawing.setGrid(next.L, next.t, surface(dark), next.includeOrigin);
@@ -289,9 +296,8 @@ function render({ model, el }) {
     }
   }
 
-  function sameScale(a, b) {
-    return a && b && a.S === b.S && a.includeOrigin === b.includeOrigin && a.offset.equals(b.offset) &&
-      b.radius < a.radius * 1.6 && b.radius > a.radius / 2.5;
+  function sameUnits(a, b) {
+    return a && b && a.S === b.S && a.includeOrigin === b.includeOrigin && a.offset.equals(b.offset);
   }
 
   function readoutValue(key) {
@@ -340,11 +346,12 @@ function render({ model, el }) {
       else if (hostMoved) {
         // a new triangle from the host: frame it, facing it unless the user turned the view
         applyFrame(next, stage.atHome() ? true : "keep");
-      } else if (!sameScale(frame, next)) applyFrame(next, "keep");
+      } else if (!sameUnits(frame, next)) applyFrame(next, "keep"); // drawn in other units now
       else {
+        // the learner's own move: the camera stays (nothing jumps); the axes may grow
         if (next.L !== frame.L || next.t !== frame.t) applyFrame({ ...next, center: frame.center, radius: frame.radius }, false);
         const shown = pts.map((p) => new Vector3(p[0] - frame.offset.x, p[1] - frame.offset.y, p[2] - frame.offset.z).divideScalar(frame.S));
-        if (!stage.inView(shown)) applyFrame(next, "keep"); // a typed value left the view: step back
+        if (!stage.inView(shown)) applyFrame(next, "keep"); // a point left the view: step back
       }
     }
     hostMoved = false;
@@ -359,7 +366,7 @@ function render({ model, el }) {
     const degenerate = !!st.degenerate || !(nLen > 0) || !Number.isFinite(nLen);
     const lMax = Math.max(U.length(), V.length(), 1e-9);
     let nDraw = new Vector3();
-    if (!degenerate) nDraw = n.clone().setLength(Math.min(Math.max(nLen, 0.6 * lMax), 1.4 * lMax));
+    if (!degenerate) nDraw = n.clone().setLength(Math.min(Math.max(nLen, 0.6 * lMax), N_MAX * lMax));
     let unitDraw = null;
     if (!degenerate && get("show_unit_normal")) {
       unitDraw = n.clone().setLength(Math.min(Math.max(1 / S, 0.35 * lMax), 2 * lMax));
@@ -507,7 +514,8 @@ function render({ model, el }) {
       const q = p.clone().project(stage.camera);
       out[key] = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
     }
-    return { width, height, points: out, values: ["a", "b", "c"].map((k) => (get(k) || []).map(String)) };
+    const distance = stage.camera.position.distanceTo(stage.controls.target);
+    return { width, height, distance, points: out, values: ["a", "b", "c"].map((k) => (get(k) || []).map(String)) };
   };
 
   stage.resize();

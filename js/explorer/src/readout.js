@@ -4,12 +4,15 @@
  * Every string comes from `state`: the view prints nothing it computed itself.
  */
 
-/** A value as spans, one per vector component, so a line can break only between them. */
+/**
+ * A value as spans (a vector's components; a plane's terms), so a line can break only
+ * between them, never inside a number.
+ */
 function setValue(cell, text) {
   if (cell.dataset.text === text) return;
   cell.dataset.text = text;
   cell.textContent = "";
-  const parts = String(text).split(/(?<=,) /);
+  const parts = String(text).split(/(?<=,) | (?=[+=−-] )/);
   parts.forEach((part, i) => {
     const span = document.createElement("span");
     span.className = "tnx-part";
@@ -24,6 +27,7 @@ export function createReadout(parent) {
   panel.className = "tnx-readout";
   panel.setAttribute("aria-label", "Readout");
   const table = document.createElement("table");
+  table.className = "tnx-table"; // a class, so a page's styles for plain tables leave it alone
   const body = document.createElement("tbody");
   table.appendChild(body);
   const status = document.createElement("p");

@@ -6,6 +6,7 @@ import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
 export const DEFAULT_DIRECTION = new Vector3(1.0, 0.75, 0.65).normalize();
 const FOV = 40;
+const LABEL_MARGIN = 28;
 
 /**
  * True when WebGL runs on the CPU (SwiftShader, llvmpipe: no usable GPU). Multisampling then
@@ -47,6 +48,8 @@ export function createStage(container, { onRender }) {
     target: new Vector3(),
     distance: 6,
     radius: 1,
+    points: [new Vector3()], // what home keeps in view (display units)
+    center: new Vector3(), // the middle of their box
     direction: DEFAULT_DIRECTION.clone(), // where the camera looks from now
     start: DEFAULT_DIRECTION.clone(), // where "Reset view" looks from
   };
@@ -77,16 +80,51 @@ export function createStage(container, { onRender }) {
     renderer.setSize(w, h, false);
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
-    home.distance = fitDistance(home.radius);
     if (atHome) look(home.direction);
     requestRender();
   }
 
-  /** The distance at which a sphere of this radius fits the narrower side of the view. */
-  function fitDistance(radius) {
-    const vHalf = ((FOV / 2) * Math.PI) / 180;
-    const hHalf = Math.atan(Math.tan(vHalf) * camera.aspect);
-    return (Math.max(radius, 1e-6) / Math.sin(Math.min(vHalf, hHalf))) * 1.05;
+  /**
+   * The distance from home's target, looking from `direction`, at which every framed point
+   * projects inside the view with LABEL_MARGIN px to spare on each side (for the labels
+   * beyond the points and the arrow heads). Exact for the perspective camera.
+   */
+  function basis(direction) {
+    const z = direction.clone().normalize();
+    const x = new Vector3().crossVectors(camera.up, z);
+    if (x.lengthSq() < 1e-12) x.set(1, 0, 0);
+    x.normalize();
+    return { x, y: new Vector3().crossVectors(z, x), z };
+  }
+
+  /** Where to look so the framed points sit in the middle of the picture (not just of a box). */
+  function fitTarget(direction) {
+    const { x, y } = basis(direction);
+    const xs = home.points.map((p) => p.clone().sub(home.center).dot(x));
+    const ys = home.points.map((p) => p.clone().sub(home.center).dot(y));
+    const cx = (Math.min(...xs) + Math.max(...xs)) / 2;
+    const cy = (Math.min(...ys) + Math.max(...ys)) / 2;
+    return home.center.clone().addScaledVector(x, cx).addScaledVector(y, cy);
+  }
+
+  function fitDistance(direction) {
+    const { x, y, z } = basis(direction);
+    const tanV = Math.tan(((FOV / 2) * Math.PI) / 180);
+    const tanH = tanV * camera.aspect;
+    const sx = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(width, 1));
+    const sy = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(height, 1));
+    let distance = 1e-6;
+    for (const p of home.points) {
+      const q = p.clone().sub(home.target);
+      const depth = q.dot(z);
+      distance = Math.max(
+        distance,
+        depth + Math.abs(q.dot(x)) / (tanH * sx),
+        depth + Math.abs(q.dot(y)) / (tanV * sy),
+      );
+    }
+    // never so close that a point is near the camera
+    return Math.max(distance * 1.02, home.radius * 1.2);
   }
 
   const observer = new ResizeObserver(resize);
@@ -97,17 +135,21 @@ export function createStage(container, { onRender }) {
   });
 
   /**
-   * Remember a framing (centre, radius) as home. go: true moves the camera there along the
-   * default direction, "keep" along its current direction, false leaves it where it is.
+   * Remember a framing (the points to keep in view) as home. go: true moves the camera there
+   * along the start direction, "keep" along its current direction, false leaves it.
    */
-  function frameSphere(center, radius, go = true, start = null) {
+  function framePoints(points, go = true, start = null) {
     if (start) home.start.copy(start);
-    home.target.copy(center);
-    home.radius = radius;
-    home.distance = fitDistance(radius);
-    camera.near = home.distance / 200;
-    camera.far = home.distance * 50;
-    camera.updateProjectionMatrix();
+    home.points = points.map((p) => p.clone());
+    const lo = points[0].clone();
+    const hi = points[0].clone();
+    for (const p of points) {
+      lo.min(p);
+      hi.max(p);
+    }
+    home.center.copy(lo).add(hi).multiplyScalar(0.5);
+    home.target.copy(home.center);
+    home.radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
     if (go === "keep") look(camera.position.clone().sub(controls.target));
     else if (go) look(home.start);
   }
@@ -127,6 +169,11 @@ export function createStage(container, { onRender }) {
     atHome = true;
     const d = direction.clone().normalize();
     if (Math.abs(d.z) > 0.999) d.set(0, -1e-3, Math.sign(d.z)).normalize();
+    home.target.copy(fitTarget(d));
+    home.distance = fitDistance(d);
+    camera.near = home.distance / 200;
+    camera.far = home.distance * 50;
+    camera.updateProjectionMatrix();
     controls.target.copy(home.target);
     camera.position.copy(home.target).addScaledVector(d, home.distance);
     camera.lookAt(home.target);
@@ -143,7 +190,7 @@ export function createStage(container, { onRender }) {
     requestRender,
     renderNow,
     resize,
-    frameSphere,
+    framePoints,
     inView,
     reset: () => look(home.start),
     atHome: () => atHome,
