@@ -20,7 +20,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 JS = ROOT / "js" / "explorer"
 STATIC = ROOT / "trinormal" / "explorer" / "static"
-OUTPUTS = ("explorer.js", "THIRD_PARTY_LICENSES.txt")
+OUTPUTS = ("explorer.js", "mesh-view.js", "THIRD_PARTY_LICENSES.txt")
 REBUILD = "run `make js` and commit trinormal/explorer/static/"
 
 

@@ -52,6 +52,7 @@ PLACEHOLDER = re.compile(r"\{\{\s*trinormal:(\w+)((?:\s+[^}]*?)?)\s*\}\}")
 EXPLORER_STATIC = ROOT / "trinormal" / "explorer" / "static"
 EXPLORER_ASSETS = "assets/explorer"
 CONSTANTS_JS = "assets/javascripts/trinormal-constants.js"
+MESH_EXAMPLES = "assets/meshes"
 
 # --------------------------------------------------------------------------- notebooks
 
@@ -275,7 +276,15 @@ def site_constants() -> dict[str, Any]:
         "verdicts": dict(VERDICTS),
         "format": {"sci_above_log10": SCI_ABOVE_LOG10},
         "view": {"step": view["step"], "bounds": view["bounds"]},
+        "mesh": mesh_page_constants(),
     }
+
+
+def mesh_page_constants() -> dict[str, Any]:
+    """The mesh page's messages, limits, report rows and tolerance, from the package."""
+    from trinormal.mesh_page import site_constants as mesh_constants
+
+    return mesh_constants()
 
 
 def constants_js() -> str:
@@ -652,6 +661,10 @@ def add_explorer_assets(files: Files, config: MkDocsConfig) -> None:
             File.generated(config, f"{EXPLORER_ASSETS}/{path.name}", abs_src_path=str(path))
         )
     files.append(File.generated(config, CONSTANTS_JS, content=constants_js()))
+    from trinormal.mesh_page import EXAMPLES, example_file
+
+    for name, _ in EXAMPLES:
+        files.append(File.generated(config, f"{MESH_EXAMPLES}/{name}", content=example_file(name)))
 
 
 def on_page_markdown(markdown: str, page: Page, config: MkDocsConfig, files: Files) -> str:
@@ -899,5 +912,27 @@ def _limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return str(limits()[name])
 
 
+def _mesh_examples(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_examples``: one button per example model of the mesh page (list items)."""
+    from trinormal.mesh_page import EXAMPLES
+
+    root = relative_root(page)
+    return "\n".join(
+        f'<li><button type="button" class="md-button" data-example="{root}{MESH_EXAMPLES}/'
+        f'{html.escape(name)}">{html.escape(label)}</button></li>'
+        for name, label in EXAMPLES
+    )
+
+
+def _mesh_limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_limit NAME``: one of the mesh page's limits, with thousands separated."""
+    from trinormal.mesh_page import LIMITS
+
+    (name,) = args
+    return f"{LIMITS[name]:,}".replace(",", "\u202f")
+
+
+HANDLERS["mesh_examples"] = _mesh_examples
+HANDLERS["mesh_limit"] = _mesh_limit
 HANDLERS["result_rows"] = _result_rows
 HANDLERS["limit"] = _limit

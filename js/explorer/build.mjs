@@ -1,6 +1,6 @@
 // Build the 3D view into one ES module for JupyterLab (anywidget) and the site:
 //   node build.mjs [OUTDIR]      (default: ../../trinormal/explorer/static)
-// Writes explorer.js (three.js bundled in, CSS as a string, minified, deterministic) and
+// Writes explorer.js and mesh-view.js (three.js bundled in, CSS as a string, minified, deterministic) and
 // THIRD_PARTY_LICENSES.txt (three.js's licence, copied from node_modules, with its version).
 //
 // One three.js per page: anywidget imports the module afresh for every widget (and again
@@ -58,12 +58,33 @@ writeFileSync(
     `export default R;\n`,
 );
 
+// The mesh view (src/mesh/view.js) of the site's "Check a mesh" page: a file of its own, built
+// from the same three.js, so each page loads one copy of three.js (this one or explorer.js).
+await build({
+  absWorkingDir: here,
+  entryPoints: ["src/mesh/view.js"],
+  outfile: join(out, "mesh-view.js"),
+  bundle: true,
+  format: "esm",
+  target: "es2020",
+  minify: true,
+  legalComments: "none",
+  charset: "utf8",
+  plugins: [cssAsText],
+  sourcemap: false,
+  metafile: false,
+  logLevel: "warning",
+  banner: {
+    js: `/* trinormal mesh view. Bundles three.js ${three.version} (MIT licence, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
+  },
+});
+
 const licence = readFileSync(join(here, "node_modules/three/LICENSE"), "utf8").replace(/\r\n/g, "\n");
 writeFileSync(
   join(out, "THIRD_PARTY_LICENSES.txt"),
-  "explorer.js bundles the following third-party software.\n\n" +
+  "explorer.js and mesh-view.js bundle the following third-party software.\n\n" +
     `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
     licence.trimEnd() +
     "\n",
 );
-console.log(`built ${join(out, "explorer.js")} with three ${three.version}`);
+console.log(`built ${join(out, "explorer.js")} and mesh-view.js with three ${three.version}`);

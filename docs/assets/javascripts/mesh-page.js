@@ -1,0 +1,307 @@
+/*
+ * The "Check a mesh" page: choose or drop an OBJ, STL or PLY file, or an example; a Web Worker
+ * (mesh-worker.js, running trinormal-mesh.js) reads it, checks it and fixes its winding, with a
+ * progress bar; the page shows the report (rows and sentences from the package, through
+ * TRINORMAL_CONSTANTS.mesh), the model in 3D (assets/explorer/mesh-view.js) and offers the
+ * repaired file for download. Nothing leaves the browser.
+ */
+const WORKER = new URL("mesh-worker.js", import.meta.url).href;
+const VIEW = new URL("../explorer/mesh-view.js", import.meta.url).href;
+const SHOWN = 12; // list at most this many indices in a row of the report
+
+const $ = (id) => document.getElementById(id);
+
+function constants() {
+  return window.TRINORMAL_CONSTANTS || {};
+}
+
+function message(key, values = {}) {
+  const template = (constants().mesh || {}).messages?.[key] || key;
+  return template.replace(/\{(\w+)\}/g, (m, name) => (values[name] !== undefined ? String(values[name]) : m));
+}
+
+/** A Web Worker with request ids: run(op, data, transfer, onProgress) -> Promise of the result. */
+function createWorker() {
+  const worker = new Worker(WORKER);
+  let next = 1;
+  const pending = new Map();
+  worker.onmessage = (event) => {
+    const { id, type } = event.data;
+    const job = pending.get(id);
+    if (!job) return;
+    if (type === "progress") job.onProgress(event.data.stage, event.data.fraction);
+    else {
+      pending.delete(id);
+      if (type === "done") job.resolve(event.data.result);
+      else job.reject(new Error(event.data.message));
+    }
+  };
+  let broken = null; // the worker failed to start: every job fails with this
+  worker.onerror = (event) => {
+    event.preventDefault();
+    broken = new Error(message("internal", { detail: event.message || "the worker stopped" }));
+    for (const job of pending.values()) job.reject(broken);
+    pending.clear();
+  };
+  return {
+    run(op, data, transfer, onProgress) {
+      const id = next++;
+      if (broken) return Promise.reject(broken);
+      return new Promise((resolve, reject) => {
+        pending.set(id, { resolve, reject, onProgress: onProgress || (() => {}) });
+        worker.postMessage({ op, id, ...data }, transfer || []);
+      });
+    },
+    terminate: () => worker.terminate(),
+  };
+}
+
+/** A tiny model with anywidget's API for the mesh view. */
+function createModel(initial) {
+  const data = { ...initial };
+  const listeners = new Map();
+  return {
+    get: (key) => data[key],
+    set(key, value) {
+      data[key] = value;
+      for (const cb of listeners.get("change:" + key) || []) cb({ name: key, new: value });
+    },
+    save_changes() {},
+    on(event, cb) {
+      if (!listeners.has(event)) listeners.set(event, new Set());
+      listeners.get(event).add(cb);
+    },
+    off(event, cb) {
+      if (!event) listeners.clear();
+      else if (!cb) listeners.delete(event);
+      else listeners.get(event)?.delete(cb);
+    },
+  };
+}
+
+function cell(tag, text, attrs = {}) {
+  const e = document.createElement(tag);
+  if (text !== undefined) e.textContent = text;
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  return e;
+}
+
+/** How one value of the report reads in its row. */
+function show(value) {
+  if (value === true) return message("yes");
+  if (value === false) return message("no");
+  if (value === null || value === undefined) return "—";
+  if (Array.isArray(value)) {
+    if (!value.length) return "0";
+    const items = value.slice(0, SHOWN).map((x) => (Array.isArray(x) ? `${x[0]}–${x[1]}` : String(x)));
+    const more = value.length - SHOWN;
+    const list = items.join(", ") + (more > 0 ? ", " + message("more", { count: more }) : "");
+    return `${value.length} (${list})`;
+  }
+  return String(value);
+}
+
+function mount(root) {
+  const input = $("tn-mesh-file");
+  const status = $("tn-mesh-status");
+  const bar = $("tn-mesh-progress");
+  const barBox = $("tn-mesh-progress-box");
+  const result = $("tn-mesh-result");
+  const fixButton = $("tn-mesh-fix");
+  const download = $("tn-mesh-download");
+  const drop = $("tn-mesh-drop");
+  const worker = createWorker();
+  let current = null; // the last result from the worker
+  let fixedFile = null;
+  let busy = false;
+  let view = null;
+  const model = createModel({ palette: constants().palette || {}, mesh: null });
+
+  function setStatus(text, state = "ok") {
+    status.textContent = text;
+    status.dataset.state = state;
+  }
+
+  function progress(stage, fraction) {
+    // reading is the first half of the bar, checking the second
+    const value = stage === "read" ? fraction / 2 : 0.5 + fraction / 2;
+    bar.value = Math.round(value * 100);
+    bar.setAttribute("aria-valuetext", `${bar.value} %`);
+  }
+
+  function setBusy(on) {
+    busy = on;
+    root.dataset.busy = String(on);
+    barBox.hidden = !on;
+    input.disabled = on;
+    for (const b of root.querySelectorAll("button")) b.disabled = on || (b === download && !fixedFile) || (b === fixButton && !canFix());
+  }
+
+  function canFix() {
+    return !!current && current.report.faces_to_flip.length > 0;
+  }
+
+  function renderReport(r) {
+    const tbody = $("tn-mesh-rows");
+    tbody.textContent = "";
+    const rows = (constants().mesh || {}).rows || [];
+    for (const [key, label] of rows) {
+      const tr = document.createElement("tr");
+      tr.append(cell("th", label, { scope: "row" }), cell("td", show(r[key])));
+      tr.dataset.key = key;
+      tbody.appendChild(tr);
+    }
+    const pieces = $("tn-mesh-pieces");
+    pieces.textContent = "";
+    r.components.forEach((c, i) => {
+      const tr = document.createElement("tr");
+      tr.append(
+        cell("th", String(i + 1), { scope: "row" }),
+        cell("td", String(c.faces)),
+        cell("td", show(c.closed)),
+        cell("td", show(c.consistent)),
+        cell("td", show(c.orientable)),
+        cell("td", show(c.outward)),
+        cell("td", String(c.faces_to_flip)),
+      );
+      pieces.appendChild(tr);
+    });
+    const summary = $("tn-mesh-summary");
+    summary.textContent = "";
+    for (const line of window.TrinormalMesh.summary(r)) summary.appendChild(cell("li", line));
+  }
+
+  async function showView(res) {
+    const host = $("tn-mesh-view");
+    model.set("mesh", {
+      positions: res.positions,
+      faces: res.faces,
+      flipped: res.flipped,
+      boundary: res.boundary,
+      non_manifold: res.non_manifold,
+    });
+    if (!view) {
+      const module = await import(VIEW);
+      host.textContent = "";
+      view = module.default.render({ model, el: host });
+    }
+    host.dataset.ready = "true";
+  }
+
+  function showResult(res, note) {
+    current = res;
+    result.hidden = false;
+    $("tn-mesh-name").textContent = res.name;
+    const kind = res.format.toUpperCase() + (res.format === "obj" ? "" : res.binary ? " (binary)" : " (ASCII)");
+    $("tn-mesh-format").textContent = kind;
+    renderReport(res.report);
+    root.dataset.report = JSON.stringify(res.report);
+    setStatus(note || "", "ok");
+    return showView(res);
+  }
+
+  async function open(name, buffer) {
+    if (busy) return;
+    fixedFile = null;
+    setBusy(true);
+    bar.value = 0;
+    setStatus(message("reading", { name }));
+    try {
+      const res = await worker.run("open", { name, buffer }, [buffer], (stage, f) => {
+        if (stage === "check" && f === 0) setStatus(message("checking", { name }));
+        progress(stage, f);
+      });
+      const shown = showResult(res);
+      setBusy(false);
+      root.dataset.state = "done";
+      await shown;
+    } catch (err) {
+      root.dataset.state = "error";
+      current = null;
+      result.hidden = true;
+      setBusy(false);
+      setStatus(err.message, "error");
+    }
+  }
+
+  async function fix() {
+    if (busy || !canFix()) return;
+    const name = current.name;
+    setBusy(true);
+    bar.value = 50;
+    setStatus(message("fixing"));
+    try {
+      const count = current.report.faces_to_flip.length;
+      const res = await worker.run("fix", {}, [], progress);
+      fixedFile = { bytes: res.file, name: fixedName(name) };
+      const shown = showResult(res, message("fixed", { count }));
+      setBusy(false);
+      root.dataset.state = "fixed";
+      await shown;
+    } catch (err) {
+      setBusy(false);
+      setStatus(err.message, "error");
+    }
+  }
+
+  function fixedName(name) {
+    const m = /^(.*?)(\.[^.]*)?$/.exec(name);
+    return `${m[1]}-fixed${m[2] || ""}`;
+  }
+
+  function save() {
+    if (!fixedFile) return;
+    const blob = new Blob([fixedFile.bytes], { type: "application/octet-stream" });
+    const url = URL.createObjectURL(blob);
+    const a = document.createElement("a");
+    a.href = url;
+    a.download = fixedFile.name;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10_000);
+  }
+
+  input.addEventListener("change", async () => {
+    const file = input.files && input.files[0];
+    if (file) open(file.name, await file.arrayBuffer());
+  });
+  fixButton.addEventListener("click", fix);
+  download.addEventListener("click", save);
+  for (const b of root.querySelectorAll("button[data-example]")) {
+    b.addEventListener("click", async () => {
+      const url = new URL(b.dataset.example, document.baseURI);
+      try {
+        const response = await fetch(url);
+        if (!response.ok) throw new Error(String(response.status));
+        open(url.pathname.split("/").pop(), await response.arrayBuffer());
+      } catch (err) {
+        setStatus(message("internal", { detail: err.message }), "error");
+      }
+    });
+  }
+  // dropping a file anywhere on the box (the file input stays the keyboard's way in)
+  root.addEventListener("dragover", (e) => {
+    e.preventDefault();
+    drop.dataset.over = "true";
+  });
+  root.addEventListener("dragleave", () => {
+    drop.dataset.over = "false";
+  });
+  root.addEventListener("drop", async (e) => {
+    e.preventDefault();
+    drop.dataset.over = "false";
+    const file = e.dataTransfer && e.dataTransfer.files[0];
+    if (file) open(file.name, await file.arrayBuffer());
+  });
+  setBusy(false);
+  root.dataset.ready = "true";
+}
+
+function init() {
+  const root = $("tn-mesh");
+  if (root && window.TrinormalMesh && !root.dataset.ready) mount(root);
+}
+
+if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", init);
+else init();

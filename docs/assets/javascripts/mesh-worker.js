@@ -1,0 +1,83 @@
+/*
+ * The mesh check's Web Worker: reads the file, checks it, fixes its winding and writes the
+ * repaired file, off the page's main thread, so a million faces never freeze the page.
+ *
+ * Messages in: {op: "open", id, name, buffer} (the file's bytes, transferred),
+ *              {op: "fix", id}.
+ * Messages out: {id, type: "progress", stage, fraction},
+ *               {id, type: "done", result}, {id, type: "error", message}.
+ * The worker keeps the last mesh read; "fix" works on it.
+ */
+/* global importScripts, TrinormalMesh */
+self.window = self; // trinormal-constants.js sets window.TRINORMAL_CONSTANTS
+importScripts("trinormal-constants.js", "trinormal-mesh.js");
+
+let current = null; // {mesh, faces, report}
+
+function post(id, type, extra, transfer) {
+  self.postMessage(Object.assign({ id, type }, extra), transfer || []);
+}
+
+function progressFor(id, stage) {
+  let last = -1;
+  return (fraction) => {
+    const f = Math.round(fraction * 100) / 100;
+    if (f !== last) {
+      last = f;
+      post(id, "progress", { stage, fraction: f });
+    }
+  };
+}
+
+/** What the page needs: the report, and the mesh for the 3D view (float32 copies). */
+function payload(mesh, faces, report, file) {
+  const positions = new Float32Array(mesh.vertices);
+  const faceCopy = new Uint32Array(faces);
+  const result = {
+    name: mesh.name,
+    format: mesh.format,
+    binary: !!mesh.binary,
+    polygons: mesh.polygons,
+    split_polygons: mesh.split_polygons,
+    report: TrinormalMesh.toDict(report),
+    positions,
+    faces: faceCopy,
+    boundary: report._boundary_sides,
+    non_manifold: report._non_manifold_sides,
+    flipped: new Int32Array(report.faces_to_flip),
+  };
+  const transfer = [positions.buffer, faceCopy.buffer, result.boundary.buffer, result.non_manifold.buffer, result.flipped.buffer];
+  if (file) {
+    result.file = file;
+    transfer.push(file.buffer);
+  }
+  return [result, transfer];
+}
+
+self.onmessage = (event) => {
+  const { op, id } = event.data;
+  try {
+    if (op === "open") {
+      const t0 = performance.now();
+      const mesh = TrinormalMesh.read(event.data.buffer, event.data.name, progressFor(id, "read"));
+      const t1 = performance.now();
+      const report = TrinormalMesh.check(mesh.vertices, mesh.faces, progressFor(id, "check"));
+      const t2 = performance.now();
+      current = { mesh, faces: mesh.faces, report };
+      const [result, transfer] = payload(mesh, mesh.faces, report);
+      result.timing = { read_ms: t1 - t0, check_ms: t2 - t1 };
+      post(id, "done", { result }, transfer);
+    } else if (op === "fix") {
+      if (!current) throw new Error("no mesh to fix");
+      const faces = TrinormalMesh.fixWinding(current.faces, current.report);
+      const report = TrinormalMesh.check(current.mesh.vertices, faces, progressFor(id, "check"));
+      current = { mesh: current.mesh, faces, report };
+      const file = TrinormalMesh.write(current.mesh, faces);
+      const [result, transfer] = payload(current.mesh, faces, report, file);
+      post(id, "done", { result }, transfer);
+    }
+  } catch (err) {
+    if (err instanceof TrinormalMesh.MeshError) post(id, "error", { message: err.message });
+    else post(id, "error", { message: TrinormalMesh.message("internal", { detail: String((err && err.message) || err) }) });
+  }
+};
