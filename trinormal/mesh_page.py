@@ -32,10 +32,13 @@ __all__ = [
     "site_constants",
 ]
 
-#: The largest file and the most faces the page reads (a browser tab's memory is limited).
+#: The largest file and the most faces the page reads (a browser tab's memory is limited), and
+#: the most faces it draws in 3D without being asked (a bigger model is drawn on a click: its
+#: first frame can take seconds on a computer without a graphics card).
 LIMITS: dict[str, int] = {
     "max_bytes": 300 * 1024 * 1024,
     "max_faces": 5_000_000,
+    "max_view_faces": 300_000,
 }
 
 #: Every sentence the page can show about a file, as templates with ``{placeholders}``.
@@ -88,6 +91,11 @@ MESSAGES: dict[str, str] = {
     "yes": "yes",
     "no": "no",
     "more": "{count} more",
+    "view_big": (
+        "This model has {count} faces. Drawing it in 3D may pause the page for a few seconds "
+        "on a computer without a graphics card."
+    ),
+    "view_draw": "Draw the model in 3D",
     "reading": "Reading {name}…",
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",

@@ -35,6 +35,11 @@ def _open(page, url: str, scheme: str) -> None:
         page.wait_for_selector("body[data-math='typeset']", timeout=20_000)
     if page.locator("#tn-calculator").count():
         page.wait_for_selector("#tn-calculator[data-ready='true']")
+    if page.locator("#tn-mesh").count():  # the mesh page with a report, its tables and its view
+        page.wait_for_selector("#tn-mesh[data-ready='true']")
+        page.locator("button[data-example]").first.click()
+        page.wait_for_selector("#tn-mesh[data-state='done']")
+        page.wait_for_selector("#tn-mesh-view[data-ready='true']")
     page.wait_for_selector("body[data-scrollboxes='checked']")
     page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", scheme)
     page.wait_for_timeout(400)  # Material fades colours in over 0.25 s when the palette changes

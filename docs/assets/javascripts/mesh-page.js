@@ -173,6 +173,26 @@ function mount(root) {
 
   async function showView(res) {
     const host = $("tn-mesh-view");
+    const limit = ((constants().mesh || {}).limits || {}).max_view_faces || Infinity;
+    const nf = res.faces.length / 3;
+    if (nf > limit && !host.dataset.asked) {
+      // a big model is drawn when the reader asks: its first frame can take seconds
+      if (view) {
+        view();
+        view = null;
+      }
+      host.textContent = "";
+      host.dataset.ready = "false";
+      const note = cell("p", message("view_big", { count: nf.toLocaleString("en") }), { class: "tn-mesh-view-note" });
+      const draw = cell("button", message("view_draw"), { type: "button", class: "md-button", id: "tn-mesh-draw" });
+      draw.addEventListener("click", () => {
+        host.dataset.asked = "true";
+        showView(res);
+      });
+      host.append(note, draw);
+      return;
+    }
+    delete host.dataset.asked;
     model.set("mesh", {
       positions: res.positions,
       faces: res.faces,
