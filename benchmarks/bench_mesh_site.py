@@ -35,6 +35,7 @@ from browser_support import CHROMIUM, CHROMIUM_ARGS, built_site, serve_site  # n
 
 from trinormal.mesh import check, parse_mesh, torus  # noqa: E402
 
+TWO_FRAMES = "() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))"
 WATCH = """() => {
   window.__gaps = [];
   window.__seen = [];
@@ -97,7 +98,9 @@ def main() -> None:
         if page.locator("#tn-mesh-draw").count():  # a big model is drawn when asked
             page.click("#tn-mesh-draw")
         page.wait_for_selector("#tn-mesh-view[data-ready='true']", timeout=120_000)
-        page.evaluate("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+        page.evaluate(
+            "() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))"
+        )
         drawn = time.perf_counter() - start
         gaps = page.evaluate("window.__gaps")
         split = len(gaps)

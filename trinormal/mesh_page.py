@@ -8,8 +8,8 @@ puts :func:`site_constants` into ``trinormal-constants.js``.
 
 Examples
 --------
->>> MESSAGES["empty_file"].format(name="model.stl")
-'model.stl is empty: there is nothing to read.'
+>>> MESSAGES["no_faces"].format(name="model.stl")
+'model.stl has no faces: there is no surface to check.'
 >>> LIMITS["max_faces"]
 5000000
 """
@@ -41,51 +41,72 @@ LIMITS: dict[str, int] = {
     "max_view_faces": 300_000,
 }
 
-#: Every sentence the page can show about a file, as templates with ``{placeholders}``.
+#: What the page says about a file it cannot read. The reasons (``at_line`` to the last PLY one)
+#: are the wording of `trinormal.mesh.MeshFileError` for the same file, as templates: the page
+#: writes "NAME: REASON" or "NAME, line N: REASON" as Python does, and the browser tests check
+#: that both say the same on every bad file of ``tests/data/meshes/bad/``. The others are the
+#: page's own (its limits, its progress and its buttons).
 MESSAGES: dict[str, str] = {
-    "empty_file": "{name} is empty: there is nothing to read.",
+    "at_line": "{name}, line {line}",
+    "unknown_format": "unknown mesh format {ext}; trinormal reads .obj, .stl and .ply",
+    "no_extension": "(no extension)",
+    "binary_data": "not a text {what} file (binary data)",
+    "not_a_number": "{token} is not a number",
+    "not_finite": "{token} is not a finite number",
+    "obj_vertex": "a vertex needs three coordinates: v x y z",
+    "obj_face_short": "a face needs at least three corners",
+    "obj_index": "{token} is not a vertex number",
+    "obj_back": "face corner {index} refers back past the first vertex ({count} {vertices} so far)",
+    "obj_zero": "vertex numbers start at 1, not 0",
+    "obj_statement": "{token} is not an OBJ statement",
+    "obj_empty": "no vertices and no faces: not an OBJ mesh",
+    "obj_index_range": "face {face} refers to vertex {index}, but the file has {count} {vertices}",
+    "stl_not_finite": "triangle {triangle} has a coordinate that is not finite",
+    "stl_not_stl": (
+        "not an STL file: it is not text starting with 'solid', and a binary STL of {count} "
+        "triangles would have {expected} bytes, not {size}"
+    ),
+    "stl_short": "not an STL file: too short, and it does not start with 'solid'",
+    "stl_vertex_outside": "'vertex' outside 'outer loop' … 'endloop'",
+    "stl_vertex": "a vertex needs three coordinates: vertex x y z",
+    "stl_endloop": "'endloop' without 'outer loop'",
+    "stl_facet": (
+        "the facet starting at line {start} has {count} vertices; an STL facet has exactly 3"
+    ),
+    "stl_before_endloop": "{token} before 'endloop'",
+    "stl_keyword": "{token} is not an STL keyword",
+    "stl_ends_in_facet": "the file ends inside a facet",
+    "ply_not_ply": "not a PLY file: it must start with 'ply' and have an 'end_header' line",
+    "ply_format": "the format must be ascii, binary_little_endian or binary_big_endian",
+    "ply_element": "write an element as: element NAME COUNT",
+    "ply_property_first": "a property before any element",
+    "ply_type": "unknown property type",
+    "ply_property": "cannot read the property {token}",
+    "ply_keyword": "{token} is not a PLY header keyword",
+    "ply_no_format": "the header has no 'format' line",
+    "ply_no_vertex": "the header has no 'vertex' element",
+    "ply_no_axis": "the vertex element has no '{axis}' property",
+    "ply_not_finite": "vertex {vertex} has a coordinate that is not finite",
+    "ply_corners": "face {face} has {count} corners; a face needs 3 or more",
+    "ply_index_range": "face {face} refers to vertex {index}, but {valid}",
+    "ply_valid": "the valid vertices are 0 to {last}",
+    "ply_no_vertices": "there are no vertices",
+    "ply_ascii_short": "the file ends after {rows} of {count} '{element}' rows",
+    "ply_expected": "expected {count} numbers, found {found}",
+    "ply_row": "cannot read this '{element}' row",
+    "ply_too_many": "this '{element}' row has {count} values too many",
+    "ply_binary_short": "the file ends inside the '{element}' element ({rows} of {count} rows)",
+    "ply_binary_row": "the file ends inside '{element}' row {row} of {count}",
+    # the page's own
     "too_large": (
         "{name} is {size} bytes; this page reads files of up to {max} bytes. "
         "The Python package (trinormal mesh FILE) has no such limit."
     ),
-    "unknown_format": (
-        "{name} is not a mesh file this page can read: it needs to be {formats} "
-        "(the name should end in .obj, .stl or .ply)."
-    ),
-    "not_text": "{name} is not a text {format} file: it holds bytes that are not text.",
-    "empty": "{name} holds no vertices and no faces: it is not a {format} mesh.",
-    "no_faces": "{name} has no faces: there is no surface to check.",
     "too_many_faces": (
         "{name} has {count} faces; this page checks up to {max}. "
         "The Python package (trinormal mesh FILE) has no such limit."
     ),
-    "bad_number": "{name}, line {line}: the {what} value is not a finite number.",
-    "obj_vertex": "{name}, line {line}: a vertex (v) needs three coordinates.",
-    "obj_face_short": "{name}, line {line}: a face (f) needs at least three corners.",
-    "obj_index": "{name}, line {line}: {index} is not a vertex number.",
-    "obj_index_range": (
-        "{name}, line {line}: the face uses vertex {index}, but only {count} vertices "
-        "come before it."
-    ),
-    "stl_binary_number": "{name}, facet {facet}: corner {what} is not a finite number.",
-    "stl_syntax": "{name}, line {line}: unexpected “{found}” in an ASCII STL file.",
-    "stl_vertex": "{name}, line {line}: a vertex needs exactly three coordinates.",
-    "stl_loop": "{name}, line {line}: a facet's loop has {count} corners; it needs 3.",
-    "stl_size": (
-        "{name} is not a complete binary STL file: its header announces {count} "
-        "triangles ({expected} bytes), but the file has {size} bytes."
-    ),
-    "stl_short": "{name} is too short ({size} bytes) to be an STL file.",
-    "ply_header": "{name}, line {line} of the header: “{what}” is missing or not understood.",
-    "ply_no_vertices": "{name} has no vertex element with x, y and z.",
-    "ply_no_faces": "{name}: the face element has no vertex_indices list.",
-    "ply_short": "{name} ends before all the vertices and faces its header announces.",
-    "ply_row": "{name}, line {line}: the row does not match the header's properties.",
-    "ply_face_short": "{name}, {where}: a face needs at least three corners.",
-    "ply_index_range": "{name}, {where}: vertex {index} does not exist ({count} vertices).",
-    "ply_binary_number": "{name}, vertex {row}: {what} is not a finite number.",
-    "where_line": "line {line}",
-    "where_face": "face {face}",
+    "no_faces": "{name} has no faces: there is no surface to check.",
     "index_range": "Face {face} uses vertex {index}, but the mesh has {count} vertices.",
     "internal": "This file could not be read: {detail}",
     "yes": "yes",
@@ -100,11 +121,6 @@ MESSAGES: dict[str, str] = {
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",
     "fixed": "Fixed: {count} faces flipped. The report below is the repaired mesh's.",
-    "nothing_to_fix": "Every face already agrees with its neighbours: there is nothing to flip.",
-    "cannot_orient": (
-        "No choice of flips makes every component agree (one is non-orientable, like a "
-        "Möbius strip, or joined through non-manifold edges)."
-    ),
 }
 
 #: Things counted in the summary: the singular and the plural, as ``_n`` of the report writes them.
@@ -128,7 +144,10 @@ SUMMARY: dict[str, str | tuple[str, str]] = {
     ),
     "coincident": "{n} with two corners at the same point",
     "collinear": "{n} with corners on one line",
-    "duplicate": ("{n} face repeats another face exactly.", "{n} faces repeat another face exactly."),
+    "duplicate": (
+        "{n} face repeats another face exactly.",
+        "{n} faces repeat another face exactly.",
+    ),
     "reversed_duplicate": (
         "{n} face repeats another face wound the other way: the two normals cancel, and the "
         "pair is a sheet with no inside.",
@@ -205,7 +224,7 @@ EXAMPLES: tuple[tuple[str, str], ...] = (
 
 
 def example_mesh(name: str) -> tuple[Any, Any]:
-    """The vertices and faces of one of the page's `EXAMPLES`.
+    """Return the vertices and faces of one of the page's `EXAMPLES`.
 
     Examples
     --------
@@ -235,7 +254,7 @@ def example_mesh(name: str) -> tuple[Any, Any]:
 
 
 def example_file(name: str) -> bytes:
-    """One of the page's `EXAMPLES` as the bytes of its file (OBJ, ASCII PLY or binary STL).
+    """Return one of the page's `EXAMPLES` as the bytes of its file (OBJ, PLY or binary STL).
 
     Examples
     --------
@@ -274,7 +293,7 @@ def example_file(name: str) -> bytes:
 
 
 def site_constants() -> dict[str, Any]:
-    """The mesh page's constants for the site's JavaScript (see the module docstring).
+    """Return the mesh page's constants for the site's JavaScript (see the module docstring).
 
     Returns
     -------

@@ -13,21 +13,22 @@
 
 from __future__ import annotations
 
+import base64
 import json
-import re
+import random
 import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 from browser_support import ROOT
 
-from trinormal.mesh_page import EXAMPLES, MESSAGES, example_file
+from trinormal.mesh_page import EXAMPLES, example_file
 
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
 
 MESH_JS = ROOT / "docs/assets/javascripts/trinormal-mesh.js"
+MESHES = ROOT / "tests/data/meshes"
 
 #: Run the reader and the check on one file's bytes (base64) in the page; a MeshError's message.
 _RUN = """([name, b64]) => {
@@ -43,18 +44,43 @@ _RUN = """([name, b64]) => {
 
 
 def python_report(name: str, data: bytes) -> tuple[dict, list[str]]:
-    """Python's report of a file and its sentences, one per line (unwrapped)."""
+    """Python's report of a file and its sentences, one per line."""
     from trinormal.mesh import check, parse_mesh
 
     m = parse_mesh(data, name.rsplit(".", 1)[-1], name)
     r = check(m.vertices, m.faces)
-    return r.to_dict(), re.sub(r"\n  ", " ", r.summary()).split("\n")
+    return r.to_dict(), r.summary(width=0).split("\n")
+
+
+def python_result(name: str, data: bytes) -> dict:
+    """What Python makes of a file: its report and sentences, or its MeshFileError's message."""
+    from trinormal.mesh import MeshFileError
+
+    try:
+        report, summary = python_report(name, data)
+    except MeshFileError as exc:
+        return {"error": str(exc)}
+    return {"report": report, "summary": summary}
 
 
 def _b64(data: bytes) -> str:
-    import base64
-
     return base64.b64encode(data).decode()
+
+
+def js_results(page, files: list[tuple[str, bytes]]) -> list[dict]:
+    return [page.evaluate(_RUN, [name, _b64(data)]) for name, data in files]
+
+
+def assert_same(files: list[tuple[str, bytes]], got: list[dict]) -> None:
+    for (name, data), js in zip(files, got, strict=True):
+        py = python_result(name, data)
+        if "error" in py:
+            assert js.get("kind") == "MeshError", (name, js)
+            assert js["error"] == py["error"], name
+        else:
+            assert "error" not in js, (name, js)
+            assert js["report"] == py["report"], name
+            assert js["summary"] == py["summary"], name
 
 
 @pytest.fixture
@@ -65,36 +91,50 @@ def blank(page):
     return page
 
 
-def test_the_examples_are_reported_as_python_reports_them(blank):
-    for name, _label in EXAMPLES:
-        got = blank.evaluate(_RUN, [name, _b64(example_file(name))])
-        assert "error" not in got, (name, got)
-        want, sentences = python_report(name, example_file(name))
-        assert got["report"] == want, name
-        assert got["summary"] == sentences, name
-        assert want["faces_to_flip"], f"{name}: an example should have something to fix"
+def test_every_test_file_gets_pythons_report_or_pythons_message(blank):
+    """tests/data/meshes/ (good files, and bad ones under bad/) and the page's examples."""
+    files = [(p.name, p.read_bytes()) for p in sorted(MESHES.rglob("*.*"))]
+    files += [(name, example_file(name)) for name, _ in EXAMPLES]
+    assert_same(files, js_results(blank, files))
+    bad = [f for f in files if "error" in python_result(*f)]
+    assert len(bad) >= 5 and len(files) - len(bad) >= 5 + len(EXAMPLES)
+    for name, _ in EXAMPLES:  # each example has something to fix
+        assert python_result(name, example_file(name))["report"]["faces_to_flip"], name
 
 
-def test_a_file_that_is_not_a_mesh_gets_the_packages_message(blank):
-    cases = {
-        "photo.stl": b"\x89PNG\r\n\x1a\n" + bytes(range(256)) * 4,
-        "notes.obj": b"Dear student,\nthis is a letter, not a model.\n",
-        "empty.ply": b"",
-        "letter.txt": b"hello",
-        "bad-number.obj": b"v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",
-    }
-    expected = {
-        "photo.stl": MESSAGES["stl_size"].split("{")[0],
-        "notes.obj": MESSAGES["empty"].format(name="notes.obj", format="OBJ"),
-        "empty.ply": MESSAGES["empty_file"].format(name="empty.ply"),
-        "letter.txt": MESSAGES["unknown_format"].split("{")[0],
-        "bad-number.obj": MESSAGES["bad_number"].format(name="bad-number.obj", line=2, what="y"),
-    }
-    for name, data in cases.items():
-        got = blank.evaluate(_RUN, [name, _b64(data)])
-        assert got.get("kind") == "MeshError", (name, got)
-        assert got["error"].startswith(expected[name]), (name, got["error"])
-        assert "NaN" not in got["error"] and " at " not in got["error"], got["error"]
+def damaged(rng: random.Random, data: bytes) -> bytes:
+    """A file with a few random edits: bytes inserted, deleted or changed, or the end cut off."""
+    words = [b"nan", b"inf", b"1_0", b"-0", b"x", b"#", b"\\", b"f", b"vt", b"endloop", b"3"]
+    words += [b"-1", b"1e400", b"\n", b"\r\n", b"\0", b"element", b"end_header", b"99"]
+    out = bytearray(data)
+    for _ in range(rng.randint(1, 3)):
+        i, op = rng.randrange(len(out) + 1), rng.random()
+        if op < 0.35:
+            out[i:i] = rng.choice(words)
+        elif op < 0.6:
+            del out[i : i + rng.randint(1, 8)]
+        elif op < 0.75:
+            del out[i:]
+        elif out:
+            out[min(i, len(out) - 1)] = rng.randrange(256)
+    return bytes(out)
+
+
+def test_damaged_files_get_pythons_report_or_pythons_message(blank):
+    """Seeded random edits of the good test files: the same report, or the same sentence."""
+    rng = random.Random(20)
+    sources = sorted(MESHES.glob("*.*"))
+    files = []
+    for k in range(80):
+        src = rng.choice(sources)
+        files.append((f"damaged{k}{src.suffix}", damaged(rng, src.read_bytes())))
+    # a file left with no faces is read by Python; the page says it has nothing to check
+    kept = [
+        f for f in files if "error" in python_result(*f) or python_result(*f)["report"]["n_faces"]
+    ]
+    got = js_results(blank, kept)
+    assert_same(kept, got)
+    assert sum("error" in g for g in got) >= 20 and sum("error" not in g for g in got) >= 10
 
 
 # --------------------------------------------------------------------------- the page
@@ -116,15 +156,17 @@ def reported(page) -> dict:
 
 
 def test_choose_fix_and_download(page, server, traffic, tmp_path):
-    """The file chooser, the report, Fix winding, the download read back by Python."""
-    from trinormal.mesh import check
+    """The file chooser, the report, Fix winding, and a download Python reads back repaired."""
+    from trinormal.mesh import check, fix_winding, parse_mesh
+    from trinormal.mesh.io import _encode
 
     name = "sphere-hole-flipped-patch.ply"
+    data = example_file(name)
     path = tmp_path / name
-    path.write_bytes(example_file(name))
+    path.write_bytes(data)
     open_page(page, server)
     page.set_input_files("#tn-mesh-file", str(path))
-    want, sentences = python_report(name, example_file(name))
+    want, sentences = python_report(name, data)
     assert reported(page) == want
     assert page.locator("#tn-mesh-summary li").all_inner_texts() == sentences
     page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
@@ -133,28 +175,31 @@ def test_choose_fix_and_download(page, server, traffic, tmp_path):
     page.click("#tn-mesh-fix")
     page.wait_for_function("() => document.getElementById('tn-mesh').dataset.state === 'fixed'")
     after = reported(page)
-    assert after["faces_to_flip"] == [] and after["consistent_winding"]
     with page.expect_download() as info:
         page.click("#tn-mesh-download")
     download = info.value
     assert download.suggested_filename == "sphere-hole-flipped-patch-fixed.ply"
     saved = tmp_path / download.suggested_filename
     download.save_as(saved)
-    v, f = read_ply(saved)
-    again = check(v, f)
+    m = parse_mesh(saved.read_bytes(), "ply", saved.name)
+    again = check(m.vertices, m.faces)
     assert again.consistent_winding and len(again.faces_to_flip) == 0
     assert after == again.to_dict()  # the page's report of the repaired mesh is Python's
+    original = parse_mesh(data, "ply", name)
+    fixed, _ = fix_winding(original.vertices, original.faces)
+    # the same file Python's write_mesh writes for the repaired mesh, byte for byte
+    assert saved.read_bytes() == _encode(original.vertices, fixed, "ply", original.encoding)
     assert not traffic.problems()
 
 
-def test_a_bad_file_shows_a_message_not_a_crash(page, server, traffic, tmp_path):
+def test_a_bad_file_shows_pythons_message_not_a_crash(page, server, traffic, tmp_path):
+    data = b"\xff\xd8\xff\xe0" + bytes(300)  # a JPEG's first bytes, named .stl
     path = tmp_path / "holiday.stl"
-    path.write_bytes(b"\xff\xd8\xff\xe0" + bytes(300))
+    path.write_bytes(data)
     open_page(page, server)
     page.set_input_files("#tn-mesh-file", str(path))
     page.wait_for_function("() => document.getElementById('tn-mesh').dataset.state === 'error'")
-    text = page.locator("#tn-mesh-status").inner_text()
-    assert text.startswith("holiday.stl is not a complete binary STL file"), text
+    assert page.locator("#tn-mesh-status").inner_text() == python_result(path.name, data)["error"]
     assert page.locator("#tn-mesh-result").is_hidden()
     assert not traffic.problems()
 
@@ -206,13 +251,3 @@ def binary_stl(v, f) -> bytes:
     data = np.zeros(len(f), dtype=record)
     data["corners"] = np.asarray(v)[np.asarray(f)]
     return bytes(80) + np.uint32(len(f)).tobytes() + data.tobytes()
-
-
-def read_ply(path: Path):
-    lines = path.read_text().splitlines()
-    end = lines.index("end_header")
-    nv = int(next(x for x in lines if x.startswith("element vertex")).split()[-1])
-    body = lines[end + 1 :]
-    v = np.array([[float(t) for t in row.split()] for row in body[:nv]])
-    f = np.array([[int(t) for t in row.split()[1:]] for row in body[nv:]])
-    return v, f

@@ -77,146 +77,221 @@
     return this.data.slice(0, this.length);
   };
 
-  // ------------------------------------------------------------------ format detection
+  // ------------------------------------------------------------------ reading, as trinormal.mesh.io reads
 
   var FORMATS = ["obj", "stl", "ply"];
 
-  function extension(name) {
-    var m = /\.([A-Za-z0-9]+)$/.exec(String(name || ""));
-    return m ? m[1].toLowerCase() : "";
-  }
-
-  function startsWith(bytes, text) {
-    if (bytes.length < text.length) return false;
-    for (var i = 0; i < text.length; i++) if (bytes[i] !== text.charCodeAt(i)) return false;
-    return true;
-  }
-
-  /** The format of a file: "obj", "stl" or "ply", from its extension (and first bytes). */
-  function detectFormat(bytes, name) {
-    var ext = extension(name);
-    if (FORMATS.indexOf(ext) >= 0) return ext;
-    if (startsWith(bytes, "ply")) return "ply";
-    if (startsWith(bytes, "solid") || isBinaryStl(bytes)) return "stl";
-    fail("unknown_format", { name: name, formats: FORMATS.map(function (f) { return f.toUpperCase(); }).join(", ") });
-  }
-
-  function isBinaryStl(bytes) {
-    if (bytes.length < 84) return false;
-    var n = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).getUint32(80, true);
-    return 84 + 50 * n === bytes.length;
-  }
-
-  function looksLikeText(bytes, limit) {
-    var n = Math.min(bytes.length, limit || 4096);
-    for (var i = 0; i < n; i++) {
-      var b = bytes[i];
-      if (b === 0 || (b < 32 && b !== 9 && b !== 10 && b !== 13 && b !== 12 && b !== 11)) return false;
-    }
-    return true;
-  }
-
-  // ------------------------------------------------------------------ text lines
-
-  var decoder = typeof TextDecoder !== "undefined" ? new TextDecoder("utf-8", { fatal: false }) : null;
-
-  function decode(bytes) {
-    return decoder.decode(bytes);
-  }
-
   /**
-   * A number written in a text mesh file, or NaN when it is not one. Python's float() rules:
-   * decimal and exponent forms, "inf"/"nan" words are refused later as not finite.
+   * A file that cannot be read: "NAME[, line N]: REASON", the wording of Python's
+   * MeshFileError, from the package's templates.
    */
-  var NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
-  function readNumber(token) {
-    return NUMBER.test(token) ? Number(token) : NaN;
+  function fileError(name, line, key, values) {
+    var reason = message(key, values);
+    var where = line === null || line === undefined ? name : message("at_line", { name: name, line: line });
+    throw new MeshError(where + ": " + reason);
   }
 
-  function checkFinite(x, line, what, name) {
-    if (!Number.isFinite(x)) fail("bad_number", { name: name, line: line, what: what });
+  // characters Python's repr() escapes (str.isprintable() is false for them)
+  var NOT_PRINTABLE = /[\p{Cc}\p{Cf}\p{Cs}\p{Co}\p{Cn}\p{Zl}\p{Zp}\p{Zs}]/u;
+
+  /** Python's repr() of a short token, as the readers quote what they could not read. */
+  function show(tok) {
+    var s = tok.length <= 40 ? tok : tok.slice(0, 39) + "\u2026";
+    var quote = s.indexOf("'") >= 0 && s.indexOf('"') < 0 ? '"' : "'";
+    var out = "";
+    for (var i = 0; i < s.length; i++) {
+      var ch = s.charAt(i);
+      var code = s.charCodeAt(i);
+      if (ch === "\\") out += "\\\\";
+      else if (ch === quote) out += "\\" + ch;
+      else if (ch === "\n") out += "\\n";
+      else if (ch === "\r") out += "\\r";
+      else if (ch === "\t") out += "\\t";
+      else if (code < 32 || code === 127 || (code >= 0x80 && code < 0xa0) || (code !== 32 && NOT_PRINTABLE.test(ch))) {
+        var hex = code.toString(16);
+        out += code < 0x100 ? "\\x" + ("0" + hex).slice(-2) : "\\u" + ("000" + hex).slice(-4);
+      } else out += ch;
+    }
+    return quote + out + quote;
+  }
+
+  function plural(n, one, many) {
+    return n === 1 ? one : many;
+  }
+
+  // Python's str.splitlines() and str.split(): the same line numbers and the same tokens.
+  var LINE_BREAK = /\r\n|[\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029]/;
+  var SPACE = /[\t\n\v\f\r \x1c-\x1f\x85\xa0\u1680\u2000-\u200a\u2028\u2029\u202f\u205f\u3000]+/;
+
+  function splitlines(text) {
+    var lines = text.split(LINE_BREAK);
+    if (lines.length && lines[lines.length - 1] === "") lines.pop();
+    return lines;
+  }
+
+  function tokens(line) {
+    var t = line.split(SPACE);
+    if (t.length && t[0] === "") t.shift();
+    if (t.length && t[t.length - 1] === "") t.pop();
+    return t;
+  }
+
+  var FLOAT = /^[+-]?(?:\d(?:_?\d)*(?:\.(?:\d(?:_?\d)*)?)?|\.\d(?:_?\d)*)(?:[eE][+-]?\d(?:_?\d)*)?$/;
+  var SPECIAL = /^[+-]?(?:inf|infinity|nan)$/i;
+  var INT = /^[+-]?\d(?:_?\d)*$/;
+
+  /** Python's float(token), or undefined when float() would raise. */
+  function pyFloat(tok) {
+    if (FLOAT.test(tok)) return Number(tok.replace(/_/g, ""));
+    if (SPECIAL.test(tok)) return /nan/i.test(tok) ? NaN : tok.charAt(0) === "-" ? -Infinity : Infinity;
+    return undefined;
+  }
+
+  /** Python's int(token), or undefined when int() would raise. */
+  function pyInt(tok) {
+    return INT.test(tok) ? parseInt(tok.replace(/_/g, ""), 10) : undefined;
+  }
+
+  function number(tok, name, line) {
+    var x = pyFloat(tok);
+    if (x === undefined) fileError(name, line, "not_a_number", { token: show(tok) });
+    if (!Number.isFinite(x)) fileError(name, line, "not_finite", { token: show(tok) });
     return x;
   }
 
+  function extension(name) {
+    var m = /(\.[^./\\]*)$/.exec(String(name || "").replace(/^.*[/\\]/, ""));
+    var ext = m && m[1] !== "." ? m[1].toLowerCase() : "";
+    return /^\.+$/.test(String(name || "").replace(/^.*[/\\]/, "")) ? "" : ext.replace(/^\./, "");
+  }
+
+  var utf8 = typeof TextDecoder !== "undefined" ? new TextDecoder("utf-8", { fatal: true }) : null;
+
+  /** Bytes as Latin-1 text (each byte one character; TextDecoder's "latin1" is Windows-1252). */
+  var latin1 = {
+    decode: function (bytes) {
+      var parts = [];
+      for (var i = 0; i < bytes.length; i += 8192) {
+        parts.push(String.fromCharCode.apply(null, bytes.subarray(i, Math.min(i + 8192, bytes.length))));
+      }
+      return parts.join("");
+    },
+  };
+
+  /** The file as text (UTF-8, else Latin-1); NUL bytes mean it is binary. */
+  function text(bytes, name, what) {
+    var nul = bytes.indexOf(0);
+    if (nul >= 0) {
+      var line = 1;
+      for (var i = 0; i < nul; i++) if (bytes[i] === 10) line++;
+      fileError(name, line, "binary_data", { what: what });
+    }
+    try {
+      return utf8.decode(bytes);
+    } catch (err) {
+      return latin1.decode(bytes);
+    }
+  }
+
+  function Polygons() {
+    this.faces = new Growable(Uint32Array, 1024);
+    this.count = 0;
+    this.split = 0;
+  }
+  /** A polygon as triangles: a fan from its first corner, wound as stored. */
+  Polygons.prototype.add = function (corners) {
+    var n = corners.length;
+    for (var k = 1; k + 1 < n; k++) {
+      this.faces.push(corners[0]);
+      this.faces.push(corners[k]);
+      this.faces.push(corners[k + 1]);
+    }
+    this.count++;
+    if (n > 3) this.split++;
+  };
+
   // ------------------------------------------------------------------ OBJ
 
+  var OBJ_IGNORED = {};
+  (
+    "vt vn vp g o s mg usemtl mtllib usemap maplib l p cstype deg bmat step curv curv2 surf " +
+    "parm trim hole scrv sp end con bevel c_interp d_interp lod shadow_obj trace_obj ctech " +
+    "stech call csh"
+  )
+    .split(" ")
+    .forEach(function (k) {
+      OBJ_IGNORED[k] = true;
+    });
+
   function readObj(bytes, name, progress) {
-    if (!looksLikeText(bytes)) fail("not_text", { name: name, format: "OBJ" });
-    var text = decode(bytes);
+    var lines = splitlines(text(bytes, name, "OBJ"));
     var coords = new Growable(Float64Array, 1024);
-    var faces = new Growable(Uint32Array, 1024);
-    var polygons = 0;
-    var split = 0;
+    var polys = [];
+    var polyLines = [];
     var nv = 0;
-    var pos = 0;
-    var lineNo = 0;
-    var total = text.length;
-    var nextReport = 0;
-    var cornerBuf = [];
-    while (pos < total) {
-      var end = text.indexOf("\n", pos);
-      if (end < 0) end = total;
-      lineNo++;
-      var line = text.slice(pos, end);
-      pos = end + 1;
-      if (pos > nextReport) {
-        progress(pos / total);
-        nextReport = pos + (1 << 20);
+    var pending = "";
+    for (var ln = 0; ln < lines.length; ln++) {
+      if ((ln & 0xffff) === 0) progress(ln / lines.length);
+      var lineno = ln + 1;
+      var raw = lines[ln];
+      if (raw.charAt(raw.length - 1) === "\\") {
+        pending += raw.slice(0, -1) + " ";
+        continue;
       }
-      var c0 = line.charCodeAt(0);
-      if (c0 !== 118 && c0 !== 102 && c0 !== 32 && c0 !== 9) continue; // v, f, or indented
-      var t = line.trim();
-      if (t.length < 2) continue;
-      var head = t.charCodeAt(0);
-      var sep = t.charCodeAt(1);
-      if (sep !== 32 && sep !== 9) continue;
-      if (head === 118) {
-        // v x y z [w | r g b]
-        var parts = t.split(/\s+/);
-        if (parts.length < 4) fail("obj_vertex", { name: name, line: lineNo });
-        for (var k = 1; k <= 3; k++) {
-          coords.push(checkFinite(readNumber(parts[k]), lineNo, "xyz"[k - 1], name));
+      var line = pending + raw;
+      pending = "";
+      var hash = line.indexOf("#");
+      if (hash >= 0) line = line.slice(0, hash);
+      var toks = tokens(line);
+      if (!toks.length) continue;
+      var kw = toks[0];
+      if (kw === "v") {
+        if (toks.length < 4) fileError(name, lineno, "obj_vertex", {});
+        var xyz = [pyFloat(toks[1]), pyFloat(toks[2]), pyFloat(toks[3])];
+        for (var a = 0; a < 3; a++) {
+          if (xyz[a] === undefined) fileError(name, lineno, "not_a_number", { token: show(toks[a + 1]) });
         }
+        for (var b = 0; b < 3; b++) {
+          if (!Number.isFinite(xyz[b])) fileError(name, lineno, "not_finite", { token: show(toks[b + 1]) });
+        }
+        coords.push(xyz[0]);
+        coords.push(xyz[1]);
+        coords.push(xyz[2]);
         nv++;
-      } else if (head === 102) {
-        var items = t.split(/\s+/);
-        var nc = items.length - 1;
-        if (nc < 3) fail("obj_face_short", { name: name, line: lineNo });
-        cornerBuf.length = 0;
-        for (var j = 1; j <= nc; j++) {
-          var tok = items[j];
-          var slash = tok.indexOf("/");
-          var idx = slash < 0 ? tok : tok.slice(0, slash);
-          if (!/^[+-]?\d+$/.test(idx)) fail("obj_index", { name: name, line: lineNo, index: tok });
-          var i = parseInt(idx, 10);
-          var v = i > 0 ? i - 1 : i < 0 ? nv + i : -1;
-          if (v < 0 || v >= nv) fail("obj_index_range", { name: name, line: lineNo, index: idx, count: nv });
-          cornerBuf.push(v);
+      } else if (kw === "f" || kw === "fo") {
+        if (toks.length < 4) fileError(name, lineno, "obj_face_short", {});
+        var poly = [];
+        for (var t = 1; t < toks.length; t++) {
+          var slash = toks[t].indexOf("/");
+          var i = pyInt(slash < 0 ? toks[t] : toks[t].slice(0, slash));
+          if (i === undefined) fileError(name, lineno, "obj_index", { token: show(toks[t]) });
+          if (i > 0) poly.push(i - 1);
+          else if (i < 0) {
+            if (-i > nv) fileError(name, lineno, "obj_back", { index: i, count: nv, vertices: plural(nv, "vertex", "vertices") });
+            poly.push(nv + i);
+          } else fileError(name, lineno, "obj_zero", {});
         }
-        polygons++;
-        if (nc > 3) split++;
-        for (var q = 1; q + 1 < nc; q++) {
-          faces.push(cornerBuf[0]);
-          faces.push(cornerBuf[q]);
-          faces.push(cornerBuf[q + 1]);
-        }
+        polys.push(poly);
+        polyLines.push(lineno);
+      } else if (!OBJ_IGNORED[kw]) {
+        fileError(name, lineno, "obj_statement", { token: show(kw) });
       }
     }
-    if (nv === 0 && faces.length === 0) fail("empty", { name: name, format: "OBJ" });
-    return {
-      vertices: coords.array(),
-      faces: faces.array(),
-      polygons: polygons,
-      split_polygons: split,
-    };
+    if (nv === 0 && !polys.length) fileError(name, null, "obj_empty", {});
+    var out = new Polygons();
+    for (var k = 0; k < polys.length; k++) {
+      for (var c = 0; c < polys[k].length; c++) {
+        if (polys[k][c] >= nv) {
+          fileError(name, polyLines[k], "obj_index_range", { face: k + 1, index: polys[k][c] + 1, count: nv, vertices: plural(nv, "vertex", "vertices") });
+        }
+      }
+      out.add(polys[k]);
+    }
+    return { vertices: coords.array(), faces: out.faces.array(), polygons: out.count, split_polygons: out.split, binary: false };
   }
 
   // ------------------------------------------------------------------ STL
 
-  /**
-   * Corners with exactly equal coordinates become one vertex, in the order they first appear
-   * (x == y for numbers: 0 and -0 are equal). `corners` holds 9 numbers per triangle.
-   */
   /** murmur3's finaliser: every bit of h reaches the low bits used as a table slot. */
   function fmix(h) {
     h ^= h >>> 16;
@@ -226,6 +301,10 @@
     return h ^ (h >>> 16);
   }
 
+  /**
+   * Corners with exactly equal coordinates become one vertex, numbered in order of first use
+   * (-0 equals 0). `corners` holds 9 numbers per triangle.
+   */
   function mergeCorners(corners, progress) {
     var n = corners.length / 3;
     var size = 1;
@@ -248,8 +327,7 @@
       f64[0] = z;
       h = Math.imul((h << 13) | (h >>> 19), 0x27d4eb2f) ^ u32[0];
       h = Math.imul((h << 13) | (h >>> 19), 0x165667b1) ^ u32[1];
-      h = fmix(h);
-      var slot = h & mask;
+      var slot = fmix(h) & mask;
       for (;;) {
         var at = table[slot];
         if (at < 0) {
@@ -270,313 +348,344 @@
     return { vertices: out.slice(0, 3 * nv), faces: faces };
   }
 
-  function readStlBinary(bytes, name, progress) {
+  function readStl(bytes, name, progress) {
     var view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-    var n = view.getUint32(80, true);
-    if (n > LIMITS.max_faces) fail("too_many_faces", { name: name, count: n, max: LIMITS.max_faces });
-    var corners = new Float64Array(9 * n);
-    for (var i = 0; i < n; i++) {
-      if ((i & 0xffff) === 0) progress(0.4 * (i / n));
-      var base = 84 + 50 * i + 12;
-      for (var k = 0; k < 9; k++) {
-        var x = view.getFloat32(base + 4 * k, true);
-        if (!Number.isFinite(x)) {
-          fail("stl_binary_number", { name: name, facet: i + 1, what: "ABC"[Math.floor(k / 3)] + "." + "xyz"[k % 3] });
+    if (bytes.length >= 84) {
+      var n = view.getUint32(80, true);
+      if (bytes.length === 84 + 50 * n) {
+        // a binary STL, even when its header starts with "solid"
+        if (n > LIMITS.max_faces) fail("too_many_faces", { name: name, count: n, max: LIMITS.max_faces });
+        var corners = new Float64Array(9 * n);
+        for (var i = 0; i < n; i++) {
+          if ((i & 0xffff) === 0) progress(0.4 * (i / n));
+          var base = 84 + 50 * i + 12;
+          for (var k = 0; k < 9; k++) {
+            var x = view.getFloat32(base + 4 * k, true);
+            if (!Number.isFinite(x)) fileError(name, null, "stl_not_finite", { triangle: i + 1 });
+            corners[9 * i + k] = x;
+          }
         }
-        corners[9 * i + k] = x;
+        var merged = mergeCorners(corners, function (p) { progress(0.4 + 0.6 * p); });
+        return { vertices: merged.vertices, faces: merged.faces, polygons: n, split_polygons: 0, binary: true };
       }
     }
-    var merged = mergeCorners(corners, function (p) { progress(0.4 + 0.6 * p); });
-    return { vertices: merged.vertices, faces: merged.faces, polygons: n, split_polygons: 0 };
+    var start = 0;
+    while (start < bytes.length && (bytes[start] === 32 || (bytes[start] >= 9 && bytes[start] <= 13))) start++;
+    var head = "";
+    for (var j = start; j < Math.min(start + 5, bytes.length); j++) head += String.fromCharCode(bytes[j]);
+    if (head.toLowerCase() !== "solid" || bytes.indexOf(0) >= 0) {
+      if (bytes.length >= 84) {
+        var m = view.getUint32(80, true);
+        fileError(name, null, "stl_not_stl", { count: m, expected: 84 + 50 * m, size: bytes.length });
+      }
+      fileError(name, null, "stl_short", {});
+    }
+    return readStlAscii(bytes, name, progress);
   }
 
   function readStlAscii(bytes, name, progress) {
-    if (!looksLikeText(bytes)) fail("not_text", { name: name, format: "STL" });
-    var text = decode(bytes);
+    var lines = splitlines(text(bytes, name, "STL"));
     var corners = new Growable(Float64Array, 4096);
-    var lineNo = 0;
-    var pos = 0;
-    var total = text.length;
-    var inLoop = 0; // corners in the current loop, -1 outside a loop
+    var inLoop = false;
+    var loopCount = 0;
     var loopLine = 0;
-    var facets = 0;
-    var sawSolid = false;
-    var nextReport = 0;
-    inLoop = -1;
-    while (pos < total) {
-      var end = text.indexOf("\n", pos);
-      if (end < 0) end = total;
-      lineNo++;
-      var t = text.slice(pos, end).trim();
-      pos = end + 1;
-      if (pos > nextReport) {
-        progress(0.5 * (pos / total));
-        nextReport = pos + (1 << 20);
-      }
-      if (!t) continue;
-      var parts = t.split(/\s+/);
-      var word = parts[0].toLowerCase();
-      if (word === "vertex") {
-        if (inLoop < 0) fail("stl_syntax", { name: name, line: lineNo, found: parts[0] });
-        if (parts.length !== 4) fail("stl_vertex", { name: name, line: lineNo });
-        for (var k = 1; k <= 3; k++) corners.push(checkFinite(readNumber(parts[k]), lineNo, "xyz"[k - 1], name));
-        inLoop++;
-      } else if (word === "outer") {
-        inLoop = 0;
-        loopLine = lineNo;
-      } else if (word === "endloop") {
-        if (inLoop !== 3) fail("stl_loop", { name: name, line: loopLine, count: Math.max(inLoop, 0) });
-        inLoop = -1;
-        facets++;
-      } else if (word === "solid") {
-        sawSolid = true;
-      } else if (word === "facet" || word === "endfacet" || word === "endsolid") {
-        // structure only
+    var lineno = 0;
+    for (var ln = 0; ln < lines.length; ln++) {
+      if ((ln & 0xffff) === 0) progress(0.5 * (ln / lines.length));
+      lineno = ln + 1;
+      var toks = tokens(lines[ln]);
+      if (!toks.length) continue;
+      var kw = toks[0].toLowerCase();
+      if (kw === "vertex") {
+        if (!inLoop) fileError(name, lineno, "stl_vertex_outside", {});
+        if (toks.length !== 4) fileError(name, lineno, "stl_vertex", {});
+        for (var k = 1; k <= 3; k++) corners.push(number(toks[k], name, lineno));
+        loopCount++;
+      } else if (kw === "outer") {
+        inLoop = true;
+        loopCount = 0;
+        loopLine = lineno;
+      } else if (kw === "endloop") {
+        if (!inLoop) fileError(name, lineno, "stl_endloop", {});
+        if (loopCount !== 3) fileError(name, lineno, "stl_facet", { start: loopLine, count: loopCount });
+        inLoop = false;
+      } else if (kw === "solid" || kw === "endsolid" || kw === "facet" || kw === "endfacet") {
+        if (inLoop) fileError(name, lineno, "stl_before_endloop", { token: show(toks[0]) });
       } else {
-        fail("stl_syntax", { name: name, line: lineNo, found: parts[0] });
+        fileError(name, lineno, "stl_keyword", { token: show(toks[0]) });
       }
     }
-    if (!sawSolid) fail("stl_syntax", { name: name, line: 1, found: "" });
-    if (facets === 0) fail("empty", { name: name, format: "STL" });
+    if (inLoop) fileError(name, lineno, "stl_ends_in_facet", {});
     var merged = mergeCorners(corners.array(), function (p) { progress(0.5 + 0.5 * p); });
-    return { vertices: merged.vertices, faces: merged.faces, polygons: facets, split_polygons: 0 };
-  }
-
-  function readStl(bytes, name, progress) {
-    if (isBinaryStl(bytes)) return Object.assign(readStlBinary(bytes, name, progress), { binary: true });
-    if (startsWith(bytes, "solid") && looksLikeText(bytes)) {
-      return Object.assign(readStlAscii(bytes, name, progress), { binary: false });
-    }
-    if (bytes.length >= 84) {
-      var n = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).getUint32(80, true);
-      fail("stl_size", { name: name, count: n, expected: 84 + 50 * n, size: bytes.length });
-    }
-    fail("stl_short", { name: name, size: bytes.length });
+    var nf = merged.faces.length / 3;
+    return { vertices: merged.vertices, faces: merged.faces, polygons: nf, split_polygons: 0, binary: false };
   }
 
   // ------------------------------------------------------------------ PLY
 
   var PLY_TYPES = {
-    char: ["Int8", 1], int8: ["Int8", 1],
-    uchar: ["Uint8", 1], uint8: ["Uint8", 1],
-    short: ["Int16", 2], int16: ["Int16", 2],
-    ushort: ["Uint16", 2], uint16: ["Uint16", 2],
-    int: ["Int32", 4], int32: ["Int32", 4],
-    uint: ["Uint32", 4], uint32: ["Uint32", 4],
-    float: ["Float32", 4], float32: ["Float32", 4],
-    double: ["Float64", 8], float64: ["Float64", 8],
+    char: ["Int8", 1], int8: ["Int8", 1], uchar: ["Uint8", 1], uint8: ["Uint8", 1],
+    short: ["Int16", 2], int16: ["Int16", 2], ushort: ["Uint16", 2], uint16: ["Uint16", 2],
+    int: ["Int32", 4], int32: ["Int32", 4], uint: ["Uint32", 4], uint32: ["Uint32", 4],
+    float: ["Float32", 4], float32: ["Float32", 4], double: ["Float64", 8], float64: ["Float64", 8],
   };
 
-  function plyHeader(bytes, name) {
-    // the header is text up to "end_header\n"
-    var limit = Math.min(bytes.length, 1 << 16);
-    var headText = "";
-    for (var i = 0; i < limit; i++) headText += String.fromCharCode(bytes[i]);
-    var m = /end_header[ \t]*\r?\n/.exec(headText);
-    if (!m) fail("ply_header", { name: name, line: headText.split("\n").length, what: "end_header" });
-    var lines = headText.slice(0, m.index).split(/\r?\n/);
-    var header = { format: null, elements: [], bodyStart: m.index + m[0].length, lines: lines.length + 1 };
-    var current = null;
-    for (var ln = 0; ln < lines.length; ln++) {
-      var p = lines[ln].trim().split(/\s+/);
-      var lineNo = ln + 1;
-      if (ln === 0) {
-        if (p[0] !== "ply") fail("ply_header", { name: name, line: 1, what: "ply" });
-        continue;
-      }
-      if (p[0] === "format") {
-        if (["ascii", "binary_little_endian", "binary_big_endian"].indexOf(p[1]) < 0) {
-          fail("ply_header", { name: name, line: lineNo, what: "format" });
-        }
-        header.format = p[1];
-      } else if (p[0] === "element") {
-        var count = Number(p[2]);
-        if (p.length < 3 || !Number.isInteger(count) || count < 0) fail("ply_header", { name: name, line: lineNo, what: "element" });
-        current = { name: p[1], count: count, props: [] };
-        header.elements.push(current);
-      } else if (p[0] === "property") {
-        if (!current) fail("ply_header", { name: name, line: lineNo, what: "element" });
-        if (p[1] === "list") {
-          if (!PLY_TYPES[p[2]] || !PLY_TYPES[p[3]] || !p[4]) fail("ply_header", { name: name, line: lineNo, what: "property" });
-          current.props.push({ name: p[4], list: true, countType: PLY_TYPES[p[2]], type: PLY_TYPES[p[3]] });
-        } else {
-          if (!PLY_TYPES[p[1]] || !p[2]) fail("ply_header", { name: name, line: lineNo, what: "property" });
-          current.props.push({ name: p[2], list: false, type: PLY_TYPES[p[1]] });
-        }
-      } else if (p[0] === "comment" || p[0] === "obj_info" || p[0] === "") {
-        // nothing to read
-      } else {
-        fail("ply_header", { name: name, line: lineNo, what: p[0] });
-      }
+  function findBytes(bytes, textToFind, from) {
+    outer: for (var i = from || 0; i + textToFind.length <= bytes.length; i++) {
+      for (var k = 0; k < textToFind.length; k++) if (bytes[i + k] !== textToFind.charCodeAt(k)) continue outer;
+      return i;
     }
-    if (!header.format) fail("ply_header", { name: name, line: 2, what: "format" });
-    return header;
-  }
-
-  function plyRoles(header, name) {
-    var vertex = null;
-    var face = null;
-    header.elements.forEach(function (el) {
-      if (el.name === "vertex") vertex = el;
-      if (el.name === "face") face = el;
-    });
-    if (!vertex) fail("ply_no_vertices", { name: name });
-    var xyz = ["x", "y", "z"].map(function (axis) {
-      for (var i = 0; i < vertex.props.length; i++) if (vertex.props[i].name === axis && !vertex.props[i].list) return i;
-      fail("ply_no_vertices", { name: name });
-    });
-    var list = -1;
-    if (face) {
-      for (var i = 0; i < face.props.length; i++) {
-        var p = face.props[i];
-        if (p.list && (p.name === "vertex_indices" || p.name === "vertex_index")) list = i;
-      }
-      if (list < 0) fail("ply_no_faces", { name: name });
-    }
-    return { vertex: vertex, face: face, xyz: xyz, list: list };
+    return -1;
   }
 
   function readPly(bytes, name, progress) {
-    if (!startsWith(bytes, "ply")) fail("ply_header", { name: name, line: 1, what: "ply" });
-    var header = plyHeader(bytes, name);
-    var roles = plyRoles(header, name);
-    var nvTotal = roles.vertex.count;
-    var nfTotal = roles.face ? roles.face.count : 0;
-    if (nfTotal > LIMITS.max_faces) fail("too_many_faces", { name: name, count: nfTotal, max: LIMITS.max_faces });
-    var coords = new Float64Array(3 * nvTotal);
-    var faces = new Growable(Uint32Array, 3 * nfTotal);
-    var polygons = 0;
-    var split = 0;
-    var corner = [];
-    function addPolygon(where) {
-      var nc = corner.length;
-      if (nc < 3) fail("ply_face_short", { name: name, where: where });
-      for (var k = 0; k < nc; k++) {
-        var v = corner[k];
-        if (!Number.isInteger(v) || v < 0 || v >= nvTotal) fail("ply_index_range", { name: name, where: where, index: v, count: nvTotal });
-      }
-      polygons++;
-      if (nc > 3) split++;
-      for (var q = 1; q + 1 < nc; q++) {
-        faces.push(corner[0]);
-        faces.push(corner[q]);
-        faces.push(corner[q + 1]);
+    var end = findBytes(bytes, "end_header", 0);
+    if (!(bytes[0] === 112 && bytes[1] === 108 && bytes[2] === 121) || end < 0) fileError(name, 1, "ply_not_ply", {});
+    var nl = bytes.indexOf(10, end);
+    var bodyStart = nl < 0 ? bytes.length : nl + 1;
+    var header = splitlines(latin1.decode(bytes.subarray(0, end)));
+    var fmt = null;
+    var elements = [];
+    for (var i = 0; i < header.length; i++) {
+      var lineno = i + 1;
+      var toks = tokens(header[i]);
+      if (!toks.length || toks[0] === "ply" || toks[0] === "comment" || toks[0] === "obj_info") continue;
+      if (toks[0] === "format") {
+        if (toks.length < 2 || ["ascii", "binary_little_endian", "binary_big_endian"].indexOf(toks[1]) < 0) {
+          fileError(name, lineno, "ply_format", {});
+        }
+        fmt = toks[1];
+      } else if (toks[0] === "element") {
+        if (toks.length !== 3 || !/^[0-9]+$/.test(toks[2])) fileError(name, lineno, "ply_element", {});
+        elements.push({ name: toks[1], count: parseInt(toks[2], 10), props: [], line: lineno });
+      } else if (toks[0] === "property") {
+        if (!elements.length) fileError(name, lineno, "ply_property_first", {});
+        var el = elements[elements.length - 1];
+        if (toks.length === 5 && toks[1] === "list") {
+          if (!PLY_TYPES[toks[2]] || !PLY_TYPES[toks[3]]) fileError(name, lineno, "ply_type", {});
+          el.props.push({ name: toks[4], type: PLY_TYPES[toks[3]], count: PLY_TYPES[toks[2]] });
+        } else if (toks.length === 3 && PLY_TYPES[toks[1]]) {
+          el.props.push({ name: toks[2], type: PLY_TYPES[toks[1]], count: null });
+        } else {
+          fileError(name, lineno, "ply_property", { token: show(header[i].trim()) });
+        }
+      } else {
+        fileError(name, lineno, "ply_keyword", { token: show(toks[0]) });
       }
     }
-    if (header.format === "ascii") {
-      if (!looksLikeText(bytes.subarray(header.bodyStart), 1 << 16)) fail("not_text", { name: name, format: "PLY" });
-      var lines = decode(bytes.subarray(header.bodyStart)).split("\n");
-      var li = 0;
-      var lineNo = header.lines;
-      var nextLine = function () {
-        while (li < lines.length) {
-          var t = lines[li++].trim();
-          lineNo++;
-          if (t) return t;
+    if (fmt === null) fileError(name, null, "ply_no_format", {});
+    var vert = null;
+    elements.forEach(function (e) {
+      if (!vert && e.name === "vertex") vert = e;
+    });
+    if (!vert) fileError(name, null, "ply_no_vertex", {});
+    ["x", "y", "z"].forEach(function (axis) {
+      var has = vert.props.some(function (p) { return p.name === axis && p.count === null; });
+      if (!has) fileError(name, vert.line, "ply_no_axis", { axis: axis });
+    });
+    var face = null;
+    elements.forEach(function (e) {
+      if (!face && e.name === "face") face = e;
+    });
+    if (face && face.count > LIMITS.max_faces) fail("too_many_faces", { name: name, count: face.count, max: LIMITS.max_faces });
+    var values =
+      fmt === "ascii"
+        ? plyAscii(bytes, bodyStart, header.length + 2, elements, name, progress)
+        : plyBinary(bytes, bodyStart, elements, fmt === "binary_little_endian", name, progress);
+    var v = values.vertex;
+    var nv = vert.count;
+    var vertices = new Float64Array(3 * nv);
+    for (var r = 0; r < nv; r++) {
+      for (var a = 0; a < 3; a++) vertices[3 * r + a] = v[["x", "y", "z"][a]][r];
+      if (!(Number.isFinite(vertices[3 * r]) && Number.isFinite(vertices[3 * r + 1]) && Number.isFinite(vertices[3 * r + 2]))) {
+        fileError(name, null, "ply_not_finite", { vertex: r });
+      }
+    }
+    var polys = (values.face && values.face._polys) || [];
+    var out = new Polygons();
+    for (var q = 0; q < polys.length; q++) {
+      if (polys[q].length < 3) fileError(name, null, "ply_corners", { face: q, count: polys[q].length });
+      for (var c = 0; c < polys[q].length; c++) {
+        var idx = polys[q][c];
+        if (!(idx >= 0 && idx < nv)) {
+          var valid = nv ? message("ply_valid", { last: nv - 1 }) : message("ply_no_vertices", {});
+          fileError(name, null, "ply_index_range", { face: q, index: idx, valid: valid });
         }
-        fail("ply_short", { name: name });
-      };
-      header.elements.forEach(function (el) {
-        for (var r = 0; r < el.count; r++) {
-          if ((r & 0xffff) === 0) progress(r / Math.max(1, el.count));
-          var toks = nextLine().split(/\s+/);
-          var ti = 0;
-          var here = lineNo;
-          var take = function () {
-            if (ti >= toks.length) fail("ply_row", { name: name, line: here });
-            var x = readNumber(toks[ti++]);
-            if (!Number.isFinite(x)) fail("bad_number", { name: name, line: here, what: el.name });
-            return x;
-          };
-          for (var pi = 0; pi < el.props.length; pi++) {
-            var prop = el.props[pi];
-            if (prop.list) {
-              var cnt = take();
-              if (!Number.isInteger(cnt) || cnt < 0) fail("ply_row", { name: name, line: here });
-              if (el === roles.face && pi === roles.list) {
-                corner.length = 0;
-                for (var c = 0; c < cnt; c++) corner.push(take());
-              } else {
-                for (var c2 = 0; c2 < cnt; c2++) take();
-              }
-            } else {
-              var val = take();
-              if (el === roles.vertex) {
-                var axis = roles.xyz.indexOf(pi);
-                if (axis >= 0) coords[3 * r + axis] = val;
-              }
-            }
-          }
-          if (ti !== toks.length) fail("ply_row", { name: name, line: here });
-          if (el === roles.face) addPolygon(message("where_line", { line: here }));
-        }
-      });
-    } else {
-      var little = header.format === "binary_little_endian";
-      var view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-      var at = header.bodyStart;
-      var end = bytes.length;
-      var get = function (type) {
-        if (at + type[1] > end) fail("ply_short", { name: name });
-        var x = view["get" + type[0]](at, little);
-        at += type[1];
-        return x;
-      };
-      header.elements.forEach(function (el) {
-        for (var r = 0; r < el.count; r++) {
-          if ((r & 0xffff) === 0) progress(r / Math.max(1, el.count));
-          for (var pi = 0; pi < el.props.length; pi++) {
-            var prop = el.props[pi];
-            if (prop.list) {
-              var cnt = get(prop.countType);
-              if (el === roles.face && pi === roles.list) {
-                corner.length = 0;
-                for (var c = 0; c < cnt; c++) corner.push(get(prop.type));
-              } else {
-                if (at + cnt * prop.type[1] > end) fail("ply_short", { name: name });
-                at += cnt * prop.type[1];
-              }
-            } else {
-              var val = get(prop.type);
-              if (el === roles.vertex) {
-                var axis = roles.xyz.indexOf(pi);
-                if (axis >= 0) {
-                  if (!Number.isFinite(val)) fail("ply_binary_number", { name: name, row: r, what: "xyz"[axis] });
-                  coords[3 * r + axis] = val;
-                }
-              }
-            }
-          }
-          if (el === roles.face) addPolygon(message("where_face", { face: r }));
-        }
-      });
+      }
+      out.add(polys[q]);
     }
     return {
-      vertices: coords,
-      faces: faces.array(),
-      polygons: polygons,
-      split_polygons: split,
-      binary: header.format !== "ascii",
-      ply_format: header.format,
+      vertices: vertices,
+      faces: out.faces.array(),
+      polygons: out.count,
+      split_polygons: out.split,
+      binary: fmt !== "ascii",
     };
   }
 
+  function faceListName(el) {
+    var lists = el.props.filter(function (p) { return p.count !== null; }).map(function (p) { return p.name; });
+    if (lists.indexOf("vertex_indices") >= 0) return "vertex_indices";
+    if (lists.indexOf("vertex_index") >= 0) return "vertex_index";
+    return lists.length ? lists[0] : null;
+  }
+
+  function isFixed(el) {
+    return el.props.every(function (p) { return p.count === null; });
+  }
+
+  function plyAscii(bytes, start, firstLine, elements, name, progress) {
+    var lines = splitlines(text(bytes.subarray(start), name, "PLY"));
+    var out = {};
+    var pos = 0;
+    elements.forEach(function (el) {
+      if (pos + el.count > lines.length) {
+        fileError(name, firstLine + lines.length - 1, "ply_ascii_short", {
+          rows: Math.max(lines.length - pos, 0), count: el.count, element: el.name,
+        });
+      }
+      if (el.name !== "vertex" && el.name !== "face") {
+        pos += el.count;
+        return;
+      }
+      if (isFixed(el)) {
+        var k = el.props.length;
+        var cols = el.props.map(function () { return new Float64Array(el.count); });
+        var ok = true;
+        for (var r = 0; r < el.count && ok; r++) {
+          if ((r & 0xffff) === 0) progress(0.5 * (r / Math.max(1, el.count)));
+          var toks = tokens(lines[pos + r]);
+          if (toks.length !== k) ok = false;
+          for (var j = 0; j < k && ok; j++) {
+            var x0 = pyFloat(toks[j]);
+            if (x0 === undefined) ok = false;
+            else cols[j][r] = x0;
+          }
+        }
+        if (!ok) {
+          // Python reads every number at once, then explains the first bad row
+          for (var rr = 0; rr < el.count; rr++) {
+            var bad = tokens(lines[pos + rr]);
+            if (bad.length !== k) fileError(name, firstLine + pos + rr, "ply_expected", { count: k, found: bad.length });
+            for (var jj = 0; jj < k; jj++) number(bad[jj], name, firstLine + pos + rr);
+          }
+        }
+        var props = {};
+        el.props.forEach(function (p, j2) {
+          props[p.name] = cols[j2];
+        });
+        out[el.name] = props;
+      } else {
+        var want = el.name === "face" ? faceListName(el) : null;
+        var polys = [];
+        for (var r2 = 0; r2 < el.count; r2++) {
+          if ((r2 & 0xffff) === 0) progress(0.5 + 0.5 * (r2 / Math.max(1, el.count)));
+          var row = tokens(lines[pos + r2]);
+          var lineno = firstLine + pos + r2;
+          var t = 0;
+          for (var pi = 0; pi < el.props.length; pi++) {
+            var p2 = el.props[pi];
+            if (p2.count === null) {
+              t += 1;
+              continue;
+            }
+            var n = t < row.length ? pyInt(row[t]) : undefined;
+            var items = [];
+            if (n !== undefined && n >= 0) {
+              for (var q = t + 1; q < Math.min(t + 1 + n, row.length); q++) {
+                var x = pyInt(row[q]);
+                if (x === undefined) {
+                  n = undefined;
+                  break;
+                }
+                items.push(x);
+              }
+            }
+            if (n === undefined || n < 0 || items.length !== n) fileError(name, lineno, "ply_row", { element: el.name });
+            t += 1 + n;
+            if (p2.name === want) polys.push(items);
+          }
+          if (t !== row.length) fileError(name, lineno, "ply_too_many", { element: el.name, count: row.length - t });
+        }
+        out[el.name] = { _polys: polys };
+      }
+      pos += el.count;
+    });
+    return out;
+  }
+
+  function plyBinary(bytes, start, elements, little, name, progress) {
+    var view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    var out = {};
+    var pos = start;
+    var size = bytes.length;
+    elements.forEach(function (el) {
+      if (isFixed(el)) {
+        var item = 0;
+        el.props.forEach(function (p) { item += p.type[1]; });
+        if (pos + item * el.count > size) {
+          fileError(name, null, "ply_binary_short", {
+            element: el.name, rows: Math.floor((size - pos) / Math.max(item, 1)), count: el.count,
+          });
+        }
+        if (el.name === "vertex" || el.name === "face") {
+          var props = {};
+          var offset = 0;
+          el.props.forEach(function (p) {
+            var col = new Float64Array(el.count);
+            var getter = "get" + p.type[0];
+            for (var r = 0; r < el.count; r++) col[r] = view[getter](pos + r * item + offset, little);
+            props[p.name] = col;
+            offset += p.type[1];
+          });
+          out[el.name] = props;
+        }
+        pos += item * el.count;
+        return;
+      }
+      var want = el.name === "face" ? faceListName(el) : null;
+      var polys = [];
+      for (var r2 = 0; r2 < el.count; r2++) {
+        if ((r2 & 0xffff) === 0) progress(r2 / Math.max(1, el.count));
+        for (var pi = 0; pi < el.props.length; pi++) {
+          var p2 = el.props[pi];
+          if (p2.count === null) {
+            pos += p2.type[1];
+            if (pos > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.count });
+            continue;
+          }
+          if (pos + p2.count[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.count });
+          var n = view["get" + p2.count[0]](pos, little);
+          pos += p2.count[1];
+          if (n < 0 || pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.count });
+          if (p2.name === want) {
+            var items = new Array(n);
+            var getter2 = "get" + p2.type[0];
+            for (var q = 0; q < n; q++) items[q] = view[getter2](pos + q * p2.type[1], little);
+            polys.push(items);
+          }
+          pos += n * p2.type[1];
+        }
+      }
+      if (el.name === "face") out.face = { _polys: polys };
+    });
+    return out;
+  }
+
   /**
-   * Read a mesh file. `buffer` is an ArrayBuffer (or Uint8Array), `name` the file name.
-   * Returns {format, binary, vertices: Float64Array (3 per vertex), faces: Uint32Array (3 per
-   * triangle), polygons, split_polygons}; throws MeshError with the package's message.
+   * Read a mesh file. `buffer` is an ArrayBuffer (or Uint8Array), `name` the file name; the
+   * format comes from the name's extension, as in Python's read_mesh. Returns {format, binary,
+   * vertices: Float64Array (3 per vertex), faces: Uint32Array (3 per triangle), polygons,
+   * split_polygons}; throws MeshError with Python's sentence (or the page's own, for its limits).
    */
   function read(buffer, name, onProgress) {
     var bytes = buffer instanceof Uint8Array ? buffer : new Uint8Array(buffer);
     var progress = onProgress || function () {};
-    if (bytes.length === 0) fail("empty_file", { name: name });
+    var ext = extension(name);
+    if (FORMATS.indexOf(ext) < 0) fileError(name, null, "unknown_format", { ext: ext ? "." + ext : message("no_extension", {}) });
     if (bytes.length > LIMITS.max_bytes) fail("too_large", { name: name, size: bytes.length, max: LIMITS.max_bytes });
-    var format = detectFormat(bytes, name);
-    var mesh;
-    if (format === "obj") mesh = Object.assign(readObj(bytes, name, progress), { binary: false });
-    else if (format === "stl") mesh = readStl(bytes, name, progress);
-    else mesh = readPly(bytes, name, progress);
-    mesh.format = format;
+    var mesh = ext === "obj" ? readObj(bytes, name, progress) : ext === "stl" ? readStl(bytes, name, progress) : readPly(bytes, name, progress);
+    mesh.format = ext;
     mesh.name = name;
     if (mesh.faces.length === 0) fail("no_faces", { name: name });
     if (mesh.faces.length / 3 > LIMITS.max_faces) fail("too_many_faces", { name: name, count: mesh.faces.length / 3, max: LIMITS.max_faces });
@@ -962,7 +1071,7 @@
     progress(0.9);
 
     var components = [];
-    var allClosed = nComp > 0, allConsistent = true, allOutward = true;
+    var allClosed = nComp > 0, allConsistent = true, allOutward = true, anyClosed = false;
     for (i = 0; i < nComp; i++) {
       var consistent = inconsistent[i] === 0;
       var measurable = closed[i] && consistent;
@@ -979,10 +1088,11 @@
       components.push(entry);
       if (!closed[i]) allClosed = false;
       if (!consistent) allConsistent = false;
+      if (closed[i]) anyClosed = true;
       if (closed[i] && entry.outward !== true) allOutward = false;
     }
     var ok =
-      allClosed && allConsistent && allOutward &&
+      allClosed && allConsistent && anyClosed && allOutward &&
       !degenerate.length && !dups.same.length && !dups.reversed.length &&
       !nonManifoldVertices.length && !unused.length;
     progress(1);
@@ -992,7 +1102,7 @@
       n_components: nComp,
       closed: allClosed,
       consistent_winding: allConsistent,
-      outward: allOutward,
+      outward: anyClosed ? allOutward : null, // null: no closed piece to face out
       ok: ok,
       unused_vertices: unused,
       degenerate_faces: degenerate,
@@ -1059,7 +1169,7 @@
 
   // ------------------------------------------------------------------ the fix and the writers
 
-  /** The faces with the report's faces_to_flip reversed (corners 1 and 2 swapped). */
+  /** The faces with the report's faces_to_flip turned over: (a, b, c) becomes (a, c, b). */
   function fixWinding(faces, report) {
     var out = new Uint32Array(faces);
     var list = report.faces_to_flip;
@@ -1072,90 +1182,158 @@
     return out;
   }
 
-  function num(x) {
-    // shortest text that reads back as the same float64 (like Python's repr)
-    return Object.is(x, -0) ? "-0.0" : Number.isInteger(x) && Math.abs(x) < 1e16 ? x.toFixed(1) : String(x);
+  /** Python's repr() of a float: the shortest digits that read back, in Python's layout. */
+  function repr(x) {
+    if (x === 0) return Object.is(x, -0) ? "-0.0" : "0.0";
+    if (!Number.isFinite(x)) return x > 0 ? "inf" : x < 0 ? "-inf" : "nan";
+    var e = x.toExponential(); // shortest round-trip digits: "d.ddde+X"
+    var m = /^(-?)(\d)(?:\.(\d+))?e([+-]\d+)$/.exec(e);
+    var sign = m[1];
+    var digits = m[2] + (m[3] || "");
+    var exp = parseInt(m[4], 10);
+    if (exp < -4 || exp >= 16) {
+      var mant = digits.length > 1 ? digits[0] + "." + digits.slice(1) : digits;
+      var ee = Math.abs(exp);
+      return sign + mant + "e" + (exp < 0 ? "-" : "+") + (ee < 10 ? "0" : "") + ee;
+    }
+    if (exp < 0) return sign + "0." + "0".repeat(-exp - 1) + digits;
+    if (digits.length <= exp + 1) return sign + digits + "0".repeat(exp + 1 - digits.length) + ".0";
+    return sign + digits.slice(0, exp + 1) + "." + digits.slice(exp + 1);
   }
 
-  /** The mesh as a file in its own format (binary stays binary): a Uint8Array. */
+  /** Unit normals for STL facets as trinormal.mesh.face_normals gives them (zero if degenerate). */
+  function facetNormals(V, faces) {
+    var nf = faces.length / 3;
+    var deg = degenerateFaces(V, faces);
+    var out = new Float64Array(3 * nf);
+    for (var f = 0; f < nf; f++) {
+      if (deg[f]) continue;
+      var a = 3 * faces[3 * f], b = 3 * faces[3 * f + 1], c = 3 * faces[3 * f + 2];
+      var ux = V[b] - V[a], uy = V[b + 1] - V[a + 1], uz = V[b + 2] - V[a + 2];
+      var vx = V[c] - V[a], vy = V[c + 1] - V[a + 1], vz = V[c + 2] - V[a + 2];
+      var nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+      var ss = nx * nx + ny * ny + nz * nz;
+      var d = ux * vx + uy * vy + uz * vz;
+      if (d * d + ss < TWO_900 && ss > TWO_M900) {
+        var t = 1.0 / Math.sqrt(ss);
+        out[3 * f] = nx * t;
+        out[3 * f + 1] = ny * t;
+        out[3 * f + 2] = nz * t;
+      } else {
+        // extreme scales: the edges scaled by powers of two first (exact), as Python does
+        var eu = frexpExp(Math.max(Math.abs(ux), Math.abs(uy), Math.abs(uz)));
+        var ev = frexpExp(Math.max(Math.abs(vx), Math.abs(vy), Math.abs(vz)));
+        if (!(Number.isFinite(ux) && Number.isFinite(uy) && Number.isFinite(uz) && Number.isFinite(vx) && Number.isFinite(vy) && Number.isFinite(vz))) {
+          ux = V[b] * 0.25 - V[a] * 0.25; uy = V[b + 1] * 0.25 - V[a + 1] * 0.25; uz = V[b + 2] * 0.25 - V[a + 2] * 0.25;
+          vx = V[c] * 0.25 - V[a] * 0.25; vy = V[c + 1] * 0.25 - V[a + 1] * 0.25; vz = V[c + 2] * 0.25 - V[a + 2] * 0.25;
+          eu = frexpExp(Math.max(Math.abs(ux), Math.abs(uy), Math.abs(uz)));
+          ev = frexpExp(Math.max(Math.abs(vx), Math.abs(vy), Math.abs(vz)));
+        }
+        ux = ldexp(ux, -eu); uy = ldexp(uy, -eu); uz = ldexp(uz, -eu);
+        vx = ldexp(vx, -ev); vy = ldexp(vy, -ev); vz = ldexp(vz, -ev);
+        nx = uy * vz - uz * vy; ny = uz * vx - ux * vz; nz = ux * vy - uy * vx;
+        var en = frexpExp(Math.max(Math.abs(nx), Math.abs(ny), Math.abs(nz)));
+        nx = ldexp(nx, -en); ny = ldexp(ny, -en); nz = ldexp(nz, -en);
+        var mag = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        if (mag > 0) {
+          out[3 * f] = nx / mag;
+          out[3 * f + 1] = ny / mag;
+          out[3 * f + 2] = nz / mag;
+        }
+      }
+    }
+    return out;
+  }
+
+  function encodeText(lines) {
+    return new TextEncoder().encode(lines.join("\n") + "\n");
+  }
+
+  /**
+   * The mesh as a file in its own format and encoding, written as trinormal.mesh.write_mesh
+   * writes it (byte for byte): a Uint8Array.
+   */
   function write(mesh, faces) {
     var V = mesh.vertices;
     var nv = V.length / 3;
     var nf = faces.length / 3;
-    var parts = [];
-    var i;
+    var lines = [];
+    var i, k;
     if (mesh.format === "obj") {
-      parts.push("# written by trinormal\n");
-      for (i = 0; i < nv; i++) parts.push("v " + num(V[3 * i]) + " " + num(V[3 * i + 1]) + " " + num(V[3 * i + 2]) + "\n");
-      for (i = 0; i < nf; i++) parts.push("f " + (faces[3 * i] + 1) + " " + (faces[3 * i + 1] + 1) + " " + (faces[3 * i + 2] + 1) + "\n");
-      return new TextEncoder().encode(parts.join(""));
-    }
-    if (mesh.format === "stl" && mesh.binary) {
-      var buf = new ArrayBuffer(84 + 50 * nf);
-      var view = new DataView(buf);
-      var head = "binary STL written by trinormal";
-      for (i = 0; i < head.length; i++) view.setUint8(i, head.charCodeAt(i));
-      view.setUint32(80, nf, true);
-      for (i = 0; i < nf; i++) {
-        var base = 84 + 50 * i;
-        var n = faceNormal(V, faces, i);
-        for (var k = 0; k < 3; k++) view.setFloat32(base + 4 * k, n[k], true);
-        for (var c = 0; c < 3; c++) {
-          var p = 3 * faces[3 * i + c];
-          for (var a = 0; a < 3; a++) view.setFloat32(base + 12 + 12 * c + 4 * a, V[p + a], true);
-        }
-      }
-      return new Uint8Array(buf);
+      lines.push("# written by trinormal");
+      for (i = 0; i < nv; i++) lines.push("v " + repr(V[3 * i]) + " " + repr(V[3 * i + 1]) + " " + repr(V[3 * i + 2]));
+      for (i = 0; i < nf; i++) lines.push("f " + (faces[3 * i] + 1) + " " + (faces[3 * i + 1] + 1) + " " + (faces[3 * i + 2] + 1));
+      return encodeText(lines);
     }
     if (mesh.format === "stl") {
-      parts.push("solid trinormal\n");
-      for (i = 0; i < nf; i++) {
-        var nn = faceNormal(V, faces, i);
-        parts.push(" facet normal " + nn.map(num).join(" ") + "\n  outer loop\n");
-        for (var cc = 0; cc < 3; cc++) {
-          var q = 3 * faces[3 * i + cc];
-          parts.push("   vertex " + num(V[q]) + " " + num(V[q + 1]) + " " + num(V[q + 2]) + "\n");
+      var normals = facetNormals(V, faces);
+      if (mesh.binary) {
+        var buf = new ArrayBuffer(84 + 50 * nf);
+        var view = new DataView(buf);
+        var head = "binary STL written by trinormal";
+        for (i = 0; i < 80; i++) view.setUint8(i, i < head.length ? head.charCodeAt(i) : 32);
+        view.setUint32(80, nf, true);
+        for (i = 0; i < nf; i++) {
+          var base = 84 + 50 * i;
+          for (k = 0; k < 3; k++) view.setFloat32(base + 4 * k, normals[3 * i + k], true);
+          for (var c = 0; c < 3; c++) {
+            var p = 3 * faces[3 * i + c];
+            for (var a = 0; a < 3; a++) view.setFloat32(base + 12 + 12 * c + 4 * a, V[p + a], true);
+          }
         }
-        parts.push("  endloop\n endfacet\n");
+        return new Uint8Array(buf);
       }
-      parts.push("endsolid trinormal\n");
-      return new TextEncoder().encode(parts.join(""));
+      lines.push("solid trinormal");
+      for (i = 0; i < nf; i++) {
+        lines.push("facet normal " + repr(normals[3 * i]) + " " + repr(normals[3 * i + 1]) + " " + repr(normals[3 * i + 2]));
+        lines.push("outer loop");
+        for (k = 0; k < 3; k++) {
+          var q = 3 * faces[3 * i + k];
+          lines.push("vertex " + repr(V[q]) + " " + repr(V[q + 1]) + " " + repr(V[q + 2]));
+        }
+        lines.push("endloop");
+        lines.push("endfacet");
+      }
+      lines.push("endsolid trinormal");
+      return encodeText(lines);
     }
-    // PLY
-    var fmt = mesh.binary ? "binary_little_endian" : "ascii";
-    var header =
-      "ply\nformat " + fmt + " 1.0\ncomment written by trinormal\nelement vertex " + nv +
-      "\nproperty double x\nproperty double y\nproperty double z\nelement face " + nf +
-      "\nproperty list uchar int vertex_indices\nend_header\n";
+    // PLY: float32 coordinates when every one is a float32 number, float64 otherwise
+    var single = true;
+    for (i = 0; i < V.length && single; i++) single = Math.fround(V[i]) === V[i];
+    var vtype = single ? "float" : "double";
+    var header = [
+      "ply",
+      "format " + (mesh.binary ? "binary_little_endian" : "ascii") + " 1.0",
+      "comment written by trinormal",
+      "element vertex " + nv,
+      "property " + vtype + " x",
+      "property " + vtype + " y",
+      "property " + vtype + " z",
+      "element face " + nf,
+      "property list uchar int vertex_indices",
+      "end_header",
+    ];
     if (!mesh.binary) {
-      parts.push(header);
-      for (i = 0; i < nv; i++) parts.push(num(V[3 * i]) + " " + num(V[3 * i + 1]) + " " + num(V[3 * i + 2]) + "\n");
-      for (i = 0; i < nf; i++) parts.push("3 " + faces[3 * i] + " " + faces[3 * i + 1] + " " + faces[3 * i + 2] + "\n");
-      return new TextEncoder().encode(parts.join(""));
+      for (i = 0; i < nv; i++) header.push(repr(V[3 * i]) + " " + repr(V[3 * i + 1]) + " " + repr(V[3 * i + 2]));
+      for (i = 0; i < nf; i++) header.push("3 " + faces[3 * i] + " " + faces[3 * i + 1] + " " + faces[3 * i + 2]);
+      return encodeText(header);
     }
-    var headBytes = new TextEncoder().encode(header);
-    var out = new Uint8Array(headBytes.length + 24 * nv + 13 * nf);
+    var headBytes = new TextEncoder().encode(header.join("\n") + "\n");
+    var size = single ? 4 : 8;
+    var out = new Uint8Array(headBytes.length + 3 * size * nv + 13 * nf);
     out.set(headBytes, 0);
     var dv = new DataView(out.buffer);
     var at = headBytes.length;
-    for (i = 0; i < 3 * nv; i++, at += 8) dv.setFloat64(at, V[i], true);
+    for (i = 0; i < 3 * nv; i++, at += size) {
+      if (single) dv.setFloat32(at, V[i], true);
+      else dv.setFloat64(at, V[i], true);
+    }
     for (i = 0; i < nf; i++) {
       dv.setUint8(at, 3);
       at += 1;
       for (var j = 0; j < 3; j++, at += 4) dv.setInt32(at, faces[3 * i + j], true);
     }
     return out;
-  }
-
-  /** The unit normal of one face for an STL facet record (0, 0, 0 when degenerate). */
-  function faceNormal(V, faces, f) {
-    var a = 3 * faces[3 * f], b = 3 * faces[3 * f + 1], c = 3 * faces[3 * f + 2];
-    var ux = V[b] - V[a], uy = V[b + 1] - V[a + 1], uz = V[b + 2] - V[a + 2];
-    var vx = V[c] - V[a], vy = V[c + 1] - V[a + 1], vz = V[c + 2] - V[a + 2];
-    var n = [uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx];
-    var len = Math.hypot(n[0], n[1], n[2]);
-    if (!(len > 0) || !Number.isFinite(len)) return [0, 0, 0];
-    return [n[0] / len, n[1] / len, n[2] / len];
   }
 
   // ------------------------------------------------------------------ the summary in words
@@ -1243,5 +1421,6 @@
     degenerateFaces: degenerateFaces,
     fixWinding: fixWinding,
     write: write,
+    repr: repr,
   };
 });
