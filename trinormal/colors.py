@@ -5,7 +5,9 @@ in these colours. Each role has a colour for light backgrounds and one for dark
 backgrounds; both keep a contrast of at least 3:1 against their background
 (WCAG's rule for graphics), and the hues come from Okabe and Ito's palette, so
 the code survives the common forms of colour blindness. Colour is never the
-only cue: every point, arrow and face is also labelled.
+only cue: every point, arrow and face is also labelled. The mesh view of the
+site's "Check a mesh" page adds three roles drawn over a mesh's faces (faces to
+flip, boundary edges, non-manifold edges); its legend names each with its count.
 
 Examples
 --------
@@ -34,6 +36,9 @@ ROLE_MEANINGS: dict[str, str] = {
     "x": "x axis",
     "y": "y axis",
     "z": "z axis",
+    "flipped": "outline of a mesh face wound against its neighbours (to flip)",
+    "boundary": "mesh edge with one face only (the rim of a hole)",
+    "non_manifold": "mesh edge shared by three faces or more",
 }
 
 #: The roles, in drawing order.
@@ -52,6 +57,10 @@ ROLE_COLORS: dict[str, str] = {
     "x": "#D55E00",
     "y": "#009E73",
     "z": "#0072B2",
+    # a mesh's defects, drawn over its faces (the mesh view of the site's "Check a mesh" page)
+    "flipped": "#000000",
+    "boundary": "#C1007C",  # Okabe-Ito reddish purple, darkened: 4.5:1 on the front yellow
+    "non_manifold": "#D55E00",
 }
 
 #: Colours on a dark background (the site's slate scheme, a dark JupyterLab theme).
@@ -67,6 +76,9 @@ DARK_ROLE_COLORS: dict[str, str] = {
     "x": "#FF8C42",
     "y": "#3DDC97",
     "z": "#56B4E9",
+    "flipped": "#FFFFFF",
+    "boundary": "#FF6EC7",
+    "non_manifold": "#FF8C42",
 }
 
 

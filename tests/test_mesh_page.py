@@ -1,0 +1,82 @@
+"""The "Check a mesh" page's constants: defined once in Python, complete, and all used.
+
+The page's JavaScript (``docs/assets/javascripts/trinormal-mesh.js``, ``mesh-page.js``) names
+no sentence, limit or report row of its own: it reads them from ``trinormal.mesh_page`` through
+the constants file the site build writes. These tests check that every message key the
+JavaScript asks for exists here and that every one defined here is used, that the examples
+the page offers are real meshes with something to fix, and that the mesh view's colours can
+be told from the page's backgrounds. Browser tests (``tests/browser/test_mesh_site.py``)
+compare the page's reports, sentences, messages and repaired files with Python's.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+from trinormal import colors, mesh_page
+from trinormal.mesh import check, parse_mesh
+
+ROOT = Path(__file__).resolve().parents[1]
+JS = ROOT / "docs" / "assets" / "javascripts"
+sys.path.insert(0, str(ROOT / "docs" / "hooks"))
+import trinormal_site  # noqa: E402  (the mkdocs hook, imported as the build imports it)
+
+# message("key" ...), fail("key" ...) and fileError(name, line, "key" ...) in the page's scripts
+_KEY = re.compile(r'\b(?:message|fail)\(\s*"(\w+)"|fileError\([^,]+,[^,]+,\s*"(\w+)"')
+
+
+def js_message_keys() -> set[str]:
+    keys = set()
+    for name in ("trinormal-mesh.js", "mesh-page.js", "mesh-worker.js"):
+        for m in _KEY.finditer((JS / name).read_text(encoding="utf-8")):
+            keys.add(m.group(1) or m.group(2))
+    return keys
+
+
+def test_every_message_the_page_uses_is_defined_once_in_python_and_every_one_is_used():
+    used = js_message_keys()
+    assert used - set(mesh_page.MESSAGES) == set()
+    assert set(mesh_page.MESSAGES) - used == set()
+
+
+def test_the_site_build_writes_the_page_constants():
+    js = trinormal_site.constants_js()
+    assert '"mesh": {' in js
+    assert trinormal_site.site_constants()["mesh"] == mesh_page.site_constants()
+
+
+def test_the_report_rows_are_keys_of_pythons_report():
+    v, f = mesh_page.example_mesh("cube-one-face-flipped.obj")
+    keys = set(check(v, f).to_dict())
+    assert {key for key, _ in mesh_page.REPORT_ROWS} <= keys
+
+
+@pytest.mark.parametrize("name", [n for n, _ in mesh_page.EXAMPLES])
+def test_each_example_is_a_file_python_reads_with_something_to_fix(name):
+    data = mesh_page.example_file(name)
+    m = parse_mesh(data, name.rsplit(".", 1)[-1], name)
+    report = check(m.vertices, m.faces)
+    assert len(report.faces_to_flip) > 0
+    assert not report.ok
+    assert m.encoding == ("binary" if name.endswith(".stl") else "ascii")
+
+
+def _luminance(hex_colour: str) -> float:
+    rgb = [int(hex_colour[i : i + 2], 16) / 255 for i in (1, 3, 5)]
+    lin = [c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4 for c in rgb]
+    return 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2]
+
+
+def _contrast(a: str, b: str) -> float:
+    hi, lo = sorted((_luminance(a), _luminance(b)), reverse=True)
+    return (hi + 0.05) / (lo + 0.05)
+
+
+@pytest.mark.parametrize("role", ["flipped", "boundary", "non_manifold"])
+def test_the_mesh_views_colours_stand_out_from_the_background(role):
+    assert _contrast(colors.color(role), "#FFFFFF") >= 3
+    assert _contrast(colors.color(role, dark=True), "#1B1D24") >= 3
