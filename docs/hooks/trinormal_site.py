@@ -577,6 +577,7 @@ def _api(args: list[str], page: Page, config: MkDocsConfig) -> str:
         "tolerances": "Tolerances",
         "symbolic": "Symbolic derivations",
         "mesh": "Meshes",
+        "mesh_page": "The Check a mesh page",
         "plotting": "Plotting",
         "widgets": "The explorer widget",
         "guide": "The guide's numbers",
