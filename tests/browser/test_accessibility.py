@@ -83,7 +83,14 @@ _FOCUS_RING = """() => {
 
 def test_focus_is_visible_on_every_control(page, server, traffic):
     missing: dict[str, list[str]] = {}
-    for path in ("", "getting-started/", "calculator/", "notebooks/03_comparison_table/", "api/"):
+    for path in (
+        "",
+        "getting-started/",
+        "calculator/",
+        "mesh/",
+        "notebooks/03_comparison_table/",
+        "api/",
+    ):
         page.set_viewport_size({"width": 1280, "height": 800})
         _open(page, server + path, "default")
         seen = set()

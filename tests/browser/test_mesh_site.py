@@ -233,6 +233,27 @@ def test_a_big_binary_stl_moves_the_progress_bar(page, server, traffic, tmp_path
     assert not traffic.problems()
 
 
+def test_a_dropped_file_is_reported(page, server, traffic):
+    """Dropping a file on the box reads it like the file input does."""
+    name = "inside-out-torus.stl"
+    data = example_file(name)
+    open_page(page, server)
+    page.evaluate(
+        """([name, b64]) => {
+          const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+          const transfer = new DataTransfer();
+          transfer.items.add(new File([bytes], name));
+          const box = document.getElementById('tn-mesh');
+          box.dispatchEvent(new DragEvent('dragover', {dataTransfer: transfer, bubbles: true}));
+          box.dispatchEvent(new DragEvent('drop', {dataTransfer: transfer, bubbles: true}));
+        }""",
+        [name, _b64(data)],
+    )
+    assert reported(page) == python_report(name, data)[0]
+    assert page.locator("#tn-mesh-format").inner_text() == "STL (binary)"
+    assert not traffic.problems()
+
+
 def test_examples_are_one_click_away(page, server, traffic):
     open_page(page, server)
     buttons = page.locator("button[data-example]")
@@ -251,3 +272,21 @@ def binary_stl(v, f) -> bytes:
     data = np.zeros(len(f), dtype=record)
     data["corners"] = np.asarray(v)[np.asarray(f)]
     return bytes(80) + np.uint32(len(f)).tobytes() + data.tobytes()
+
+
+def test_a_report_reads_well_on_a_phone_in_both_schemes(page, server, traffic):
+    """At 360 px with a report shown: nothing sticks out, wide tables scroll in their own box."""
+    from test_site import _LAYOUT_PROBLEMS
+
+    page.set_viewport_size({"width": 360, "height": 740})
+    open_page(page, server)
+    page.locator("button[data-example]").nth(1).click()
+    reported(page)
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    page.wait_for_timeout(250)  # scrollboxes.js re-checks 100 ms after a change
+    for scheme in ("default", "slate"):
+        page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", scheme)
+        assert page.evaluate(_LAYOUT_PROBLEMS) == [], scheme
+    canvas = page.locator("#tn-mesh-view canvas").bounding_box()
+    assert canvas and canvas["width"] <= 360 and canvas["height"] >= 200
+    assert not traffic.problems()
