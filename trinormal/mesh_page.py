@@ -120,7 +120,7 @@ MESSAGES: dict[str, str] = {
     "reading": "Reading {name}…",
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",
-    "fixed": "Fixed: {count} faces flipped. The report below is the repaired mesh's.",
+    "fixed": "Fixed: {faces} turned over. The report below is the repaired mesh's.",
 }
 
 #: Things counted in the summary: the singular and the plural, as ``_n`` of the report writes them.

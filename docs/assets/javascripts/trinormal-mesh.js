@@ -1418,6 +1418,7 @@
     check: check,
     toDict: toDict,
     summary: summary,
+    counted: counted,
     degenerateFaces: degenerateFaces,
     fixWinding: fixWinding,
     write: write,
