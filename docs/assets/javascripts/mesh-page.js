@@ -254,7 +254,7 @@ function mount(root) {
       const count = current.report.faces_to_flip.length;
       const res = await worker.run("fix", {}, [], progress);
       fixedFile = { bytes: res.file, name: fixedName(name) };
-      const shown = showResult(res, message("fixed", { count }));
+      const shown = showResult(res, message("fixed", { faces: window.TrinormalMesh.counted(count, "face") }));
       setBusy(false);
       root.dataset.state = "fixed";
       await shown;
