@@ -29,9 +29,11 @@ function progressFor(id, stage) {
   };
 }
 
-/** What the page needs: the report, and the mesh for the 3D view (float32 copies). */
+/** What the page needs: the report, and the mesh for the 3D view (copies, transferred). */
 function payload(mesh, faces, report, file) {
-  const positions = new Float32Array(mesh.vertices);
+  // float64: the view centres and scales the model before it rounds to float32, so models at
+  // 1e-200 or 1e200 are drawn too
+  const positions = new Float64Array(mesh.vertices);
   const faceCopy = new Uint32Array(faces);
   const result = {
     name: mesh.name,

@@ -3,7 +3,7 @@
  * triangle explorer beside it (../index.js), sharing its stage (../scene.js) and colours.
  *
  * render({ model, el }) reads model.get("mesh"):
- *   { positions: Float32Array (3 per vertex), faces: Uint32Array (3 per triangle),
+ *   { positions: Float64Array or Float32Array (3 per vertex), faces: Uint32Array (3 per triangle),
  *     flipped: Int32Array (faces to flip), boundary, non_manifold: Int32Array (one face side
  *     3 * face + k per edge, the edge from corner k to corner k + 1) }
  * and model.get("palette") ({role: {light, dark}}, trinormal.colors.palette()). The side of a
