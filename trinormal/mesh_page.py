@@ -85,6 +85,7 @@ MESSAGES: dict[str, str] = {
     "ply_keyword": "{token} is not a PLY header keyword",
     "ply_no_format": "the header has no 'format' line",
     "ply_no_vertex": "the header has no 'vertex' element",
+    "ply_vertex_list": "the vertex element has a list property",
     "ply_no_axis": "the vertex element has no '{axis}' property",
     "ply_not_finite": "vertex {vertex} has a coordinate that is not finite",
     "ply_corners": "face {face} has {count} corners; a face needs 3 or more",

@@ -187,7 +187,7 @@
       fileError(name, line, "binary_data", { what: what });
     }
     try {
-      return utf8.decode(bytes);
+      return utf8.decode(bytes); // TextDecoder drops a leading byte-order mark, as Python does
     } catch (err) {
       return latin1.decode(bytes);
     }
@@ -479,6 +479,7 @@
       if (!vert && e.name === "vertex") vert = e;
     });
     if (!vert) fileError(name, null, "ply_no_vertex", {});
+    if (!isFixed(vert)) fileError(name, vert.line, "ply_vertex_list", {});
     ["x", "y", "z"].forEach(function (axis) {
       var has = vert.props.some(function (p) { return p.name === axis && p.count === null; });
       if (!has) fileError(name, vert.line, "ply_no_axis", { axis: axis });
