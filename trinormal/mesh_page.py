@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = [
@@ -122,76 +123,6 @@ MESSAGES: dict[str, str] = {
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",
     "fixed": "Fixed: {faces} turned over. The report below is the repaired mesh's.",
-}
-
-#: Things counted in the summary: the singular and the plural, as ``_n`` of the report writes them.
-NOUNS: dict[str, tuple[str, str]] = {
-    "vertex": ("vertex", "vertices"),
-    "triangle": ("triangle", "triangles"),
-    "piece": ("piece", "pieces"),
-    "face": ("face", "faces"),
-}
-
-#: The summary's sentences: one template, or a (one, many) pair chosen by ``{n}``.
-SUMMARY: dict[str, str | tuple[str, str]] = {
-    "sizes": "{vertices}, {triangles}, {pieces}.",
-    "ok": (
-        "No problems found: the surface is closed, every face is wound the same way round, "
-        "and every normal points outward."
-    ),
-    "degenerate": (
-        "{n} degenerate face ({parts}): no area and no normal, so they cannot be lit or oriented.",
-        "{n} degenerate faces ({parts}): no area and no normal, so they cannot be lit or oriented.",
-    ),
-    "coincident": "{n} with two corners at the same point",
-    "collinear": "{n} with corners on one line",
-    "duplicate": (
-        "{n} face repeats another face exactly.",
-        "{n} faces repeat another face exactly.",
-    ),
-    "reversed_duplicate": (
-        "{n} face repeats another face wound the other way: the two normals cancel, and the "
-        "pair is a sheet with no inside.",
-        "{n} faces repeat another face wound the other way: the two normals cancel, and the "
-        "pair is a sheet with no inside.",
-    ),
-    "unused": ("{n} vertex is not used by any face.", "{n} vertices are not used by any face."),
-    "boundary": (
-        "{n} edge belongs to one face only: the surface has holes (or is an open sheet), so it "
-        "has no inside. Through a hole you see the back of the faces behind it.",
-        "{n} edges belong to one face only: the surface has holes (or is an open sheet), so it "
-        "has no inside. Through a hole you see the back of the faces behind it.",
-    ),
-    "non_manifold_edges": (
-        "{n} edge is shared by three faces or more, like the spine of a book: no single "
-        "surface does that.",
-        "{n} edges are shared by three faces or more, like the spine of a book: no single "
-        "surface does that.",
-    ),
-    "non_manifold_vertices": (
-        "{n} vertex joins pieces of surface that touch only at that point.",
-        "{n} vertices join pieces of surface that touch only at that point.",
-    ),
-    "piece": "Piece {i} ({faces})",
-    "whole": "The mesh",
-    "not_orientable": (
-        "{name} cannot be wound consistently at all, like a Möbius strip: it has only one side."
-    ),
-    "inconsistent": (
-        "{name} is wound inconsistently: some faces are turned the other way round from their "
-        "neighbours, so their normals point the wrong way. Lighting makes such faces dark, and "
-        "back-face culling makes them vanish."
-    ),
-    "inside_out": (
-        "{name} is inside out: every normal points inward (the enclosed volume is negative)."
-    ),
-    "no_volume": "{name} is closed but encloses no volume, so it has no outside.",
-    "flip": (
-        "fix_winding turns {n} face over to wind every piece consistently{end}",
-        "fix_winding turns {n} faces over to wind every piece consistently{end}",
-    ),
-    "flip_end_closed": " and outward.",
-    "flip_end_open": ".",
 }
 
 #: The report's rows on the page: the key of ``check(...).to_dict()`` and its label.

@@ -21,7 +21,7 @@ from trinormal.mesh.repair import _winding
 from trinormal.mesh.topology import _duplicates, _fans, _HalfEdges
 from trinormal.tolerances import DEFAULT_TOL
 
-__all__ = ["ComponentReport", "MeshReport", "check"]
+__all__ = ["NOUNS", "SUMMARY", "ComponentReport", "MeshReport", "check"]
 
 
 @dataclass(frozen=True)
@@ -225,88 +225,136 @@ class MeshReport:
         return "\n".join(lines)
 
 
-def _n(count: int, one: str, many: str | None = None) -> str:
-    return f"{count} {one if count == 1 else (many or one + 's')}"
+#: Things the summary counts: the singular and the plural.
+NOUNS: dict[str, tuple[str, str]] = {
+    "vertex": ("vertex", "vertices"),
+    "triangle": ("triangle", "triangles"),
+    "piece": ("piece", "pieces"),
+    "face": ("face", "faces"),
+}
+
+#: The summary's sentences: a template, or a (one, many) pair chosen by its count ``{n}``.
+#: The site's "Check a mesh" page writes its summary from these same templates.
+SUMMARY: dict[str, str | tuple[str, str]] = {
+    "sizes": "{vertices}, {triangles}, {pieces}.",
+    "ok": (
+        "No problems found: the surface is closed, every face is wound the same way round, "
+        "and every normal points outward."
+    ),
+    "degenerate": (
+        "{n} degenerate face ({parts}): no area and no normal, so they cannot be lit or oriented.",
+        "{n} degenerate faces ({parts}): no area and no normal, so they cannot be lit or oriented.",
+    ),
+    "coincident": "{n} with two corners at the same point",
+    "collinear": "{n} with corners on one line",
+    "duplicate": (
+        "{n} face repeats another face exactly.",
+        "{n} faces repeat another face exactly.",
+    ),
+    "reversed_duplicate": (
+        "{n} face repeats another face wound the other way: the two normals cancel, and the "
+        "pair is a sheet with no inside.",
+        "{n} faces repeat another face wound the other way: the two normals cancel, and the "
+        "pair is a sheet with no inside.",
+    ),
+    "unused": ("{n} vertex is not used by any face.", "{n} vertices are not used by any face."),
+    "boundary": (
+        "{n} edge belongs to one face only: the surface has holes (or is an open sheet), so it "
+        "has no inside. Through a hole you see the back of the faces behind it.",
+        "{n} edges belong to one face only: the surface has holes (or is an open sheet), so it "
+        "has no inside. Through a hole you see the back of the faces behind it.",
+    ),
+    "non_manifold_edges": (
+        "{n} edge is shared by three faces or more, like the spine of a book: no single "
+        "surface does that.",
+        "{n} edges are shared by three faces or more, like the spine of a book: no single "
+        "surface does that.",
+    ),
+    "non_manifold_vertices": (
+        "{n} vertex joins pieces of surface that touch only at that point.",
+        "{n} vertices join pieces of surface that touch only at that point.",
+    ),
+    "piece": "Piece {i} ({faces})",
+    "whole": "The mesh",
+    "not_orientable": (
+        "{name} cannot be wound consistently at all, like a Möbius strip: it has only one side."
+    ),
+    "inconsistent": (
+        "{name} is wound inconsistently: some faces are turned the other way round from their "
+        "neighbours, so their normals point the wrong way. Lighting makes such faces dark, and "
+        "back-face culling makes them vanish."
+    ),
+    "inside_out": (
+        "{name} is inside out: every normal points inward (the enclosed volume is negative)."
+    ),
+    "no_volume": "{name} is closed but encloses no volume, so it has no outside.",
+    "flip": (
+        "fix_winding turns {n} face over to wind every piece consistently{end}",
+        "fix_winding turns {n} faces over to wind every piece consistently{end}",
+    ),
+    "flip_end_closed": " and outward.",
+    "flip_end_open": ".",
+}
+
+
+def _n(count: int, noun: str) -> str:
+    one, many = NOUNS[noun]
+    return f"{count} {one if count == 1 else many}"
+
+
+def _say(key: str, n: int | None = None, **values: str | int) -> str:
+    template = SUMMARY[key]
+    if isinstance(template, tuple):
+        template = template[0] if n == 1 else template[1]
+    return template.format(n=n, **values)
 
 
 def _summary_lines(r: MeshReport) -> list[str]:
     lines = [
-        f"{_n(r.n_vertices, 'vertex', 'vertices')}, {_n(r.n_faces, 'triangle')}, "
-        f"{_n(len(r.components), 'piece')}."
+        _say(
+            "sizes",
+            vertices=_n(r.n_vertices, "vertex"),
+            triangles=_n(r.n_faces, "triangle"),
+            pieces=_n(len(r.components), "piece"),
+        )
     ]
     if r.ok:
-        lines.append(
-            "No problems found: the surface is closed, every face is wound the same way "
-            "round, and every normal points outward."
-        )
+        lines.append(_say("ok"))
         return lines
     nd = len(r.degenerate_faces)
     if nd:
         parts = []
         if len(r.coincident_faces):
-            parts.append(f"{len(r.coincident_faces)} with two corners at the same point")
+            parts.append(_say("coincident", n=len(r.coincident_faces)))
         if len(r.collinear_faces):
-            parts.append(f"{len(r.collinear_faces)} with corners on one line")
-        lines.append(
-            f"{_n(nd, 'degenerate face')} ({', '.join(parts)}): no area and no normal, "
-            "so they cannot be lit or oriented."
-        )
-    if len(r.duplicate_faces):
-        lines.append(
-            f"{_n(len(r.duplicate_faces), 'face repeats', 'faces repeat')} another face exactly."
-        )
-    if len(r.reversed_duplicate_faces):
-        lines.append(
-            f"{_n(len(r.reversed_duplicate_faces), 'face repeats', 'faces repeat')} another "
-            "face wound the other way: the two normals cancel, and the pair is a sheet "
-            "with no inside."
-        )
-    if len(r.unused_vertices):
-        lines.append(
-            f"{_n(len(r.unused_vertices), 'vertex is', 'vertices are')} not used by any face."
-        )
-    if len(r.boundary_edges):
-        lines.append(
-            f"{_n(len(r.boundary_edges), 'edge belongs', 'edges belong')} to one face only: "
-            "the surface has holes (or is an open sheet), so it has no inside. Through a "
-            "hole you see the back of the faces behind it."
-        )
-    if len(r.non_manifold_edges):
-        lines.append(
-            f"{_n(len(r.non_manifold_edges), 'edge is', 'edges are')} shared by three faces or "
-            "more, like the spine of a book: no single surface does that."
-        )
-    if len(r.non_manifold_vertices):
-        lines.append(
-            f"{_n(len(r.non_manifold_vertices), 'vertex joins', 'vertices join')} pieces of "
-            "surface that touch only at that point."
-        )
+            parts.append(_say("collinear", n=len(r.collinear_faces)))
+        lines.append(_say("degenerate", n=nd, parts=", ".join(parts)))
+    for key, found in (
+        ("duplicate", r.duplicate_faces),
+        ("reversed_duplicate", r.reversed_duplicate_faces),
+        ("unused", r.unused_vertices),
+        ("boundary", r.boundary_edges),
+        ("non_manifold_edges", r.non_manifold_edges),
+        ("non_manifold_vertices", r.non_manifold_vertices),
+    ):
+        if len(found):
+            lines.append(_say(key, n=len(found)))
+    many = len(r.components) > 1
     for i, c in enumerate(r.components):
-        name = f"Piece {i + 1} ({_n(c.faces, 'face')})" if len(r.components) > 1 else "The mesh"
+        name = _say("piece", i=i + 1, faces=_n(c.faces, "face")) if many else _say("whole")
         if not c.orientable:
-            lines.append(
-                f"{name} cannot be wound consistently at all, like a Möbius strip: "
-                "it has only one side."
-            )
+            lines.append(_say("not_orientable", name=name))
         elif not c.consistent:
-            lines.append(
-                f"{name} is wound inconsistently: some faces are turned the other way round "
-                "from their neighbours, so their normals point the wrong way. Lighting makes "
-                "such faces dark, and back-face culling makes them vanish."
-            )
+            lines.append(_say("inconsistent", name=name))
         elif c.closed and c.outward is False:
-            lines.append(
-                f"{name} is inside out: every normal points inward (the enclosed volume is "
-                "negative)."
-            )
+            lines.append(_say("inside_out", name=name))
         elif c.closed and c.outward is None:
-            lines.append(f"{name} is closed but encloses no volume, so it has no outside.")
+            lines.append(_say("no_volume", name=name))
     n_flip = len(r.faces_to_flip)
     if n_flip:
-        lines.append(
-            f"fix_winding turns {_n(n_flip, 'face')} over to wind every piece consistently"
-            + (" and outward." if any(c.closed for c in r.components) else ".")
-        )
+        closed = any(c.closed for c in r.components)
+        end = _say("flip_end_closed" if closed else "flip_end_open")
+        lines.append(_say("flip", n=n_flip, end=end))
     return lines
 
 
