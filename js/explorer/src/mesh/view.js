@@ -210,7 +210,6 @@ function render({ model, el }) {
     geometry = new BufferGeometry();
     geometry.setAttribute("position", new BufferAttribute(pos, 3));
     geometry.setIndex(new BufferAttribute(data.faces, 1));
-    geometry.computeBoundingSphere();
     meshes = [new Mesh(geometry, front), new Mesh(geometry, back)];
     meshes[1].visible = !cull;
     scene.add(...meshes);
@@ -230,8 +229,12 @@ function render({ model, el }) {
       lines[role] = l;
       scene.add(l);
     }
-    const r = geometry.boundingSphere ? geometry.boundingSphere.radius : 2;
-    stage.frameSphere(new Vector3(0, 0, 0), Math.max(r, 1e-3), true, startDirection(pos, data.faces, sets));
+    // keep the corners of the model's box in view, looking from where the trouble is
+    geometry.computeBoundingBox();
+    const { min, max } = geometry.boundingBox;
+    const corners = [];
+    for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
+    stage.framePoints(corners, true, startDirection(pos, data.faces, sets));
     updateResolution();
     drawLegend();
     stage.requestRender();
