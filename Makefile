@@ -56,8 +56,9 @@ LAB_FLAGS := --LabApp.news_url=None --LabApp.check_for_updates_class=jupyterlab.
 lab-env: $(UV_DEP)
 	UV_COMPILE_BYTECODE=0 $(SYNC) --locked --inexact --no-default-groups --group lab $(UV_PYTHON_ARG)
 
+# LAB_ARGS: more options for JupyterLab (`make lab LAB_ARGS="--port 8890 --no-browser"`).
 lab: lab-env
-	$(RUN) jupyter lab notebooks $(LAB_FLAGS)
+	$(RUN) jupyter lab notebooks $(LAB_FLAGS) $(LAB_ARGS)
 
 ## test: lint, types, unit/property/doctests, notebooks (nbval), the site and its browser tests
 # Prints each stage's time at the end, also when a stage fails.

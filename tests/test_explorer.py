@@ -400,8 +400,22 @@ def test_display_bundle_is_the_one_view_with_a_plain_text_summary():
 def test_repr_names_the_state():
     ex = Explorer(a=(0.5, 0, 0), winding="ACB", precision=3)
     assert (
-        repr(ex) == "Explorer(a=(0.5, 0, 0), b=(1, 0, 0), c=(0, 1, 0), winding='ACB', precision=3)"
+        repr(ex)
+        == "Explorer(a=('0.5', 0, 0), b=(1, 0, 0), c=(0, 1, 0), winding='ACB', precision=3)"
     )
+
+
+def test_repr_is_exact_and_recreates_the_explorer():
+    ex = Explorer(a=("0.1", "1e-3", -2), b=("-1/3", 0, 0), c=(0, "2.350", Fraction(7, 3)))
+    text = repr(ex)
+    assert text == (
+        "Explorer(a=('0.1', '0.001', -2), b=('-1/3', 0, 0), c=(0, '2.35', '7/3'), "
+        "winding='ABC', precision=4)"
+    )
+    assert "0.333" not in text
+    again = eval(text, {"Explorer": Explorer})
+    assert again.result.exact == ex.result.exact
+    assert repr(again) == text
 
 
 # --------------------------------------------------------------------------- exactness

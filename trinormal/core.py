@@ -6,19 +6,18 @@ common denominator ``D`` so the cross product runs on plain Python integers;
 each reported float is then one correctly rounded division. Square roots use
 `math.isqrt` on integers scaled by a power of two, so results stay
 accurate at any scale, from 1e-300 to 1e300, with nothing overflowing on the
-way.
-
-Two paths compute the same result. The common call (plain tuples or lists of
-floats and ints, the default tolerance, exact arithmetic) takes a fast path
-written out in one function; it hands anything else (other types, strings, a
-degenerate or out-of-range triangle) to the careful path, which validates
-every input and explains degenerate triangles. The choice depends only on
-what the inputs are, and both paths build their result with the one
-constructor, ``_result``; users get results from
-[`triangle_normal`][trinormal.core.triangle_normal].
+way. Results come from [`triangle_normal`][trinormal.core.triangle_normal].
 
 The standard library is all this module needs.
 """
+
+# How it is built (for maintainers; the API reference shows only the docstring above):
+# two paths compute the same result. The common call (plain tuples or lists of floats and
+# ints, the default tolerance, exact arithmetic) takes a fast path written out in one
+# function; it hands anything else (other types, strings, a degenerate or out-of-range
+# triangle) to the careful path, which validates every input and explains degenerate
+# triangles. The choice depends only on what the inputs are, and both paths build their
+# result with the one constructor, ``_result``.
 
 from __future__ import annotations
 
@@ -32,7 +31,7 @@ from functools import cached_property
 from typing import Any, Literal, NamedTuple
 
 from trinormal import fields
-from trinormal.display import format_surd
+from trinormal.display import exact_literal, exact_literals, format_surd
 from trinormal.fields import Surd
 from trinormal.tolerances import DEFAULT_TOL
 from trinormal.validation import (
@@ -260,6 +259,37 @@ class TriangleNormal:
         """
         raise TypeError(
             "TriangleNormal is returned by triangle_normal(a, b, c), not built directly"
+        )
+
+    def __repr__(self) -> str:
+        """Show the inputs and N exactly, so the result can be recognised (and rebuilt).
+
+        Exact values are written as Python literals: integers bare, anything else
+        quoted (``'1/3'``, ``'0.1'``), the form `triangle_normal` reads exactly. In
+        ``float64``/``float32`` arithmetic N is the computed floats.
+
+        Examples
+        --------
+        >>> triangle_normal(("0.1", "0.2", "0.3"), ("1/3", 0, 0), (0, "2.35", 0))
+        ... # doctest: +NORMALIZE_WHITESPACE
+        TriangleNormal(a=('0.1', '0.2', '0.3'), b=('1/3', 0, 0), c=(0, '2.35', 0),
+                       winding='ABC', arithmetic='exact', normal=('0.705', '0.1', '289/600'),
+                       magnitude_squared='5321/7200', degenerate=False)
+        >>> triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2))  # doctest: +NORMALIZE_WHITESPACE
+        TriangleNormal(a=(0, 0, 0), b=(1, 1, 1), c=(2, 2, 2), winding='ABC', arithmetic='exact',
+                       normal=(0, 0, 0), magnitude_squared=0, degenerate=True)
+        """
+        e = self.exact
+        if self.arithmetic == "exact":
+            normal = exact_literals(e.normal)
+            squared = exact_literal(e.magnitude_squared)
+            tail = f"normal={normal}, magnitude_squared={squared}"
+        else:
+            tail = f"normal={self.normal!r}"
+        return (
+            f"TriangleNormal(a={exact_literals(e.a)}, b={exact_literals(e.b)}, "
+            f"c={exact_literals(e.c)}, winding={self.winding.value!r}, "
+            f"arithmetic={self.arithmetic!r}, {tail}, degenerate={self.degenerate})"
         )
 
     @cached_property

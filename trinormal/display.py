@@ -268,6 +268,33 @@ def exact_text(q: Fraction | int) -> str:
     return f"{n}/{d}"
 
 
+def exact_literal(q: Fraction | int) -> str:
+    """Write an exact rational as Python code that gives it back exactly, for a ``repr``.
+
+    An integer is written bare; any other value as the quoted `exact_text`, which
+    `trinormal.triangle_normal` and ``Explorer`` read exactly (a bare ``0.1`` would be a
+    float, not one tenth).
+
+    Examples
+    --------
+    >>> print(exact_literal(Fraction(1, 3)), exact_literal(Fraction(47, 20)), exact_literal(-2))
+    '1/3' '2.35' -2
+    """
+    q = Fraction(q)
+    return str(q.numerator) if q.denominator == 1 else repr(exact_text(q))
+
+
+def exact_literals(values: Iterable[Fraction | int]) -> str:
+    """Write a vector of exact rationals as a tuple literal of `exact_literal` values.
+
+    Examples
+    --------
+    >>> print(exact_literals([Fraction(1, 3), 0, Fraction(1, 10)]))
+    ('1/3', 0, '0.1')
+    """
+    return "(" + ", ".join(exact_literal(q) for q in values) + ")"
+
+
 def _square_split(m: int) -> tuple[int, int]:
     """Split ``m > 0`` as ``k*k*rest``, pulling out square factors found by trial division."""
     k = 1

@@ -66,7 +66,6 @@ __all__ = [
     "MESSAGES",
     "MIN_PRECISION",
     "Winding",
-    "check_common",
     "check_coordinate",
     "check_precision",
     "check_tolerance",
@@ -74,8 +73,9 @@ __all__ = [
     "check_winding",
     "limits",
     "message",
-    "quote_input",
 ]
+# Also used inside the package, and not part of its public API (so not in __all__ nor in the
+# API reference): check_common (one denominator for the core) and quote_input (for messages).
 
 #: Most digits in the numerator, and in the denominator, of one coordinate (lowest terms).
 MAX_DIGITS = 400

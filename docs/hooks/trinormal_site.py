@@ -565,40 +565,6 @@ def _cli(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return "\n".join(lines)
 
 
-def _api(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    """One mkdocstrings section per public module of the package."""
-    titles = {
-        "core": "The exact core",
-        "validation": "Reading and checking inputs",
-        "display": "Display formatting",
-        "fields": "The output fields",
-        "steps": "The step-by-step working",
-        "colors": "The colour code",
-        "tolerances": "Tolerances",
-        "symbolic": "Symbolic derivations",
-        "mesh": "Meshes",
-        "mesh_page": "The Check a mesh page",
-        "plotting": "Plotting",
-        "widgets": "The explorer widget",
-        "guide": "The guide's numbers",
-        "exercises": "Exercises",
-        "cli": "Command line",
-        "explorer": "The 3D explorer",
-    }
-    order = list(titles)
-    mods = sorted(
-        [p.stem for p in (ROOT / "trinormal").glob("*.py") if not p.stem.startswith("_")]
-        + [p.parent.name for p in (ROOT / "trinormal").glob("*/__init__.py")],  # packages too
-        key=lambda m: (order.index(m) if m in order else len(order), m),
-    )
-    parts = []
-    for mod in mods:
-        title = titles.get(mod, mod)
-        anchor = f"{{ #trinormal.{mod} }}"  # [`trinormal.mod`][trinormal.mod] links here
-        parts.append(f"## {title}: `trinormal.{mod}` {anchor}\n\n::: trinormal.{mod}\n")
-    return "\n".join(parts)
-
-
 def _notebook_list(args: list[str], page: Page, config: MkDocsConfig) -> str:
     rows = []
     for path in notebook_paths():
@@ -628,7 +594,6 @@ HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
     "normalising_table": _normalising_table,
     "value": _value,
     "cli": _cli,
-    "api": _api,
     "notebook_list": _notebook_list,
 }
 

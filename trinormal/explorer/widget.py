@@ -29,7 +29,7 @@ from fractions import Fraction
 from typing import Any
 
 from trinormal.core import TriangleNormal, Winding, triangle_normal
-from trinormal.display import format_number, format_vector
+from trinormal.display import exact_literals, format_number
 from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
 from trinormal.explorer.state import coordinate_text, exact_value, view_state
@@ -545,10 +545,17 @@ class Explorer:
         return summary_text(self.result, self._precision)
 
     def __repr__(self) -> str:
-        def v(p: tuple[float, float, float]) -> str:
-            return format_vector(p, 15, trim=True)
+        """Show the state exactly, as the call that recreates it.
 
+        Examples
+        --------
+        >>> ex = Explorer(a=("0.1", "0.2", "0.3"), b=("1/3", 0, 0), c=(0, "2.35", 0))
+        >>> ex  # doctest: +NORMALIZE_WHITESPACE
+        Explorer(a=('0.1', '0.2', '0.3'), b=('1/3', 0, 0), c=(0, '2.35', 0),
+                 winding='ABC', precision=4)
+        """
+        e = self.result.exact
         return (
-            f"Explorer(a={v(self.a)}, b={v(self.b)}, c={v(self.c)}, "
+            f"Explorer(a={exact_literals(e.a)}, b={exact_literals(e.b)}, c={exact_literals(e.c)}, "
             f"winding={self.winding.value!r}, precision={self.precision})"
         )
