@@ -4,7 +4,7 @@ The page reads, checks and repairs a mesh file in the browser
 (``docs/assets/javascripts/trinormal-mesh.js``, run in a Web Worker). Its
 messages, its limits, the rows of its report and the degeneracy tolerance are
 not written in JavaScript: the site build (``docs/hooks/trinormal_site.py``)
-puts :func:`site_constants` into ``trinormal-constants.js``.
+puts `site_constants()` into ``trinormal-constants.js``.
 
 Examples
 --------
