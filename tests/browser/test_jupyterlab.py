@@ -318,3 +318,70 @@ def test_dragging_a_vertex_updates_the_kernel(notebook: Any) -> None:
     expected = triangle_normal(a, b, c).format(4)
     readout = page.locator(".jp-OutputArea-output").first.inner_text()
     assert expected["normal"] in readout and expected["area"] in readout
+
+
+# --------------------------------------------------------------------------- fits the screen
+
+FIT = [
+    "from trinormal.explorer import Explorer\n"
+    "ex = Explorer(a=('-0.06', 0.12, '-0.06'), b=(4.1, 0.5, -3.3), c=(-2.5, 4.9, 0.1))\nex"
+]
+
+#: The explorer scrolled to the top of the notebook, and the boxes that must be seen.
+LAYOUT = """() => {
+  const root = document.querySelector('.tnx-root');
+  root.scrollIntoView({block: 'start'});
+  const box = (e) => { const r = e.getBoundingClientRect();
+                       return {left: r.left, top: r.top, right: r.right, bottom: r.bottom}; };
+  const panel = document.querySelector('.jp-WindowedPanel-outer') ||
+                document.querySelector('.jp-NotebookPanel-notebook');
+  const rows = {};
+  for (const tr of root.querySelectorAll('.tnx-readout tr')) {
+    const vector = tr.querySelector('.tnx-vector');
+    const line = parseFloat(getComputedStyle(tr.cells[1]).lineHeight);
+    const height = vector ? vector.getBoundingClientRect().height : 0;
+    rows[tr.dataset.key] = {...box(tr.cells[1]), lines: Math.round(height / line) || 1};
+  }
+  return {panel: box(panel), stage: box(root.querySelector('.tnx-stage')),
+          toolbar: box(root.querySelector('.tnx-toolbar')),
+          buttons: [...root.querySelectorAll('.tnx-toolbar button')].map(box), rows};
+}"""
+
+
+@pytest.mark.parametrize(
+    ("app", "zoom"), [("lab", 1.0), ("lab", 1.25), ("lab", 1.5), ("notebook", 1.0)]
+)
+def test_view_and_readout_fit_a_projector_at_every_zoom(
+    lab: Lab, browser: Any, app: str, zoom: float
+) -> None:
+    # 1280x720 at browser zoom 100/125/150 %: the page is 1280/zoom CSS px wide, the file
+    # browser open (JupyterLab's default); the view and the rows N, |N|, area and unit normal
+    # are seen together once the explorer is scrolled to, the toolbar is one row
+    context = browser.new_context(
+        viewport={"width": round(1280 / zoom), "height": round(720 / zoom)},
+        device_scale_factor=zoom,
+    )
+    page = context.new_page()
+    try:
+        lab.write_notebook("fit.ipynb", FIT)
+        open_notebook(lab, page, "fit.ipynb", app)
+        run_all(page)
+        page.wait_for_selector(".tnx-root canvas", timeout=90_000)
+        page.wait_for_timeout(800)
+        m = page.evaluate(LAYOUT)
+        page.wait_for_timeout(200)
+        m = page.evaluate(LAYOUT)
+        panel, stage = m["panel"], m["stage"]
+        assert stage["right"] - stage["left"] >= 360, m
+        inside = ("left", "top"), ("right", "bottom")
+        for what, b in [("view", stage)] + [
+            (k, m["rows"][k]) for k in ("normal", "magnitude", "area", "unit_normal")
+        ]:
+            assert b[inside[0][0]] >= panel["left"] - 1 and b[inside[0][1]] >= panel["top"] - 1
+            assert b[inside[1][0]] <= panel["right"] + 1, (what, b, panel)
+            assert b[inside[1][1]] <= panel["bottom"] + 1, (what, b, panel)
+        assert all(row["lines"] == 1 for row in m["rows"].values()), m["rows"]
+        assert len({round(b["top"]) for b in m["buttons"]}) == 1  # one row
+        assert max(b["right"] for b in m["buttons"]) <= m["toolbar"]["right"] + 1
+    finally:
+        context.close()

@@ -12,13 +12,17 @@ function setValue(cell, text) {
   if (cell.dataset.text === text) return;
   cell.dataset.text = text;
   cell.textContent = "";
+  // a vector stays on one line (on a narrow screen it may break between components)
+  const vector = String(text).startsWith("(");
+  const home = vector ? cell.appendChild(document.createElement("span")) : cell;
+  if (vector) home.className = "tnx-vector";
   const parts = String(text).split(/(?<=,) | (?=[+=−-] )/);
   parts.forEach((part, i) => {
     const span = document.createElement("span");
     span.className = "tnx-part";
     span.textContent = part;
-    cell.appendChild(span);
-    if (i < parts.length - 1) cell.appendChild(document.createTextNode(" "));
+    home.appendChild(span);
+    if (i < parts.length - 1) home.appendChild(document.createTextNode(" "));
   });
 }
 
