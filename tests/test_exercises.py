@@ -16,6 +16,7 @@ import pytest
 import sympy as sp
 
 from trinormal import exercises, format_number, triangle_normal
+from trinormal.exercises import nb11
 from trinormal.exercises import (
     NOTEBOOK_MODULES,
     AnswerError,
@@ -651,6 +652,22 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         ((0, 0, 5), "Right direction, wrong length."),
         ((0, 6, 0), "Multiply it out: MU = (2, 0, 0) and MV = (0, 3, 0)."),
     ],
+    "11-flipped-face": [
+        (0, "@0"),
+        ("17", "@17"),
+        (1263, "@1263"),
+        (-1, "@-1"),
+        (1.5, "@1.5"),
+        ("seventy", "@seventy"),
+    ],
+    "11-repair-tetra": [
+        (nb11.TETRA_FACES, "@given"),
+        ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 2, 3)], "@inconsistent"),
+        ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 3, 2)], "@inward"),
+        ([(0, 2, 1)] * 4, "@same"),
+        ([(0, 2, 1), (0, 1, 3), (0, 3, 2)], "@three"),
+        ("faces", "@text"),
+    ],
 }  # fmt: skip
 
 
@@ -773,7 +790,7 @@ def test_check_finds_every_notebooks_exercises_in_a_fresh_interpreter():
         "from trinormal.exercises import check, names\n"
         "r = check('05-collinear', ...)\n"
         "assert 'not answered yet' in str(r), r\n"
-        "assert {n[:2] for n in names()} == {f'{i:02d}' for i in range(1, 11)}\n"
+        "assert {n[:2] for n in names()} == {f'{i:02d}' for i in range(1, 12)}\n"
     )
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert p.returncode == 0, p.stderr

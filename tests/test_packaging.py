@@ -94,11 +94,11 @@ def test_the_command_copies_every_notebook(
     dest = tmp_path / "class" / "week1"
     assert notebooks.main([str(dest)]) == 0
     assert sorted(p.name for p in dest.glob("*.ipynb")) == NOTEBOOKS
-    assert len(NOTEBOOKS) == 10
+    assert len(NOTEBOOKS) == 11
     for name in NOTEBOOKS:
         assert (dest / name).read_bytes() == (ROOT / "notebooks" / name).read_bytes()
         json.loads((dest / name).read_text(encoding="utf-8"))
-    assert capsys.readouterr().out == f"Copied 10 notebooks into {dest.resolve()}\n"
+    assert capsys.readouterr().out == f"Copied 11 notebooks into {dest.resolve()}\n"
 
 
 def test_the_command_never_overwrites_without_force(

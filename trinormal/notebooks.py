@@ -1,4 +1,4 @@
-"""Copy the ten notebooks out of the installed package, to hand out or to open.
+"""Copy the eleven notebooks out of the installed package, to hand out or to open.
 
 The wheel carries the notebooks (and any data they read) inside the package, so a
 school's JupyterHub needs nothing but ``pip install "trinormal[notebooks]"``:
@@ -97,7 +97,7 @@ class _Parser(argparse.ArgumentParser):
 def _parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="trinormal-notebooks",
-        description="Copy trinormal's ten notebooks (and the data they read) into a folder.",
+        description="Copy trinormal's eleven notebooks (and the data they read) into a folder.",
     )
     parser.add_argument("dest", metavar="DEST", help="the folder to copy into (made if missing)")
     parser.add_argument(
@@ -124,7 +124,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     >>> import tempfile
     >>> with tempfile.TemporaryDirectory() as tmp:
     ...     status = main([tmp + "/class"])  # doctest: +ELLIPSIS
-    Copied 10 notebooks into .../class
+    Copied 11 notebooks into .../class
     >>> status
     0
     """

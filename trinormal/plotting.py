@@ -40,6 +40,7 @@ __all__ = [
     "shaded_mesh_figure",
     "shading_figure",
     "show",
+    "winding_figure",
 ]
 
 #: Okabe–Ito colour-blind-safe palette (for series that are not one of the roles).
@@ -752,6 +753,76 @@ def culling_figure(
         "the side with every face drawn: the half facing the camera in yellow, the other half "
         "in blue. Third, the same side view after culling: the blue back half is gone, and "
         "the camera never saw it."
+    )
+    return fig
+
+
+@_styled
+def winding_figure(
+    vertices: Any,
+    faces: Any,
+    *,
+    elev: float = 29.0,
+    azim: float = -47.0,
+    title: str | None = None,
+) -> Figure:
+    """Show what a renderer does with faces wound the wrong way: lit black, or culled away.
+
+    Two panels of the same mesh from the same camera. Left, every face lit by one
+    light from behind the camera with one-sided Lambert shading, brightness
+    ``max(0, n · l)`` from each face's unit normal ``n`` as stored: a face whose
+    normal points away from the light is black. Right, back-face culling: only the
+    faces whose normal points towards the camera are drawn, so a face wound the
+    wrong way (or seen through a hole) disappears and the background shows through.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+    faces : array_like of int, shape (F, 3)
+    elev, azim : float
+        The camera, in matplotlib's angles (degrees); the light comes from the
+        camera, raised a little.
+    title : str, optional
+        A title over both panels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two panels, with ``fig.alt_text`` giving the counts of black and culled faces.
+    """
+    import numpy as np
+
+    from trinormal import mesh
+
+    v = np.asarray(vertices, dtype=float)
+    f = np.asarray(faces)
+    n = mesh.face_normals(v, f)
+    eye = camera_direction(elev, azim)
+    light = camera_direction(elev + 15.0, azim + 10.0)
+    towards = n @ eye
+    lit = np.maximum(0.0, n @ light)
+    culled = np.where(towards > 0, 0.25 + 0.75 * lit, np.nan)
+    fig = shaded_mesh_figure(
+        v,
+        f,
+        {"lit from the camera's side": 0.08 + 0.92 * lit, "back faces culled": culled},
+        elev=elev,
+        azim=azim,
+        title=title,
+    )
+    # faces well inside the camera's half of the model (not at the outline) whose normals
+    # point away from it: seen from outside they are the wrong way round
+    centre = v[f].mean(axis=1) - v.mean(axis=0)
+    size = np.linalg.norm(centre, axis=1)
+    near = centre @ eye > 0.2 * np.where(size > 0, size, 1.0)
+    dark = int((near & (towards <= 0)).sum())
+    faces_text = "1 face" if dark == 1 else f"{dark} faces"
+    fig.alt_text = (  # type: ignore[attr-defined]
+        f"Two renderings of a mesh of {len(f)} triangles from one camera. Left, lit from the "
+        f"camera's side: {faces_text} on the near side, away from the outline, "
+        f"{'has its normal' if dark == 1 else 'have normals'} pointing away from the camera "
+        "and show black. Right, with back faces culled: such faces are not drawn and the "
+        f"background shows through; {int((towards > 0).sum())} faces are drawn."
     )
     return fig
 

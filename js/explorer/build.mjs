@@ -7,9 +7,10 @@
 // when a cell is re-run), and each import would evaluate three.js again (three warns about
 // "multiple instances"). So the bundle is an IIFE wrapped in a small ES module that keeps
 // the evaluated runtime on globalThis, keyed by a hash of the code: the first import runs
-// it, every later import of the same build reuses it.
+// it, every later import of the same build reuses it. Inside both bundles three.js itself is
+// shared too (sharedThree below), so the explorer and the mesh view on one page run it once.
 import { createHash } from "node:crypto";
-import { readFileSync, writeFileSync, mkdirSync } from "node:fs";
+import { mkdirSync, readdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { build, transform } from "esbuild";
@@ -31,6 +32,60 @@ const cssAsText = {
 
 const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.json"), "utf8"));
 
+// One three.js per page. A page can show the explorer and the mesh view together (two bundles,
+// or one bundle that anywidget imports once per widget), and three.js warns "Multiple instances
+// of Three.js being imported" when its module runs twice. So our sources never run three.js
+// themselves: every `import ... from "three"` (or a three.js addon) in src/ is served by a small
+// module that takes three.js from globalThis, where the first bundle to run puts it. The runtime
+// (three.js and the addons below, the same list in every bundle) sits in each bundle, wrapped
+// by esbuild so it runs only when no runtime is on the page yet.
+const ADDONS = [
+  "three/addons/controls/OrbitControls.js",
+  "three/addons/lines/LineMaterial.js",
+  "three/addons/lines/LineSegments2.js",
+  "three/addons/lines/LineSegmentsGeometry.js",
+];
+const RUNTIME_KEY = `trinormal.three@${three.version}`;
+// The names src/ imports from each (the union over every source file, so every bundle carries
+// the same runtime, and the runtime carries only what some view uses).
+const exportNames = Object.fromEntries(["three", ...ADDONS].map((spec) => [spec, new Set()]));
+for (const file of readdirSync(join(here, "src"), { recursive: true })) {
+  if (!file.endsWith(".js")) continue;
+  const code = readFileSync(join(here, "src", file), "utf8");
+  for (const m of code.matchAll(/import\s*\{([^}]*)\}\s*from\s*"(three[^"]*)"/g)) {
+    if (!(m[2] in exportNames)) throw new Error(`src/${file}: ${m[2]} is not in ADDONS (build.mjs)`);
+    for (const name of m[1].split(",").map((n) => n.trim()).filter(Boolean)) exportNames[m[2]].add(name);
+  }
+  if (/import\s+(\*|\w+)[^;]*from\s*"three/.test(code)) throw new Error(`src/${file}: import three by name`);
+}
+for (const spec in exportNames) exportNames[spec] = [...exportNames[spec]].sort();
+const sharedThree = {
+  name: "shared-three",
+  setup(b) {
+    b.onResolve({ filter: /^three(\/|$)/ }, (args) => {
+      if (args.namespace === "shared-three" || args.importer.includes("node_modules")) return undefined;
+      if (!(args.path in exportNames)) {
+        return { errors: [{ text: `${args.path}: add it to ADDONS in build.mjs (one three.js per page)` }] };
+      }
+      return { path: args.path, namespace: "shared-three" };
+    });
+    b.onResolve({ filter: /^trinormal-three-runtime$/ }, (args) => ({ path: args.path, namespace: "shared-three" }));
+    b.onLoad({ filter: /.*/, namespace: "shared-three" }, (args) => {
+      if (args.path === "trinormal-three-runtime") {
+        const lines = Object.entries(exportNames).map(([spec, names]) => `export { ${names.join(", ")} } from "${spec}";`);
+        return { contents: lines.join("\n") + "\n", resolveDir: here, loader: "js" };
+      }
+      const names = exportNames[args.path];
+      const contents =
+        `const key = Symbol.for(${JSON.stringify(RUNTIME_KEY)});\n` +
+        `const T = globalThis[key] || (globalThis[key] = require("trinormal-three-runtime"));\n` +
+        `export const { ${names.join(", ")} } = T;\n`;
+      return { contents, resolveDir: here, loader: "js" };
+    });
+  },
+};
+
+
 const result = await build({
   absWorkingDir: here,
   entryPoints: ["src/index.js"],
@@ -43,7 +98,7 @@ const result = await build({
   minify: true,
   legalComments: "none", // the licence travels in THIRD_PARTY_LICENSES.txt next to the bundle
   charset: "utf8",
-  plugins: [cssAsText],
+  plugins: [cssAsText, sharedThree],
   sourcemap: false,
   metafile: false,
   logLevel: "warning",
@@ -70,7 +125,7 @@ await build({
   minify: true,
   legalComments: "none",
   charset: "utf8",
-  plugins: [cssAsText],
+  plugins: [cssAsText, sharedThree],
   sourcemap: false,
   metafile: false,
   logLevel: "warning",

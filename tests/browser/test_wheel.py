@@ -73,7 +73,7 @@ def test_copied_notebooks_execute_in_the_installed_package(wheel_env: Path, tmp_
     dest = tmp_path / "class"
     done = run([bin_dir / "trinormal-notebooks", dest], cwd=tmp_path)
     assert done.returncode == 0, done.stderr
-    assert done.stdout == f"Copied 10 notebooks into {dest}\n"
+    assert done.stdout == f"Copied 11 notebooks into {dest}\n"
     assert sorted(p.name for p in dest.glob("*.ipynb")) == NOTEBOOKS
     # the kernel imports the installed package, not this checkout
     where = run([wheel_env, "-c", "import trinormal; print(trinormal.__file__)"], cwd=dest)

@@ -117,6 +117,7 @@ NOTEBOOK_MODULES: tuple[str, ...] = (
     "nb08",
     "nb09",
     "nb10",
+    "nb11",
 )
 
 #: The start of the message for an answer no rule could judge (a bug: tests assert it never shows).

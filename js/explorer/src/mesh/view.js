@@ -10,6 +10,19 @@
  * face its normal points out of is drawn in the "front" colour, the other side in "back";
  * faces to flip are outlined, boundary and non-manifold edges drawn thick, each in its role's
  * colour. It returns a cleanup function.
+ *
+ * In Jupyter (trinormal.mesh.widget.MeshView, an anywidget) there is no "mesh" key: the same
+ * arrays come as binary buffers (DataViews) in "positions", "faces", "flipped", "boundary" and
+ * "non_manifold", with "revision" bumped after each new mesh, and also:
+ *   arrow_faces (Int32, a sample of faces) and arrow_normals (Float32, their unit normals):
+ *     drawn as short arrows from each face's centre (degenerate faces have zero rows);
+ *   vertex_normals (Float32, 3 per vertex, from the kernel): smooth shading and vertex arrows;
+ *   cull, smooth, show_face_normals, show_vertex_normals (bool): the toolbar's toggles;
+ *   picked (int): the view writes the face clicked (-1: none), and the kernel answers with
+ *   selection ({title, rows: [[label, value, role]]}: the face's vertices, exact normal and
+ *   area, as the package's formatter prints them), shown under the view.
+ * A host without these keys (the site) gets the toggles as local state, three.js's own vertex
+ * normals for smooth shading, and no arrows.
  */
 import {
   AmbientLight,
@@ -19,8 +32,12 @@ import {
   Color,
   DirectionalLight,
   FrontSide,
+  LineBasicMaterial,
+  LineSegments,
   Mesh,
   MeshLambertMaterial,
+  Raycaster,
+  Vector2,
   Vector3,
 } from "three";
 import { LineMaterial } from "three/addons/lines/LineMaterial.js";
@@ -105,6 +122,86 @@ function startDirection(pos, faces, sets) {
   return c.normalize().multiplyScalar(3).add(DEFAULT_DIRECTION).normalize();
 }
 
+/** A typed array over a binary buffer from the kernel (a DataView), copied if misaligned. */
+function typed(Type, value) {
+  if (!value) return new Type(0);
+  if (ArrayBuffer.isView(value) && !(value instanceof DataView)) return value;
+  const { buffer, byteOffset, byteLength } = value;
+  if (byteOffset % Type.BYTES_PER_ELEMENT === 0) return new Type(buffer, byteOffset, byteLength / Type.BYTES_PER_ELEMENT);
+  return new Type(buffer.slice(byteOffset, byteOffset + byteLength));
+}
+
+/** The mesh to draw: the host's "mesh" object (the site), or the kernel's buffers (Jupyter). */
+function readMesh(model) {
+  const mesh = model.get("mesh");
+  if (mesh) return mesh;
+  const positions = model.get("positions");
+  if (!positions || !positions.byteLength) return null;
+  return {
+    positions: typed(Float64Array, positions),
+    faces: typed(Uint32Array, model.get("faces")),
+    flipped: typed(Int32Array, model.get("flipped")),
+    boundary: typed(Int32Array, model.get("boundary")),
+    non_manifold: typed(Int32Array, model.get("non_manifold")),
+    arrow_faces: typed(Int32Array, model.get("arrow_faces")),
+    arrow_normals: typed(Float32Array, model.get("arrow_normals")),
+    vertex_normals: typed(Float32Array, model.get("vertex_normals")),
+  };
+}
+
+/** Arrow segments (shaft and two barbs, 18 floats each) from points along unit directions. */
+function arrowSegments(starts, dirs, length) {
+  const n = starts.length / 3;
+  const out = new Float32Array(18 * n);
+  let w = 0;
+  const d = new Vector3();
+  const side = new Vector3();
+  const up = new Vector3();
+  for (let i = 0; i < n; i++) {
+    d.set(dirs[3 * i], dirs[3 * i + 1], dirs[3 * i + 2]);
+    if (!(d.lengthSq() > 0)) continue; // a degenerate face or a zero vertex normal: no arrow
+    d.normalize();
+    const x = starts[3 * i];
+    const y = starts[3 * i + 1];
+    const z = starts[3 * i + 2];
+    const tx = x + d.x * length;
+    const ty = y + d.y * length;
+    const tz = z + d.z * length;
+    up.set(Math.abs(d.z) < 0.9 ? 0 : 1, 0, Math.abs(d.z) < 0.9 ? 1 : 0);
+    side.crossVectors(d, up).normalize().multiplyScalar(0.22 * length);
+    const bx = tx - d.x * 0.35 * length;
+    const by = ty - d.y * 0.35 * length;
+    const bz = tz - d.z * 0.35 * length;
+    out.set([x, y, z, tx, ty, tz, tx, ty, tz, bx + side.x, by + side.y, bz + side.z, tx, ty, tz, bx - side.x, by - side.y, bz - side.z], w);
+    w += 18;
+  }
+  return out.subarray(0, w);
+}
+
+/** Every k-th index below n, so that at most `most` are taken. */
+function sample(n, most) {
+  const step = Math.max(1, Math.ceil(n / most));
+  const out = new Int32Array(Math.ceil(n / step));
+  for (let i = 0, j = 0; i < n; i += step, j++) out[j] = i;
+  return out;
+}
+
+/** The median edge length of a sample of faces (display units): the arrows' length scale. */
+function typicalEdge(pos, faces) {
+  const picks = sample(faces.length / 3, 2000);
+  const lengths = [];
+  for (const f of picks) {
+    const a = faces[3 * f];
+    const b = faces[3 * f + 1];
+    lengths.push(Math.hypot(pos[3 * a] - pos[3 * b], pos[3 * a + 1] - pos[3 * b + 1], pos[3 * a + 2] - pos[3 * b + 2]));
+  }
+  lengths.sort((p, q) => p - q);
+  return lengths.length ? lengths[lengths.length >> 1] : 0.1;
+}
+
+/** Most vertex-normal arrows drawn (a sample of the vertices on bigger models). */
+const MAX_VERTEX_ARROWS = 1500;
+
 function render({ model, el }) {
   const doc = el.ownerDocument || document;
   injectStyle(doc);
@@ -119,9 +216,12 @@ function render({ model, el }) {
     "tnm-hint",
     "Drag to turn the model, scroll or pinch to zoom. The side a face's normal points out of is " +
       "drawn in the front colour; a face you see in the back colour from outside is wound the " +
-      "other way.",
+      "other way." + (model.get("picked") === undefined ? "" : " Click a face to see its vertices, its exact normal and its area."),
   );
-  root.append(toolbar, stageEl, legend, hint);
+  const pickPanel = element("div", "tnm-pick");
+  pickPanel.setAttribute("aria-live", "polite");
+  pickPanel.hidden = true;
+  root.append(toolbar, stageEl, legend, pickPanel, hint);
   el.appendChild(root);
 
   let dark = isDark(doc);
@@ -150,8 +250,26 @@ function render({ model, el }) {
   let geometry = null;
   let meshes = [];
   let lines = {};
-  let cull = false;
-  const counts = { flipped: 0, boundary: 0, non_manifold: 0 };
+  const arrowMaterials = { face: new LineBasicMaterial(), vertex: new LineBasicMaterial() };
+  let arrows = {};
+  let pickLine = null;
+  const pickMaterial = new LineMaterial({ linewidth: 4 });
+  const counts = { flipped: 0, boundary: 0, non_manifold: 0, face_arrows: 0, vertex_arrows: 0 };
+
+  // The toggles: the model's keys when it has them (Jupyter), else state of this view (the site).
+  const local = { cull: false, smooth: false, show_face_normals: true, show_vertex_normals: false };
+  const flag = (key) => {
+    const v = model.get(key);
+    return v === undefined || v === null ? local[key] : Boolean(v);
+  };
+  function setFlag(key, value) {
+    local[key] = value;
+    if (model.get(key) === undefined || model.get(key) === null) applyFlags();
+    else {
+      model.set(key, value);
+      model.save_changes();
+    }
+  }
 
   const palette = () => model.get("palette") || {};
   function applyColors() {
@@ -161,6 +279,9 @@ function render({ model, el }) {
     front.color = new Color(roleColor(palette(), "front", dark));
     back.color = new Color(roleColor(palette(), "back", dark));
     for (const [role, m] of Object.entries(lineMaterials)) m.color = new Color(roleColor(palette(), role, dark));
+    arrowMaterials.face.color = new Color(roleColor(palette(), "N", dark));
+    arrowMaterials.vertex.color = new Color(s.text);
+    pickMaterial.color = new Color(s.line);
     drawLegend();
     stage.requestRender();
   }
@@ -171,16 +292,22 @@ function render({ model, el }) {
     ["flipped", "outline: a face to flip", "line"],
     ["boundary", "thick: an edge with one face (the rim of a hole)", "line"],
     ["non_manifold", "thick: an edge with three faces or more", "line"],
+    ["face_arrows", "arrow from a face's centre: its unit normal", "arrow"],
+    ["vertex_arrows", "arrow from a vertex: its vertex normal", "arrow"],
   ];
   function drawLegend() {
     legend.textContent = "";
     for (const [role, text, kind] of LEGEND) {
       if (kind === "line" && !counts[role]) continue;
+      if (role === "face_arrows" && !(counts[role] && flag("show_face_normals"))) continue;
+      if (role === "vertex_arrows" && !(counts[role] && flag("show_vertex_normals"))) continue;
       const item = element("li", "tnm-key");
-      const swatch = element("span", "tnm-swatch tnm-swatch-" + kind);
-      swatch.style.setProperty("--tnm-swatch", roleColor(palette(), role, dark));
+      const swatch = element("span", "tnm-swatch tnm-swatch-" + (kind === "arrow" ? "line" : kind));
+      const color = role === "face_arrows" ? roleColor(palette(), "N", dark) : role === "vertex_arrows" ? surface(dark).text : roleColor(palette(), role, dark);
+      swatch.style.setProperty("--tnm-swatch", color);
       swatch.setAttribute("aria-hidden", "true");
-      item.append(swatch, doc.createTextNode(kind === "line" ? `${text} (${counts[role]})` : text));
+      const count = kind === "line" ? ` (${counts[role]})` : kind === "arrow" ? ` (${counts[role]} drawn)` : "";
+      item.append(swatch, doc.createTextNode(text + count));
       legend.appendChild(item);
     }
   }
@@ -191,17 +318,93 @@ function render({ model, el }) {
       scene.remove(l);
       l.geometry.dispose();
     }
+    for (const a of Object.values(arrows)) {
+      scene.remove(a);
+      a.geometry.dispose();
+    }
     if (geometry) geometry.dispose();
     meshes = [];
     lines = {};
+    arrows = {};
     geometry = null;
+    clearPick();
+  }
+
+  function clearPick() {
+    if (pickLine) {
+      scene.remove(pickLine);
+      pickLine.geometry.dispose();
+      pickLine = null;
+    }
+  }
+
+  let current = null; // { data, pos }: what is drawn
+  function drawArrows(data, pos) {
+    const length = 0.5 * typicalEdge(pos, data.faces);
+    const af = data.arrow_faces || new Int32Array(0);
+    const an = data.arrow_normals || new Float32Array(0);
+    if (af.length && an.length === 3 * af.length) {
+      const starts = new Float32Array(3 * af.length);
+      for (let i = 0; i < af.length; i++) {
+        for (let c = 0; c < 3; c++) {
+          const v = data.faces[3 * af[i] + c];
+          for (let k = 0; k < 3; k++) starts[3 * i + k] += pos[3 * v + k] / 3;
+        }
+      }
+      arrows.face = arrowLines(arrowSegments(starts, an, length), arrowMaterials.face);
+    }
+    const vn = data.vertex_normals;
+    if (vn && vn.length === pos.length) {
+      const picks = sample(pos.length / 3, MAX_VERTEX_ARROWS);
+      const starts = new Float32Array(3 * picks.length);
+      const dirs = new Float32Array(3 * picks.length);
+      picks.forEach((v, i) => {
+        for (let k = 0; k < 3; k++) {
+          starts[3 * i + k] = pos[3 * v + k];
+          dirs[3 * i + k] = vn[3 * v + k];
+        }
+      });
+      arrows.vertex = arrowLines(arrowSegments(starts, dirs, length), arrowMaterials.vertex);
+    }
+    counts.face_arrows = arrows.face ? arrows.face.geometry.getAttribute("position").count / 6 : 0;
+    counts.vertex_arrows = arrows.vertex ? arrows.vertex.geometry.getAttribute("position").count / 6 : 0;
+  }
+
+  function arrowLines(segments, material) {
+    const g = new BufferGeometry();
+    g.setAttribute("position", new BufferAttribute(segments, 3));
+    const l = new LineSegments(g, material);
+    l.renderOrder = 2;
+    scene.add(l);
+    return l;
+  }
+
+  function applyFlags() {
+    const cull = flag("cull");
+    const smooth = flag("smooth");
+    if (meshes[1]) meshes[1].visible = !cull;
+    for (const m of [front, back]) {
+      if (m.flatShading === smooth) {
+        m.flatShading = !smooth;
+        m.needsUpdate = true;
+      }
+    }
+    if (arrows.face) arrows.face.visible = flag("show_face_normals");
+    if (arrows.vertex) arrows.vertex.visible = flag("show_vertex_normals");
+    for (const [key, b] of Object.entries(buttons)) b.setAttribute("aria-pressed", String(flag(key)));
+    faceButton.hidden = !arrows.face;
+    vertexButton.hidden = !arrows.vertex;
+    drawLegend();
+    stage.requestRender();
   }
 
   function draw() {
     clear();
-    const data = model.get("mesh");
+    const data = readMesh(model);
+    current = null;
     if (!data || !data.positions || !data.faces) {
-      stage.requestRender();
+      counts.face_arrows = counts.vertex_arrows = 0;
+      applyFlags();
       return;
     }
     const { offset, scale } = framing(data.positions);
@@ -210,8 +413,13 @@ function render({ model, el }) {
     geometry = new BufferGeometry();
     geometry.setAttribute("position", new BufferAttribute(pos, 3));
     geometry.setIndex(new BufferAttribute(data.faces, 1));
+    if (data.vertex_normals && data.vertex_normals.length === pos.length) {
+      geometry.setAttribute("normal", new BufferAttribute(data.vertex_normals, 3));
+    } else {
+      geometry.computeVertexNormals(); // smooth shading on a host that sends no vertex normals
+    }
+    geometry.computeBoundingSphere();
     meshes = [new Mesh(geometry, front), new Mesh(geometry, back)];
-    meshes[1].visible = !cull;
     scene.add(...meshes);
     const sets = {
       flipped: data.flipped ? allSides(data.flipped) : new Int32Array(0),
@@ -235,31 +443,94 @@ function render({ model, el }) {
     const corners = [];
     for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
     stage.framePoints(corners, true, startDirection(pos, data.faces, sets));
+    drawArrows(data, pos);
+    current = { data, pos };
     updateResolution();
-    drawLegend();
-    stage.requestRender();
+    applyFlags();
     root.dataset.faces = String(data.faces.length / 3);
+    showPick();
+  }
+
+  // ------------------------------------------------------------------ picking a face
+  const raycaster = new Raycaster();
+  const ndc = new Vector2();
+  let down = null;
+  function facePicked(clientX, clientY) {
+    if (!meshes.length) return -1;
+    const rect = stage.canvas.getBoundingClientRect();
+    ndc.set(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    raycaster.setFromCamera(ndc, stage.camera);
+    const hits = raycaster.intersectObjects(meshes.filter((m) => m.visible), false);
+    return hits.length ? hits[0].faceIndex : -1;
+  }
+  function onDown(event) {
+    down = event.button === 0 ? [event.clientX, event.clientY] : null;
+  }
+  function onUp(event) {
+    if (!down || Math.hypot(event.clientX - down[0], event.clientY - down[1]) > 4) return;
+    down = null;
+    const face = facePicked(event.clientX, event.clientY);
+    if (face < 0) return;
+    model.set("picked", face);
+    model.save_changes();
+    showPick();
+  }
+  stage.canvas.addEventListener("pointerdown", onDown);
+  stage.canvas.addEventListener("pointerup", onUp);
+
+  /** Outline the picked face and show the kernel's answer for it. */
+  function showPick() {
+    clearPick();
+    const face = model.get("picked");
+    if (current && Number.isInteger(face) && face >= 0 && face < current.data.faces.length / 3) {
+      const g = new LineSegmentsGeometry();
+      g.setPositions(sideSegments(current.pos, current.data.faces, allSides([face]), 1, [0, 0, 0]));
+      pickLine = new LineSegments2(g, pickMaterial);
+      pickLine.renderOrder = 3;
+      scene.add(pickLine);
+      root.dataset.picked = String(face);
+    } else {
+      delete root.dataset.picked;
+    }
+    const sel = model.get("selection");
+    pickPanel.textContent = "";
+    pickPanel.hidden = !(sel && sel.rows && sel.rows.length);
+    if (!pickPanel.hidden) {
+      pickPanel.appendChild(element("p", "tnm-pick-title", sel.title || ""));
+      const list = element("dl", "tnm-pick-rows");
+      for (const [label, value] of sel.rows) list.append(element("dt", "", label), element("dd", "", value));
+      pickPanel.appendChild(list);
+    }
+    stage.requestRender();
   }
 
   function updateResolution() {
     const { width, height } = stage.size();
     for (const m of Object.values(lineMaterials)) m.resolution.set(width, height);
+    pickMaterial.resolution.set(width, height);
   }
 
-  const cullButton = element("button", "tnm-button", "Cull back faces");
-  cullButton.type = "button";
-  cullButton.setAttribute("aria-pressed", "false");
-  cullButton.title = "Hide the back of every face, as a game engine does: flipped faces vanish";
-  cullButton.addEventListener("click", () => {
-    cull = !cull;
-    cullButton.setAttribute("aria-pressed", String(cull));
-    if (meshes[1]) meshes[1].visible = !cull;
-    stage.requestRender();
-  });
+  function toggle(key, text, title) {
+    const b = element("button", "tnm-button", text);
+    b.type = "button";
+    b.setAttribute("aria-pressed", "false");
+    b.title = title;
+    b.addEventListener("click", () => setFlag(key, !flag(key)));
+    return b;
+  }
+  const buttons = {
+    cull: toggle("cull", "Cull back faces", "Hide the back of every face, as a game engine does: flipped faces vanish"),
+    smooth: toggle("smooth", "Smooth shading", "Light each face with its corners' vertex normals blended, instead of one normal per face"),
+    show_face_normals: toggle("show_face_normals", "Face normals", "Show each face's unit normal as an arrow from its centre"),
+    show_vertex_normals: toggle("show_vertex_normals", "Vertex normals", "Show the vertex normals as arrows from the vertices"),
+  };
+  const faceButton = buttons.show_face_normals;
+  const vertexButton = buttons.show_vertex_normals;
+  faceButton.hidden = vertexButton.hidden = true;
   const reset = element("button", "tnm-button", "Reset view");
   reset.type = "button";
   reset.addEventListener("click", () => stage.reset());
-  toolbar.append(reset, cullButton);
+  toolbar.append(reset, ...Object.values(buttons));
 
   const observer = new ResizeObserver(() => {
     updateResolution();
@@ -270,19 +541,29 @@ function render({ model, el }) {
     dark = d;
     applyColors();
   }, doc);
-  model.on("change:mesh", draw);
-  model.on("change:palette", applyColors);
+  const events = [
+    ["change:mesh", draw],
+    ["change:revision", draw],
+    ["change:palette", applyColors],
+    ["change:picked", showPick],
+    ["change:selection", showPick],
+    ...Object.keys(local).map((key) => ["change:" + key, applyFlags]),
+  ];
+  for (const [event, cb] of events) model.on(event, cb);
   applyColors();
   draw();
   return () => {
-    model.off("change:mesh", draw);
-    model.off("change:palette", applyColors);
+    for (const [event, cb] of events) model.off(event, cb);
+    stage.canvas.removeEventListener("pointerdown", onDown);
+    stage.canvas.removeEventListener("pointerup", onUp);
     observer.disconnect();
     stopTheme();
     clear();
     front.dispose();
     back.dispose();
     for (const m of Object.values(lineMaterials)) m.dispose();
+    for (const m of Object.values(arrowMaterials)) m.dispose();
+    pickMaterial.dispose();
     stage.dispose();
     root.remove();
   };
