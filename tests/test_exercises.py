@@ -156,9 +156,10 @@ def forms_of(value: object, tol: float | None = None) -> list[object]:
         forms += [
             np.array(value, dtype=float),
             sp.Matrix(value),
-            dict(zip("ABC", value, strict=True)),
             ", ".join("(" + ", ".join(str(x) for x in p) + ")" for p in value),
         ]
+        if len(value) == 3:  # three points A, B, C (not the four faces of 11-repair-tetra)
+            forms.append(dict(zip("ABC", value, strict=True)))
         return forms
     if isinstance(value, tuple | list):
         return vector_forms(tuple(value), tol)
@@ -653,20 +654,20 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         ((0, 6, 0), "Multiply it out: MU = (2, 0, 0) and MV = (0, 3, 0)."),
     ],
     "11-flipped-face": [
-        (0, "@0"),
-        ("17", "@17"),
-        (1263, "@1263"),
-        (-1, "@-1"),
-        (1.5, "@1.5"),
-        ("seventy", "@seventy"),
+        (0, "Face 0 is wound like its neighbours: its normal points out of the ball. The faces to flip are the ones the view outlines (blue from outside)."),
+        ("17", "Face 17 is wound like its neighbours: its normal points out of the ball. The faces to flip are the ones the view outlines (blue from outside)."),
+        (1263, "The ball has faces 0 to 1262; there is no face 1263. Click a face with an outline in the view to see its number."),
+        (-1, "The ball has faces 0 to 1262; there is no face -1. Click a face with an outline in the view to see its number."),
+        (1.5, "Your answer could not be read: a face or vertex number is a whole number such as 17."),
+        ("seventy", "Your answer could not be read: 'seventy' is not a number."),
     ],
     "11-repair-tetra": [
-        (nb11.TETRA_FACES, "@given"),
-        ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 2, 3)], "@inconsistent"),
-        ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 3, 2)], "@inward"),
-        ([(0, 2, 1)] * 4, "@same"),
-        ([(0, 2, 1), (0, 1, 3), (0, 3, 2)], "@three"),
-        ("faces", "@text"),
+        (nb11.TETRA_FACES, "These are the faces as given: one of them is still wound against its neighbours. Swap two corners of that one face."),
+        ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 2, 3)], "Your faces are not wound consistently: across every shared edge the two faces must walk the edge in opposite directions (mesh.check says to turn 3 faces over)."),
+        ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 3, 2)], "Every face is wound the same way now, but the normals point into the tetrahedron (its signed volume is negative): turn every face over."),
+        ([(0, 2, 1)] * 4, "Keep the same four triangles: each face must use the same three corners as one of the faces given. Only the order of the corners in one face changes."),
+        ([(0, 2, 1), (0, 1, 3), (0, 3, 2)], "Your answer could not be read: give 4 points (x, y, z), got 3."),
+        ("faces", "Your answer could not be read: give 4 points (x, y, z), each in brackets: (x, y, z)."),
     ],
 }  # fmt: skip
 

@@ -8,19 +8,16 @@ right answer counts (any of the 53 faces, any order of the faces, any starting c
 
 from __future__ import annotations
 
-import ast
 from fractions import Fraction
 from functools import cache
 from typing import Any
 
-from trinormal.exercises import AnswerError, Exercise, read_number
+from trinormal.exercises import AnswerError, Exercise, read_number, read_points
 
 #: The tetrahedron of exercise 11-repair-tetra: its corners ...
 TETRA_VERTICES: tuple[tuple[int, int, int], ...] = ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1))
 #: ... and its faces as given, one of them wound the wrong way.
 TETRA_FACES: tuple[tuple[int, int, int], ...] = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 3, 2))
-
-_READ_ERRORS = (AnswerError, ValueError, TypeError, OverflowError, ArithmeticError, RecursionError)
 
 
 @cache
@@ -35,6 +32,8 @@ def _ball() -> tuple[int, frozenset[int]]:
 def _whole(x: Any) -> int:
     """Read a whole number, or raise AnswerError."""
     value = read_number(x)
+    if isinstance(value, float) and value.is_integer():  # 70.0 is face 70
+        value = Fraction(value)
     if not isinstance(value, Fraction) or value.denominator != 1:
         raise AnswerError("a face or vertex number is a whole number such as 17")
     return int(value)
@@ -44,8 +43,10 @@ def _check_flipped_face(answer: Any) -> tuple[bool, str]:
     n_faces, to_flip = _ball()
     try:
         face = _whole(answer)
-    except _READ_ERRORS as error:
+    except AnswerError as error:
         return False, f"Your answer could not be read: {error}."
+    except Exception:  # an object that breaks when read
+        return False, "Your answer could not be read: give one whole number, such as 17."
     if not 0 <= face < n_faces:
         return False, (
             f"The ball has faces 0 to {n_faces - 1}; there is no face {face}. Click a face "
@@ -60,30 +61,18 @@ def _check_flipped_face(answer: Any) -> tuple[bool, str]:
 
 
 def _read_faces(answer: Any) -> list[tuple[int, int, int]]:
-    """Read four faces of three vertex numbers each, or raise AnswerError."""
-    if isinstance(answer, str):
-        if len(answer) > 500:
-            raise AnswerError("that text is too long for four faces")
-        try:
-            answer = ast.literal_eval(answer.strip())
-        except (ValueError, SyntaxError, MemoryError, RecursionError):
-            raise AnswerError("write the faces as a list such as [[0, 2, 1], ...]") from None
-    if hasattr(answer, "tolist"):  # a numpy array
-        answer = answer.tolist()
-    if isinstance(answer, (str, bytes, dict, set, frozenset)) or not hasattr(answer, "__len__"):
-        raise AnswerError("give a list of 4 faces, each a list of 3 vertex numbers")
-    rows = list(answer)
-    if len(rows) != 4:
-        raise AnswerError(f"the tetrahedron has 4 faces, your answer has {len(rows)}")
+    """Read four faces of three vertex numbers each (the shared reader), or raise AnswerError."""
     faces = []
-    for k, row in enumerate(rows):
-        if isinstance(row, (str, bytes, dict, set, frozenset)) or not hasattr(row, "__len__"):
-            raise AnswerError(f"face {k} should be 3 vertex numbers, got {row!r:.40}")
-        corners = [_whole(x) for x in row]
-        if len(corners) != 3:
-            raise AnswerError(f"face {k} has {len(corners)} corners, a triangle has 3")
+    for k, row in enumerate(read_points(answer, 4)):
+        try:
+            corners = [_whole(x) for x in row]
+        except AnswerError as error:
+            raise AnswerError(f"face {k}: {error}") from None
         faces.append((corners[0], corners[1], corners[2]))
     return faces
+
+
+_FACES_WANTED = "give a list of 4 faces, each a list of 3 vertex numbers"
 
 
 def _check_repair_tetra(answer: Any) -> tuple[bool, str]:
@@ -91,8 +80,10 @@ def _check_repair_tetra(answer: Any) -> tuple[bool, str]:
 
     try:
         faces = _read_faces(answer)
-    except _READ_ERRORS as error:
+    except AnswerError as error:
         return False, f"Your answer could not be read: {error}."
+    except Exception:  # an object that breaks when read: say what is wanted
+        return False, f"Your answer could not be read: {_FACES_WANTED}."
     given = sorted(sorted(f) for f in TETRA_FACES)
     if sorted(sorted(f) for f in faces) != given:
         return False, (
@@ -135,7 +126,7 @@ EXERCISES = (
         "TETRA_FACES has one face wound the wrong way. Write the four faces with that face "
         "turned over, so that mesh.check(TETRA_VERTICES, faces).ok is True.",
         checker=_check_repair_tetra,
-        example=lambda: [TETRA_FACES[0], TETRA_FACES[1], TETRA_FACES[2], (1, 2, 3)],
+        example=lambda: (TETRA_FACES[0], TETRA_FACES[1], TETRA_FACES[2], (1, 2, 3)),
         hint="Find the face whose normal points inward, and swap two of its corners.",
     ),
 )
