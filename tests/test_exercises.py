@@ -16,7 +16,6 @@ import pytest
 import sympy as sp
 
 from trinormal import exercises, format_number, triangle_normal
-from trinormal.exercises import nb11
 from trinormal.exercises import (
     NOTEBOOK_MODULES,
     AnswerError,
@@ -25,6 +24,7 @@ from trinormal.exercises import (
     exercise,
     get,
     names,
+    nb11,
     raw_normal,
     read_number,
     unit,
