@@ -116,6 +116,20 @@ def widget_note(text_plain: str) -> str:
     )
 
 
+def mesh_view_note(text_plain: str) -> str:
+    """HTML that stands in for a mesh view (``trinormal.mesh.widget.MeshView``) on the site."""
+    return (
+        '<div class="admonition note tn-widget-note">'
+        '<p class="admonition-title">Interactive 3D view</p>'
+        "<p>In JupyterLab this output is the 3D view of the mesh: turn it, switch culling, "
+        "smooth shading and the normal arrows, and click a face to read its exact normal. A "
+        "static web page has no Python kernel, so here you see what the view showed when the "
+        "notebook was last run. To look at a model in this browser, open "
+        '<a href="../../mesh/">Check a mesh</a>.</p>'
+        f'<pre class="tn-widget-readout">{html.escape(text_plain.strip())}</pre></div>'
+    )
+
+
 def picture_output(out: dict[str, Any]) -> dict[str, Any]:
     """A PNG output as an ``<img>`` with its alt text and display width.
 
@@ -172,11 +186,13 @@ def static_notebook(path: Path) -> dict[str, Any]:
                     plain = "".join(plain)
                 if re.fullmatch(r"\s*(?:[A-Z]\w*\(.*\))?\s*", plain, flags=re.S):
                     plain = ""  # a widget's repr, IntSlider(value=0), is noise, not a readout
+                mesh_view = plain.startswith("Mesh view:")
+                note = mesh_view_note(plain) if mesh_view else widget_note(plain)
                 new.append(
                     {
                         "output_type": "display_data",
                         "metadata": {},
-                        "data": {"text/html": widget_note(plain)},
+                        "data": {"text/html": note},
                     }
                 )
             else:
