@@ -123,8 +123,8 @@ def mesh_view_note(text_plain: str) -> str:
         '<p class="admonition-title">Interactive 3D view</p>'
         "<p>In JupyterLab this output is the 3D view of the mesh: turn it, switch culling, "
         "smooth shading and the normal arrows, and click a face to read its exact normal. A "
-        "static web page has no Python kernel, so here you see what the view showed when the "
-        "notebook was last run. To look at a model in this browser, open "
+        "static web page has no Python kernel, so here you read the view's summary from the last "
+        "run of the notebook. To look at a model in this browser, open "
         '<a href="../../mesh/">Check a mesh</a>.</p>'
         f'<pre class="tn-widget-readout">{html.escape(text_plain.strip())}</pre></div>'
     )
