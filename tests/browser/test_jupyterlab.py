@@ -10,6 +10,7 @@ draws the vertices).
 
 from __future__ import annotations
 
+import ast
 import json
 import re
 from fractions import Fraction
@@ -123,6 +124,30 @@ def assert_views_show(page: Any, state: dict[str, Any], views: int = 1) -> None:
         assert view["parallelogram"] == str(state["parallelogram"]).lower()
 
 
+def last_set_in_notebook_05() -> dict[str, Any]:
+    """The arguments of the notebook's last ``ex.set(...)``: the state Run All must end in.
+
+    Read from the notebook itself (its literal arguments), so the test follows the notebook
+    when its last cell changes; that call must set the whole triangle and the winding.
+    """
+    nb = json.loads(NOTEBOOK_05.read_text(encoding="utf-8"))
+    calls = [
+        node
+        for cell in nb["cells"]
+        if cell["cell_type"] == "code"
+        for node in ast.walk(ast.parse("".join(cell["source"])))
+        if isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Attribute)
+        and node.func.attr == "set"
+        and isinstance(node.func.value, ast.Name)
+        and node.func.value.id == "ex"
+    ]
+    assert calls, "notebook 05 never calls ex.set"
+    args = {k.arg: ast.literal_eval(k.value) for k in calls[-1].keywords}
+    assert set(args) == {"a", "b", "c", "winding"}, f"the last ex.set sets only {sorted(args)}"
+    return args
+
+
 def notebook_05_with_report() -> dict[str, Any]:
     nb = json.loads(NOTEBOOK_05.read_text(encoding="utf-8"))
     for cell in nb["cells"]:
@@ -138,10 +163,12 @@ def test_run_all_of_notebook_05_ends_where_the_last_cell_put_it(
     lab: Lab, page: Any, console: list[str], app: str
 ) -> None:
     # three times, each on a fresh kernel: the kernel's `ex` and the view end on what the
-    # last cell set (the worked example, no parallelogram), never on an earlier cell's state
+    # last cell set (its ex.set, no parallelogram), never on an earlier cell's state
     name = f"05_{app}.ipynb"
     (lab.root / name).write_text(json.dumps(notebook_05_with_report()), encoding="utf-8")
-    expected = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0), winding="ABC").format(4)
+    last = last_set_in_notebook_05()
+    expected = triangle_normal(last["a"], last["b"], last["c"], winding=last["winding"]).format(4)
+    texts = {p + q: str(last[p][i]) for p in "abc" for i, q in enumerate("xyz")}
     for _ in range(3):
         open_notebook(lab, page, name, app)
         run_all(page)
@@ -152,11 +179,8 @@ def test_run_all_of_notebook_05_ends_where_the_last_cell_put_it(
         page.wait_for_timeout(500)
         wait_for_report(page)
         state = report(page)
-        assert state["texts"] == dict(zip(
-            ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"),
-            ("0", "0", "0", "1", "0", "0", "0", "1", "0"), strict=True,
-        ))  # fmt: skip
-        assert state["winding"] == "ABC" and state["parallelogram"] is False
+        assert state["texts"] == texts
+        assert state["winding"] == last["winding"] and state["parallelogram"] is False
         assert state["format"] == expected
         assert_views_show(page, state)
         assert page.evaluate(VIEWS)[0]["banner"] is False
