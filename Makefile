@@ -96,7 +96,7 @@ docs-build: env
 # The site docs-build made, never a second build. Two workers; the tests that use the one
 # JupyterLab server (tests/browser/test_*lab*.py) all run on one of them (see its conftest.py).
 browser: env docs-build
-	TRINORMAL_SITE_DIR="$(CURDIR)/site" $(TIMED) $(RUN) pytest tests/browser -q -n 2 --dist loadgroup
+	TRINORMAL_SITE_DIR="$(CURDIR)/site" $(TIMED) $(RUN) pytest tests/browser -q -n 2 --dist loadgroup --durations=15
 
 ## bench: the performance figures, each against a peer measured in the same run
 bench: env
