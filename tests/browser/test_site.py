@@ -405,6 +405,9 @@ def test_every_notebook_is_in_the_site_with_a_download_link(page, server, site_d
         assert (site_dir / "notebooks" / path.stem / "index.html").is_file(), path.name
         assert url in nav, f"{path.name} is missing from the navigation"
         page.goto(url)
+        page.wait_for_load_state(
+            "networkidle"
+        )  # the page's scripts loaded, none cut off by the next goto
         link = page.locator(f"a[download][href='{path.name}']").first
         assert link.is_visible(), f"{path.name}: no download link"
         how = page.locator("article a[href$='getting-started/']").first
