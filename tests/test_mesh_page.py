@@ -11,6 +11,7 @@ compare the page's reports, sentences, messages and repaired files with Python's
 
 from __future__ import annotations
 
+import ast
 import re
 import sys
 from pathlib import Path
@@ -18,7 +19,8 @@ from pathlib import Path
 import pytest
 
 from trinormal import colors, mesh_page
-from trinormal.mesh import check, parse_mesh
+from trinormal.mesh import MeshFileError, check, parse_mesh, read_mesh
+from trinormal.mesh.io import OTHER_ERRORS, READ_ERRORS
 
 ROOT = Path(__file__).resolve().parents[1]
 JS = ROOT / "docs" / "assets" / "javascripts"
@@ -41,6 +43,38 @@ def test_every_message_the_page_uses_is_defined_once_in_python_and_every_one_is_
     used = js_message_keys()
     assert used - set(mesh_page.MESSAGES) == set()
     assert set(mesh_page.MESSAGES) - used == set()
+
+
+BAD = ROOT / "tests" / "data" / "meshes" / "bad"
+
+
+@pytest.mark.parametrize("path", sorted(BAD.iterdir()), ids=lambda p: p.name)
+def test_pythons_error_for_a_bad_file_is_the_pages_template(path):
+    """The sentence Python raises is the page's template (the same object) filled in."""
+    with pytest.raises(MeshFileError) as info:
+        read_mesh(path)
+    err = info.value
+    assert err.key is not None
+    assert mesh_page.MESSAGES[err.key] is READ_ERRORS[err.key]
+    reason = mesh_page.MESSAGES[err.key].format(**err.params)
+    where = mesh_page.MESSAGES["at_line"].format(name=str(path), line=err.line)
+    assert str(err) == (f"{where}: {reason}" if err.line else f"{path}: {reason}")
+    assert "{" not in str(err)  # every field filled
+
+
+def test_the_readers_reasons_are_written_once_for_python_and_the_page():
+    assert {k: mesh_page.MESSAGES[k] for k in READ_ERRORS} == READ_ERRORS
+    assert set(OTHER_ERRORS).isdisjoint(mesh_page.MESSAGES)  # about paths and writing: Python's
+    # every MeshFileError the reader raises is made from a template: no sentence of its own
+    source = (ROOT / "trinormal" / "mesh" / "io.py").read_text(encoding="utf-8")
+    direct = [
+        node.lineno
+        for node in ast.walk(ast.parse(source))
+        if isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Name)
+        and node.func.id == "MeshFileError"
+    ]
+    assert direct == []
 
 
 def test_the_site_build_writes_the_page_constants():

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from trinormal.mesh.io import READ_ERRORS
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.tolerances import DEFAULT_TOL
 
@@ -42,63 +43,14 @@ LIMITS: dict[str, int] = {
     "max_view_faces": 300_000,
 }
 
-#: What the page says about a file it cannot read. The reasons (``at_line`` to the last PLY one)
-#: are the wording of `trinormal.mesh.MeshFileError` for the same file, as templates: the page
-#: writes "NAME: REASON" or "NAME, line N: REASON" as Python does, and the browser tests check
-#: that both say the same on every bad file of ``tests/data/meshes/bad/``. The others are the
-#: page's own (its limits, its progress and its buttons).
+#: What the page says. The reasons a file cannot be read (``at_line`` to ``ply_binary_row``) are
+#: `trinormal.mesh.io.READ_ERRORS` itself, the templates `trinormal.mesh.MeshFileError` fills
+#: for the same file: the page writes "NAME: REASON" or "NAME, line N: REASON" as Python does,
+#: and the browser tests check that both say the same on every bad file of
+#: ``tests/data/meshes/bad/``. The others are the page's own (its limits, its progress and its
+#: buttons).
 MESSAGES: dict[str, str] = {
-    "at_line": "{name}, line {line}",
-    "unknown_format": "unknown mesh format {ext}; trinormal reads .obj, .stl and .ply",
-    "no_extension": "(no extension)",
-    "binary_data": "not a text {what} file (binary data)",
-    "not_a_number": "{token} is not a number",
-    "not_finite": "{token} is not a finite number",
-    "obj_vertex": "a vertex needs three coordinates: v x y z",
-    "obj_face_short": "a face needs at least three corners",
-    "obj_index": "{token} is not a vertex number",
-    "obj_back": "face corner {index} refers back past the first vertex ({count} {vertices} so far)",
-    "obj_zero": "vertex numbers start at 1, not 0",
-    "obj_statement": "{token} is not an OBJ statement",
-    "obj_empty": "no vertices and no faces: not an OBJ mesh",
-    "obj_index_range": "face {face} refers to vertex {index}, but the file has {count} {vertices}",
-    "stl_not_finite": "triangle {triangle} has a coordinate that is not finite",
-    "stl_not_stl": (
-        "not an STL file: it is not text starting with 'solid', and a binary STL of {count} "
-        "triangles would have {expected} bytes, not {size}"
-    ),
-    "stl_short": "not an STL file: too short, and it does not start with 'solid'",
-    "stl_vertex_outside": "'vertex' outside 'outer loop' … 'endloop'",
-    "stl_vertex": "a vertex needs three coordinates: vertex x y z",
-    "stl_endloop": "'endloop' without 'outer loop'",
-    "stl_facet": (
-        "the facet starting at line {start} has {count} vertices; an STL facet has exactly 3"
-    ),
-    "stl_before_endloop": "{token} before 'endloop'",
-    "stl_keyword": "{token} is not an STL keyword",
-    "stl_ends_in_facet": "the file ends inside a facet",
-    "ply_not_ply": "not a PLY file: it must start with 'ply' and have an 'end_header' line",
-    "ply_format": "the format must be ascii, binary_little_endian or binary_big_endian",
-    "ply_element": "write an element as: element NAME COUNT",
-    "ply_property_first": "a property before any element",
-    "ply_type": "unknown property type",
-    "ply_property": "cannot read the property {token}",
-    "ply_keyword": "{token} is not a PLY header keyword",
-    "ply_no_format": "the header has no 'format' line",
-    "ply_no_vertex": "the header has no 'vertex' element",
-    "ply_vertex_list": "the vertex element has a list property",
-    "ply_no_axis": "the vertex element has no '{axis}' property",
-    "ply_not_finite": "vertex {vertex} has a coordinate that is not finite",
-    "ply_corners": "face {face} has {count} corners; a face needs 3 or more",
-    "ply_index_range": "face {face} refers to vertex {index}, but {valid}",
-    "ply_valid": "the valid vertices are 0 to {last}",
-    "ply_no_vertices": "there are no vertices",
-    "ply_ascii_short": "the file ends after {rows} of {count} '{element}' rows",
-    "ply_expected": "expected {count} numbers, found {found}",
-    "ply_row": "cannot read this '{element}' row",
-    "ply_too_many": "this '{element}' row has {count} values too many",
-    "ply_binary_short": "the file ends inside the '{element}' element ({rows} of {count} rows)",
-    "ply_binary_row": "the file ends inside '{element}' row {row} of {count}",
+    **READ_ERRORS,
     # the page's own
     "too_large": (
         "{name} is {size} bytes; this page reads files of up to {max} bytes. "

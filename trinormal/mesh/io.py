@@ -53,6 +53,8 @@ from trinormal.mesh._arrays import FloatArray, IntArray, _check_faces, _check_ve
 
 __all__ = [
     "FORMATS",
+    "OTHER_ERRORS",
+    "READ_ERRORS",
     "SAMPLES",
     "MeshData",
     "MeshFileError",
@@ -102,6 +104,74 @@ def sample_path(name: str = "damaged_ball.obj") -> str:
     return os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name)
 
 
+#: Why a file's content cannot be read, as templates: the one wording of every reason
+#: `MeshFileError` gives for a file's bytes, and (through `trinormal.mesh_page.MESSAGES`, which
+#: includes them) of the site's "Check a mesh" page for the same file. ``at_line`` places the
+#: line; ``no_extension``, ``ply_valid`` and ``ply_no_vertices`` are parts of other reasons.
+READ_ERRORS: dict[str, str] = {
+    "at_line": "{name}, line {line}",
+    "unknown_format": "unknown mesh format {ext}; trinormal reads .obj, .stl and .ply",
+    "no_extension": "(no extension)",
+    "binary_data": "not a text {what} file (binary data)",
+    "not_a_number": "{token} is not a number",
+    "not_finite": "{token} is not a finite number",
+    "obj_vertex": "a vertex needs three coordinates: v x y z",
+    "obj_face_short": "a face needs at least three corners",
+    "obj_index": "{token} is not a vertex number",
+    "obj_back": "face corner {index} refers back past the first vertex ({count} {vertices} so far)",
+    "obj_zero": "vertex numbers start at 1, not 0",
+    "obj_statement": "{token} is not an OBJ statement",
+    "obj_empty": "no vertices and no faces: not an OBJ mesh",
+    "obj_index_range": "face {face} refers to vertex {index}, but the file has {count} {vertices}",
+    "stl_not_finite": "triangle {triangle} has a coordinate that is not finite",
+    "stl_not_stl": (
+        "not an STL file: it is not text starting with 'solid', and a binary STL of {count} "
+        "triangles would have {expected} bytes, not {size}"
+    ),
+    "stl_short": "not an STL file: too short, and it does not start with 'solid'",
+    "stl_vertex_outside": "'vertex' outside 'outer loop' … 'endloop'",
+    "stl_vertex": "a vertex needs three coordinates: vertex x y z",
+    "stl_endloop": "'endloop' without 'outer loop'",
+    "stl_facet": (
+        "the facet starting at line {start} has {count} vertices; an STL facet has exactly 3"
+    ),
+    "stl_before_endloop": "{token} before 'endloop'",
+    "stl_keyword": "{token} is not an STL keyword",
+    "stl_ends_in_facet": "the file ends inside a facet",
+    "ply_not_ply": "not a PLY file: it must start with 'ply' and have an 'end_header' line",
+    "ply_format": "the format must be ascii, binary_little_endian or binary_big_endian",
+    "ply_element": "write an element as: element NAME COUNT",
+    "ply_property_first": "a property before any element",
+    "ply_type": "unknown property type",
+    "ply_property": "cannot read the property {token}",
+    "ply_keyword": "{token} is not a PLY header keyword",
+    "ply_no_format": "the header has no 'format' line",
+    "ply_no_vertex": "the header has no 'vertex' element",
+    "ply_vertex_list": "the vertex element has a list property",
+    "ply_no_axis": "the vertex element has no '{axis}' property",
+    "ply_not_finite": "vertex {vertex} has a coordinate that is not finite",
+    "ply_corners": "face {face} has {count} corners; a face needs 3 or more",
+    "ply_index_range": "face {face} refers to vertex {index}, but {valid}",
+    "ply_valid": "the valid vertices are 0 to {last}",
+    "ply_no_vertices": "there are no vertices",
+    "ply_ascii_short": "the file ends after {rows} of {count} '{element}' rows",
+    "ply_expected": "expected {count} numbers, found {found}",
+    "ply_row": "cannot read this '{element}' row",
+    "ply_too_many": "this '{element}' row has {count} values too many",
+    "ply_binary_short": "the file ends inside the '{element}' element ({rows} of {count} rows)",
+    "ply_binary_row": "the file ends inside '{element}' row {row} of {count}",
+}
+
+#: What only Python says: about the path, the ``format`` argument and writing (the site's page
+#: reads bytes it was given and writes what it repaired, so none of these can happen there).
+OTHER_ERRORS: dict[str, str] = {
+    "cannot_read": "cannot be read: {reason}",
+    "format_argument": "unknown mesh format {format}; use obj, stl or ply",
+    "encoding": "a {format} file is written as {encodings}, not {encoding}",
+    "cannot_write": "cannot be written: {reason}",
+}
+
+
 class MeshFileError(ValueError):
     """A mesh file that cannot be read (or written), with the file and line it concerns.
 
@@ -113,19 +183,36 @@ class MeshFileError(ValueError):
         The line of a text file where the problem is (1-based), or None.
     reason : str
         The problem in one sentence, without the file name.
+    key : str or None
+        Which template of `READ_ERRORS` (or `OTHER_ERRORS`) ``reason`` is, or None.
+    params : dict
+        The values filled into that template.
 
     Examples
     --------
     >>> str(MeshFileError("model.obj", "'x' is not a number", line=3))
     "model.obj, line 3: 'x' is not a number"
+    >>> err = MeshFileError.of("model.obj", "not_a_number", line=3, token="'x'")
+    >>> str(err), err.key
+    ("model.obj, line 3: 'x' is not a number", 'not_a_number')
     """
 
     def __init__(self, path: str, reason: str, line: int | None = None) -> None:
         self.path = path
         self.line = line
         self.reason = reason
-        where = f"{path}, line {line}" if line is not None else path
+        self.key: str | None = None
+        self.params: dict[str, Any] = {}
+        where = path if line is None else READ_ERRORS["at_line"].format(name=path, line=line)
         super().__init__(f"{where}: {reason}")
+
+    @classmethod
+    def of(cls, path: str, key: str, line: int | None = None, **params: Any) -> MeshFileError:
+        """Return the error whose reason is template ``key`` filled with ``params``."""
+        template = READ_ERRORS[key] if key in READ_ERRORS else OTHER_ERRORS[key]
+        err = cls(path, template.format(**params), line)
+        err.key, err.params = key, params
+        return err
 
 
 @dataclass(frozen=True)
@@ -229,7 +316,7 @@ def read_mesh(path: str | os.PathLike[str], format: str | None = None) -> MeshDa
         with open(name, "rb") as fh:
             data = fh.read()
     except OSError as exc:
-        raise MeshFileError(name, f"cannot be read: {exc.strerror or exc}") from None
+        raise MeshFileError.of(name, "cannot_read", reason=exc.strerror or exc) from None
     return parse_mesh(data, fmt, name)
 
 
@@ -271,15 +358,12 @@ def _format_of(name: str, format: str | None) -> str:
     if format is None:
         ext = os.path.splitext(name)[1].lower().lstrip(".")
         if ext not in FORMATS:
-            raise MeshFileError(
-                name,
-                f"unknown mesh format {('.' + ext) if ext else '(no extension)'}; "
-                "trinormal reads .obj, .stl and .ply",
-            )
+            shown = ("." + ext) if ext else READ_ERRORS["no_extension"]
+            raise MeshFileError.of(name, "unknown_format", ext=shown)
         return ext
     fmt = format.lower().lstrip(".")
     if fmt not in FORMATS:
-        raise MeshFileError(name, f"unknown mesh format {format!r}; use obj, stl or ply")
+        raise MeshFileError.of(name, "format_argument", format=repr(format))
     return fmt
 
 
@@ -288,7 +372,7 @@ def _text(data: bytes, name: str, what: str) -> str:
     nul = data.find(b"\0")
     if nul >= 0:
         line = data.count(b"\n", 0, nul) + 1
-        raise MeshFileError(name, f"not a text {what} file (binary data)", line)
+        raise MeshFileError.of(name, "binary_data", line, what=what)
     try:
         return data.decode("utf-8").removeprefix("\ufeff")  # without a byte-order mark
     except UnicodeDecodeError:
@@ -299,10 +383,14 @@ def _number(tok: str, name: str, line: int) -> float:
     try:
         x = float(tok)
     except ValueError:
-        raise MeshFileError(name, f"{_show(tok)} is not a number", line) from None
+        raise MeshFileError.of(name, "not_a_number", line, token=_show(tok)) from None
     if not math.isfinite(x):
-        raise MeshFileError(name, f"{_show(tok)} is not a finite number", line)
+        raise MeshFileError.of(name, "not_finite", line, token=_show(tok))
     return x
+
+
+def _vertices(n: int) -> str:
+    return "vertex" if n == 1 else "vertices"
 
 
 def _show(tok: str) -> str:
@@ -358,56 +446,54 @@ def _read_obj(data: bytes, name: str) -> MeshData:
         kw = toks[0]
         if kw == "v":
             if len(toks) < 4:
-                raise MeshFileError(name, "a vertex needs three coordinates: v x y z", lineno)
+                raise MeshFileError.of(name, "obj_vertex", lineno)
             try:
                 x, y, z = float(toks[1]), float(toks[2]), float(toks[3])
             except ValueError:
                 bad = next(t for t in toks[1:4] if not _is_float(t))
-                raise MeshFileError(name, f"{_show(bad)} is not a number", lineno) from None
+                raise MeshFileError.of(name, "not_a_number", lineno, token=_show(bad)) from None
             if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):
                 bad = next(t for t in toks[1:4] if not math.isfinite(float(t)))
-                raise MeshFileError(name, f"{_show(bad)} is not a finite number", lineno)
+                raise MeshFileError.of(name, "not_finite", lineno, token=_show(bad))
             coords += (x, y, z)
             nv += 1
         elif kw == "f" or kw == "fo":
             if len(toks) < 4:
-                raise MeshFileError(name, "a face needs at least three corners", lineno)
+                raise MeshFileError.of(name, "obj_face_short", lineno)
             poly = []
             for tok in toks[1:]:
                 ref = tok.split("/", 1)[0]
                 try:
                     i = int(ref)
                 except ValueError:
-                    raise MeshFileError(
-                        name, f"{_show(tok)} is not a vertex number", lineno
-                    ) from None
+                    raise MeshFileError.of(name, "obj_index", lineno, token=_show(tok)) from None
                 if i > 0:
                     poly.append(i - 1)
                 elif i < 0:  # counted back from the last vertex so far
                     if -i > nv:
-                        raise MeshFileError(
-                            name,
-                            f"face corner {i} refers back past the first vertex "
-                            f"({nv} {'vertex' if nv == 1 else 'vertices'} so far)",
-                            lineno,
+                        raise MeshFileError.of(
+                            name, "obj_back", lineno, index=i, count=nv, vertices=_vertices(nv)
                         )
                     poly.append(nv + i)
                 else:
-                    raise MeshFileError(name, "vertex numbers start at 1, not 0", lineno)
+                    raise MeshFileError.of(name, "obj_zero", lineno)
             polys.append(poly)
             poly_lines.append(lineno)
         elif kw not in _OBJ_IGNORED:
-            raise MeshFileError(name, f"{_show(kw)} is not an OBJ statement", lineno)
+            raise MeshFileError.of(name, "obj_statement", lineno, token=_show(kw))
     if nv == 0 and not polys:
-        raise MeshFileError(name, "no vertices and no faces: not an OBJ mesh")
+        raise MeshFileError.of(name, "obj_empty")
     for k, poly in enumerate(polys):  # vertex numbers may point forward; check at the end
         over = [i for i in poly if i >= nv]
         if over:
-            raise MeshFileError(
+            raise MeshFileError.of(
                 name,
-                f"face {k + 1} refers to vertex {over[0] + 1}, but the file has "
-                f"{nv} {'vertex' if nv == 1 else 'vertices'}",
+                "obj_index_range",
                 poly_lines[k],
+                face=k + 1,
+                index=over[0] + 1,
+                count=nv,
+                vertices=_vertices(nv),
             )
     vertices = np.array(coords, dtype=np.float64).reshape(-1, 3)
     faces, source = _fan(polys) if polys else (np.empty((0, 3), np.intp), np.empty(0, np.intp))
@@ -435,17 +521,15 @@ def _read_stl(data: bytes, name: str) -> MeshData:
             corners = rec["corners"].reshape(-1, 3).astype(np.float64)
             if not np.isfinite(corners).all():
                 bad = int(np.flatnonzero(~np.isfinite(corners).all(axis=1))[0]) // 3
-                raise MeshFileError(name, f"triangle {bad + 1} has a coordinate that is not finite")
+                raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
             return _merge_corners(corners, name, "binary")
     if data.lstrip()[:5].lower() != b"solid" or b"\0" in data:
         if len(data) >= 84:
             (n,) = struct.unpack_from("<I", data, 80)
-            raise MeshFileError(
-                name,
-                f"not an STL file: it is not text starting with 'solid', and a binary STL of "
-                f"{n} triangles would have {84 + 50 * n} bytes, not {len(data)}",
+            raise MeshFileError.of(
+                name, "stl_not_stl", count=n, expected=84 + 50 * n, size=len(data)
             )
-        raise MeshFileError(name, "not an STL file: too short, and it does not start with 'solid'")
+        raise MeshFileError.of(name, "stl_short")
     return _read_stl_ascii(data, name)
 
 
@@ -464,31 +548,26 @@ def _read_stl_ascii(data: bytes, name: str) -> MeshData:
         kw = toks[0].lower()
         if kw == "vertex":
             if not in_loop:
-                raise MeshFileError(name, "'vertex' outside 'outer loop' … 'endloop'", lineno)
+                raise MeshFileError.of(name, "stl_vertex_outside", lineno)
             if len(toks) != 4:
-                raise MeshFileError(name, "a vertex needs three coordinates: vertex x y z", lineno)
+                raise MeshFileError.of(name, "stl_vertex", lineno)
             corners += (_number(t, name, lineno) for t in toks[1:])
             loop_count += 1
         elif kw == "outer":
             in_loop, loop_count, loop_line = True, 0, lineno
         elif kw == "endloop":
             if not in_loop:
-                raise MeshFileError(name, "'endloop' without 'outer loop'", lineno)
+                raise MeshFileError.of(name, "stl_endloop", lineno)
             if loop_count != 3:
-                raise MeshFileError(
-                    name,
-                    f"the facet starting at line {loop_line} has {loop_count} vertices; "
-                    "an STL facet has exactly 3",
-                    lineno,
-                )
+                raise MeshFileError.of(name, "stl_facet", lineno, start=loop_line, count=loop_count)
             in_loop = False
         elif kw in ("solid", "endsolid", "facet", "endfacet"):
             if in_loop:
-                raise MeshFileError(name, f"{_show(toks[0])} before 'endloop'", lineno)
+                raise MeshFileError.of(name, "stl_before_endloop", lineno, token=_show(toks[0]))
         else:
-            raise MeshFileError(name, f"{_show(toks[0])} is not an STL keyword", lineno)
+            raise MeshFileError.of(name, "stl_keyword", lineno, token=_show(toks[0]))
     if in_loop:
-        raise MeshFileError(name, "the file ends inside a facet", lineno)
+        raise MeshFileError.of(name, "stl_ends_in_facet", lineno)
     arr = np.array(corners, dtype=np.float64).reshape(-1, 3)
     return _merge_corners(arr, name, "ascii")
 
@@ -556,9 +635,7 @@ class _Element:
 def _read_ply(data: bytes, name: str) -> MeshData:
     end = data.find(b"end_header")
     if not data.startswith(b"ply") or end < 0:
-        raise MeshFileError(
-            name, "not a PLY file: it must start with 'ply' and have an 'end_header' line", 1
-        )
+        raise MeshFileError.of(name, "ply_not_ply", 1)
     nl = data.find(b"\n", end)
     body_start = len(data) if nl < 0 else nl + 1
     header = data[:end].decode("latin-1").splitlines()
@@ -574,39 +651,35 @@ def _read_ply(data: bytes, name: str) -> MeshData:
                 "binary_little_endian",
                 "binary_big_endian",
             ):
-                raise MeshFileError(
-                    name,
-                    "the format must be ascii, binary_little_endian or binary_big_endian",
-                    lineno,
-                )
+                raise MeshFileError.of(name, "ply_format", lineno)
             fmt = toks[1]
         elif toks[0] == "element":
             if len(toks) != 3 or not toks[2].isdigit():
-                raise MeshFileError(name, "write an element as: element NAME COUNT", lineno)
+                raise MeshFileError.of(name, "ply_element", lineno)
             elements.append(_Element(toks[1], int(toks[2]), [], lineno))
         elif toks[0] == "property":
             if not elements:
-                raise MeshFileError(name, "a property before any element", lineno)
+                raise MeshFileError.of(name, "ply_property_first", lineno)
             if len(toks) == 5 and toks[1] == "list":
                 if toks[2] not in _PLY_TYPES or toks[3] not in _PLY_TYPES:
-                    raise MeshFileError(name, "unknown property type", lineno)
+                    raise MeshFileError.of(name, "ply_type", lineno)
                 elements[-1].props.append((toks[4], _PLY_TYPES[toks[3]], _PLY_TYPES[toks[2]]))
             elif len(toks) == 3 and toks[1] in _PLY_TYPES:
                 elements[-1].props.append((toks[2], _PLY_TYPES[toks[1]], None))
             else:
-                raise MeshFileError(name, f"cannot read the property {_show(line.strip())}", lineno)
+                raise MeshFileError.of(name, "ply_property", lineno, token=_show(line.strip()))
         else:
-            raise MeshFileError(name, f"{_show(toks[0])} is not a PLY header keyword", lineno)
+            raise MeshFileError.of(name, "ply_keyword", lineno, token=_show(toks[0]))
     if fmt is None:
-        raise MeshFileError(name, "the header has no 'format' line")
+        raise MeshFileError.of(name, "ply_no_format")
     vert = next((e for e in elements if e.name == "vertex"), None)
     if vert is None:
-        raise MeshFileError(name, "the header has no 'vertex' element")
+        raise MeshFileError.of(name, "ply_no_vertex")
     if not vert.fixed:
-        raise MeshFileError(name, "the vertex element has a list property", vert.line)
+        raise MeshFileError.of(name, "ply_vertex_list", vert.line)
     for axis in "xyz":
         if not any(p[0] == axis and p[2] is None for p in vert.props):
-            raise MeshFileError(name, f"the vertex element has no '{axis}' property", vert.line)
+            raise MeshFileError.of(name, "ply_no_axis", vert.line, axis=axis)
     if fmt == "ascii":
         values = _ply_ascii(data, body_start, len(header) + 2, elements, name)
         encoding = "ascii"
@@ -617,14 +690,12 @@ def _read_ply(data: bytes, name: str) -> MeshData:
     vertices = np.stack([np.asarray(vdata[a], dtype=np.float64) for a in "xyz"], axis=1)
     if not np.isfinite(vertices).all():
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
-        raise MeshFileError(name, f"vertex {bad} has a coordinate that is not finite")
+        raise MeshFileError.of(name, "ply_not_finite", vertex=bad)
     polys: list[list[int]] | IntArray = values.get("face", {}).get("_polys", [])
     nv = vertices.shape[0]
     if isinstance(polys, np.ndarray):  # every face has the same number of corners
         if polys.shape[1] < 3:
-            raise MeshFileError(
-                name, f"face 0 has {polys.shape[1]} corners; a face needs 3 or more"
-            )
+            raise MeshFileError.of(name, "ply_corners", face=0, count=polys.shape[1])
         out_of_range = (polys < 0) | (polys >= nv)
         if out_of_range.any():
             row = int(np.flatnonzero(out_of_range.any(axis=1))[0])
@@ -633,7 +704,7 @@ def _read_ply(data: bytes, name: str) -> MeshData:
         return MeshData(vertices, faces, "ply", encoding, source, polys.shape[0], name)
     for row, poly in enumerate(polys):
         if len(poly) < 3:
-            raise MeshFileError(name, f"face {row} has {len(poly)} corners; a face needs 3 or more")
+            raise MeshFileError.of(name, "ply_corners", face=row, count=len(poly))
         outside = [i for i in poly if not 0 <= i < nv]
         if outside:
             _ply_range_error(name, row, outside[0], nv)
@@ -642,8 +713,8 @@ def _read_ply(data: bytes, name: str) -> MeshData:
 
 
 def _ply_range_error(name: str, k: int, index: int, nv: int) -> None:
-    valid = f"the valid vertices are 0 to {nv - 1}" if nv else "there are no vertices"
-    raise MeshFileError(name, f"face {k} refers to vertex {index}, but {valid}")
+    valid = READ_ERRORS["ply_valid"].format(last=nv - 1) if nv else READ_ERRORS["ply_no_vertices"]
+    raise MeshFileError.of(name, "ply_index_range", face=k, index=index, valid=valid)
 
 
 def _fan_uniform(polys: IntArray) -> tuple[IntArray, IntArray]:
@@ -674,10 +745,13 @@ def _ply_ascii(
     pos = 0
     for el in elements:
         if pos + el.count > len(lines):
-            raise MeshFileError(
+            raise MeshFileError.of(
                 name,
-                f"the file ends after {max(len(lines) - pos, 0)} of {el.count} '{el.name}' rows",
+                "ply_ascii_short",
                 first_line + len(lines) - 1,
+                rows=max(len(lines) - pos, 0),
+                count=el.count,
+                element=el.name,
             )
         rows = lines[pos : pos + el.count]
         if el.name not in ("vertex", "face"):
@@ -710,15 +784,13 @@ def _ply_ascii(
                         if len(items) != n or n < 0:
                             raise IndexError
                     except (ValueError, IndexError):
-                        raise MeshFileError(
-                            name, f"cannot read this '{el.name}' row", lineno
-                        ) from None
+                        raise MeshFileError.of(name, "ply_row", lineno, element=el.name) from None
                     t += 1 + n
                     if pname == want:
                         polys.append(items)
                 if t != len(toks):
-                    raise MeshFileError(
-                        name, f"this '{el.name}' row has {len(toks) - t} values too many", lineno
+                    raise MeshFileError.of(
+                        name, "ply_too_many", lineno, element=el.name, count=len(toks) - t
                     )
             out[el.name] = {"_polys": polys}
         pos += el.count
@@ -729,10 +801,10 @@ def _ply_bad_row(rows: list[str], k: int, first: int, name: str) -> None:
     for r, row in enumerate(rows):
         toks = row.split()
         if len(toks) != k:
-            raise MeshFileError(name, f"expected {k} numbers, found {len(toks)}", first + r)
+            raise MeshFileError.of(name, "ply_expected", first + r, count=k, found=len(toks))
         for tok in toks:
             _number(tok, name, first + r)
-    raise MeshFileError(name, "cannot read the vertex rows", first)  # pragma: no cover
+    raise MeshFileError.of(name, "ply_row", first, element="vertex")  # pragma: no cover
 
 
 def _ply_binary(
@@ -745,10 +817,12 @@ def _ply_binary(
             dt = np.dtype([(p[0], order + p[1]) for p in el.props])
             size = dt.itemsize * el.count
             if pos + size > len(data):
-                raise MeshFileError(
+                raise MeshFileError.of(
                     name,
-                    f"the file ends inside the '{el.name}' element "
-                    f"({(len(data) - pos) // max(dt.itemsize, 1)} of {el.count} rows)",
+                    "ply_binary_short",
+                    element=el.name,
+                    rows=(len(data) - pos) // max(dt.itemsize, 1),
+                    count=el.count,
                 )
             if el.name in ("vertex", "face"):
                 arr = np.frombuffer(data, dtype=dt, count=el.count, offset=pos)
@@ -804,8 +878,8 @@ def _ply_binary_lists(
                 items = struct.unpack_from(f"{order}{n}{_STRUCT[ptype]}", data, pos)
                 pos += n * np.dtype(ptype).itemsize
             except struct.error:
-                raise MeshFileError(
-                    name, f"the file ends inside '{el.name}' row {r} of {el.count}"
+                raise MeshFileError.of(
+                    name, "ply_binary_row", element=el.name, row=r, count=el.count
                 ) from None
             if pname == want:
                 polys.append(list(items))
@@ -860,8 +934,12 @@ def write_mesh(
     fmt = _format_of(name, format)
     enc = encoding or ENCODINGS[fmt][0]
     if enc not in ENCODINGS[fmt]:
-        raise MeshFileError(
-            name, f"a {fmt.upper()} file is written as {' or '.join(ENCODINGS[fmt])}, not {enc!r}"
+        raise MeshFileError.of(
+            name,
+            "encoding",
+            format=fmt.upper(),
+            encodings=" or ".join(ENCODINGS[fmt]),
+            encoding=repr(enc),
         )
     v, _ = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
@@ -870,7 +948,7 @@ def write_mesh(
         with open(name, "wb") as fh:
             fh.write(data)
     except OSError as exc:
-        raise MeshFileError(name, f"cannot be written: {exc.strerror or exc}") from None
+        raise MeshFileError.of(name, "cannot_write", reason=exc.strerror or exc) from None
 
 
 def _encode(v: FloatArray, f: IntArray, fmt: str, enc: str) -> bytes:
