@@ -73,6 +73,10 @@ def test_the_licence_names_the_bundled_three_version() -> None:
     assert f"three.js {version}" in text
     assert "Permission is hereby granted, free of charge" in text  # the MIT licence itself
     assert f"three.js {version}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
+    # the mesh view's picking (three-mesh-bvh) is bundled in mesh-view.js: its licence travels too
+    bvh = lock["packages"]["node_modules/three-mesh-bvh"]["version"]
+    assert f"three-mesh-bvh {bvh}" in text and "Copyright (c) 2018 Garrett Johnson" in text
+    assert f"three-mesh-bvh {bvh}" in (STATIC / "mesh-view.js").read_text(encoding="utf-8")[:300]
 
 
 # Ways a script could load code or data from another origin at run time.

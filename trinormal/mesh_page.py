@@ -20,6 +20,7 @@ from typing import Any
 
 from trinormal.mesh.io import READ_ERRORS
 from trinormal.mesh.report import NOUNS, SUMMARY
+from trinormal.mesh.selection import selection_constants
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = [
@@ -182,12 +183,14 @@ def site_constants() -> dict[str, Any]:
     Returns
     -------
     dict
-        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs) and ``tol``.
+        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol`` and
+        ``selection`` (the readout of a face picked in the 3D view:
+        `trinormal.mesh.selection.selection_constants`).
 
     Examples
     --------
     >>> sorted(site_constants())
-    ['limits', 'messages', 'nouns', 'rows', 'summary', 'tol']
+    ['limits', 'messages', 'nouns', 'rows', 'selection', 'summary', 'tol']
     """
     return {
         "messages": dict(MESSAGES),
@@ -196,4 +199,5 @@ def site_constants() -> dict[str, Any]:
         "summary": {k: list(t) if isinstance(t, tuple) else t for k, t in SUMMARY.items()},
         "nouns": {k: list(t) for k, t in NOUNS.items()},
         "tol": DEFAULT_TOL,
+        "selection": selection_constants(),
     }

@@ -1,7 +1,8 @@
 // Build the 3D view into one ES module for JupyterLab (anywidget) and the site:
 //   node build.mjs [OUTDIR]      (default: ../../trinormal/explorer/static)
 // Writes explorer.js and mesh-view.js (three.js bundled in, CSS as a string, minified, deterministic) and
-// THIRD_PARTY_LICENSES.txt (three.js's licence, copied from node_modules, with its version).
+// THIRD_PARTY_LICENSES.txt (the licences of three.js and of three-mesh-bvh, the mesh view's picking,
+// copied from node_modules, with their versions).
 //
 // One three.js per page: anywidget imports the module afresh for every widget (and again
 // when a cell is re-run), and each import would evaluate three.js again (three warns about
@@ -31,6 +32,7 @@ const cssAsText = {
 };
 
 const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.json"), "utf8"));
+const bvh = JSON.parse(readFileSync(join(here, "node_modules/three-mesh-bvh/package.json"), "utf8"));
 
 // One three.js per page. A page can show the explorer and the mesh view together (two bundles,
 // or one bundle that anywidget imports once per widget), and three.js warns "Multiple instances
@@ -45,25 +47,38 @@ const ADDONS = [
   "three/addons/lines/LineSegments2.js",
   "three/addons/lines/LineSegmentsGeometry.js",
 ];
-const RUNTIME_KEY = `trinormal.three@${three.version}`;
-// The names src/ imports from each (the union over every source file, so every bundle carries
-// the same runtime, and the runtime carries only what some view uses).
+// npm packages bundled into a view that import three.js themselves (three-mesh-bvh, the mesh
+// view's picking): their `import { ... } from "three"` is served by the shared module too, so
+// they use the page's one three.js and do not bring a second copy into the bundle.
+const THREE_USERS = ["three-mesh-bvh"];
+// The names src/ (and THREE_USERS) import from each (the union over every source file, so every
+// bundle carries the same runtime, and the runtime carries only what some view uses).
 const exportNames = Object.fromEntries(["three", ...ADDONS].map((spec) => [spec, new Set()]));
-for (const file of readdirSync(join(here, "src"), { recursive: true })) {
-  if (!file.endsWith(".js")) continue;
-  const code = readFileSync(join(here, "src", file), "utf8");
-  for (const m of code.matchAll(/import\s*\{([^}]*)\}\s*from\s*"(three[^"]*)"/g)) {
-    if (!(m[2] in exportNames)) throw new Error(`src/${file}: ${m[2]} is not in ADDONS (build.mjs)`);
-    for (const name of m[1].split(",").map((n) => n.trim()).filter(Boolean)) exportNames[m[2]].add(name);
+const IMPORT = /import\s*\{([^}]*)\}\s*from\s*["'](three(?:\/[^"']*)?)["']/g;
+function scan(dir, label, only) {
+  for (const file of readdirSync(dir, { recursive: true })) {
+    if (!file.endsWith(".js")) continue;
+    const code = readFileSync(join(dir, file), "utf8").replace(/\/\*[\s\S]*?\*\//g, ""); // not JSDoc's @import
+    for (const m of code.matchAll(IMPORT)) {
+      if (only && m[2] !== only) continue;
+      if (!(m[2] in exportNames)) throw new Error(`${label}/${file}: ${m[2]} is not in ADDONS (build.mjs)`);
+      for (const name of m[1].split(",").map((n) => n.trim()).filter(Boolean)) exportNames[m[2]].add(name);
+    }
+    if (/import\s+(\*|\w+)[^;]*from\s*["']three["'/]/.test(code)) throw new Error(`${label}/${file}: import three by name`);
   }
-  if (/import\s+(\*|\w+)[^;]*from\s*"three/.test(code)) throw new Error(`src/${file}: import three by name`);
 }
+scan(join(here, "src"), "src");
+for (const pkg of THREE_USERS) scan(join(here, "node_modules", pkg, "src"), pkg, "three");
 for (const spec in exportNames) exportNames[spec] = [...exportNames[spec]].sort();
+// the key names the runtime's exports too: two builds with different runtimes never share one
+const RUNTIME_KEY = `trinormal.three@${three.version}#${createHash("sha256").update(JSON.stringify(exportNames)).digest("hex").slice(0, 12)}`;
 const sharedThree = {
   name: "shared-three",
   setup(b) {
     b.onResolve({ filter: /^three(\/|$)/ }, (args) => {
-      if (args.namespace === "shared-three" || args.importer.includes("node_modules")) return undefined;
+      if (args.namespace === "shared-three") return undefined;
+      const user = THREE_USERS.find((pkg) => args.importer.includes(join("node_modules", pkg) + "/"));
+      if (args.importer.includes("node_modules") && !(user && args.path === "three")) return undefined;
       if (!(args.path in exportNames)) {
         return { errors: [{ text: `${args.path}: add it to ADDONS in build.mjs (one three.js per page)` }] };
       }
@@ -130,16 +145,19 @@ await build({
   metafile: false,
   logLevel: "warning",
   banner: {
-    js: `/* trinormal mesh view. Bundles three.js ${three.version} (MIT licence, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
+    js: `/* trinormal mesh view. Bundles three.js ${three.version} and three-mesh-bvh ${bvh.version} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
   },
 });
 
-const licence = readFileSync(join(here, "node_modules/three/LICENSE"), "utf8").replace(/\r\n/g, "\n");
+const licenceOf = (pkg) => readFileSync(join(here, "node_modules", pkg, "LICENSE"), "utf8").replace(/\r\n/g, "\n").trimEnd();
 writeFileSync(
   join(out, "THIRD_PARTY_LICENSES.txt"),
   "explorer.js and mesh-view.js bundle the following third-party software.\n\n" +
     `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
-    licence.trimEnd() +
+    licenceOf("three") +
+    "\n\n" +
+    `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", in mesh-view.js only), MIT licence:\n\n` +
+    licenceOf("three-mesh-bvh") +
     "\n",
 );
 console.log(`built ${join(out, "explorer.js")} and mesh-view.js with three ${three.version}`);

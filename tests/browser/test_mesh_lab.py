@@ -1,5 +1,8 @@
 """The mesh view in a real JupyterLab: it renders, a click on a face shows its exact normal.
 
+A face's number typed in the view's box, and its "Next face to flip" button, pressed with the
+keyboard, get the kernel's readout too.
+
 The run's shared JupyterLab (the ``lab`` fixture in conftest.py, from the wheel's fresh venv)
 opens a notebook that shows the triangle explorer and the mesh view of the shipped damaged
 ball on one page, runs it with the Run menu as a student would, and clicks the model. The
@@ -83,6 +86,31 @@ def test_the_mesh_view_renders_and_a_click_shows_the_exact_normal(lab: Lab, page
     assert "NaN" not in text
     # the middle of the first view is the damaged patch: the face is one to flip
     assert "fix_winding flips this face" in text, text
+
+    # the keyboard's way: a face number typed in the labelled box, then Enter
+    typed = 0 if face != 0 else 1
+    number = root.get_by_label(re.compile(r"^Face number"))
+    number.fill(str(typed))
+    number.press("Enter")
+    page.wait_for_function(
+        "([p, f]) => p.innerText.startsWith(`Face ${f}:`)",
+        arg=[panel.element_handle(), typed],
+        timeout=30_000,
+    )
+    corners = model.faces[typed]
+    expected = triangle_normal(*(model.vertices[i].tolist() for i in corners)).format(4)
+    assert expected["normal"] in panel.inner_text()
+    # and "Next face to flip", pressed with the keyboard, picks the first face to flip after it
+    to_flip = mesh.check(model.vertices, model.faces).faces_to_flip.tolist()
+    following = min([f for f in to_flip if f > typed] or to_flip)  # the list goes round
+    root.get_by_role("button", name="Next face to flip").press("Enter")
+    page.wait_for_function(
+        "([p, f]) => p.innerText.startsWith(`Face ${f}:`)",
+        arg=[panel.element_handle(), int(following)],
+        timeout=30_000,
+    )
+    assert "fix_winding flips this face" in panel.inner_text()
+    face = int(following)
 
     # the kernel holds the same selection
     run_cell(page, 2)

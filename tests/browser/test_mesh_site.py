@@ -287,3 +287,97 @@ def test_a_report_reads_well_on_a_phone_in_both_schemes(page, server, traffic):
     canvas = page.locator("#tn-mesh-view canvas").bounding_box()
     assert canvas and canvas["width"] <= 360 and canvas["height"] >= 200
     assert not traffic.problems()
+
+
+# --------------------------------------------------------------------------- a face's readout
+
+
+def python_readout(name: str, face: int) -> list[str]:
+    """Python's readout of a face of an example (face_selection), as the page words it."""
+    from trinormal.mesh import check, parse_mesh
+    from trinormal.mesh.selection import PRECISION, SELECTION, face_selection
+
+    m = parse_mesh(example_file(name), name.rsplit(".", 1)[-1], name)
+    sel = face_selection(m.vertices, m.faces, face, PRECISION, check(m.vertices, m.faces))
+    lines = [sel["title"]]
+    for label, value, role in sel["rows"]:
+        if role == "flipped":  # Python names its function, the page its button
+            value = SELECTION["flipped"].format(fix="Fix winding")
+        lines += [label, value]
+    return lines
+
+
+def readout(page) -> list[str]:
+    panel = page.locator("#tn-mesh-view .tnm-pick")
+    title = panel.locator(".tnm-pick-title").inner_text()
+    return [title, *panel.locator("dt, dd").all_inner_texts()]
+
+
+def test_a_click_shows_the_faces_exact_readout_as_python_writes_it(page, server, traffic):
+    """The face under the pointer, and its vertices, normal and area from the site's core."""
+    from trinormal.mesh import parse_mesh
+
+    name = EXAMPLES[1][0]
+    open_page(page, server)
+    page.locator("button[data-example]").nth(1).click()
+    assert reported(page)["n_faces"]
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    canvas = page.locator("#tn-mesh-view canvas")
+    canvas.scroll_into_view_if_needed()
+    box = canvas.bounding_box()
+    page.mouse.click(box["x"] + box["width"] * 0.45, box["y"] + box["height"] * 0.45)
+    root = page.locator("#tn-mesh-view .tnm-root")
+    page.wait_for_function("(r) => r.dataset.picked !== undefined", arg=root.element_handle())
+    face = int(root.get_attribute("data-picked"))
+    assert readout(page) == python_readout(name, face)
+    # the face picked is the one under the pointer: the point the ray met lies on it
+    m = parse_mesh(example_file(name), name.rsplit(".", 1)[-1], name)
+    a, b, c = m.vertices[m.faces[face]]
+    hit = np.array([float(x) for x in root.get_attribute("data-pick-point").split(",")])
+    n = np.cross(b - a, c - a)
+    assert abs(np.dot(hit - a, n)) <= 1e-5 * np.linalg.norm(n)
+    for p, q in ((a, b), (b, c), (c, a)):  # on the inner side of every edge
+        assert np.dot(np.cross(q - p, hit - p), n) >= -1e-5 * np.dot(n, n)
+    assert not traffic.problems()
+
+
+def test_the_keyboard_picks_a_face_by_number_or_the_next_to_flip(page, server, traffic):
+    """A labelled face-number box and buttons through the faces to flip, with focus shown and
+    the readout in a live region; a number with no face gets Python's message."""
+    from trinormal.mesh import check, parse_mesh
+    from trinormal.mesh.selection import SELECTION
+
+    name = EXAMPLES[1][0]
+    m = parse_mesh(example_file(name), name.rsplit(".", 1)[-1], name)
+    to_flip = check(m.vertices, m.faces).faces_to_flip.tolist()
+    open_page(page, server)
+    page.locator("button[data-example]").nth(1).click()
+    reported(page)
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    box = page.get_by_label(f"Face number (0 to {len(m.faces) - 1})")
+    box.focus()
+    page.keyboard.type("7")
+    page.keyboard.press("Enter")
+    panel = page.locator("#tn-mesh-view .tnm-pick")
+    panel.wait_for(state="visible")
+    assert panel.get_attribute("aria-live") == "polite"
+    assert readout(page) == python_readout(name, 7)
+    # Tab to the buttons: the focus is drawn, and "Next face to flip" steps through the list
+    page.keyboard.press("Tab")  # Show face
+    page.keyboard.press("Tab")  # Previous face to flip
+    page.keyboard.press("Tab")  # Next face to flip
+    focused = page.evaluate(
+        "() => [document.activeElement.textContent, getComputedStyle(document.activeElement)"
+        ".outlineStyle, document.activeElement.matches(':focus-visible')]"
+    )
+    assert focused == ["Next face to flip", "solid", True], focused
+    page.keyboard.press("Enter")
+    after = [f for f in to_flip if f > 7]
+    first = min(after) if after else min(to_flip)  # the list goes round
+    assert readout(page) == python_readout(name, first)
+    assert box.input_value() == str(first)
+    box.fill(str(len(m.faces)))
+    box.press("Enter")
+    no_face = SELECTION["no_face"].format(face=len(m.faces), last=len(m.faces) - 1)
+    assert readout(page) == [no_face, SELECTION["problem_label"], no_face]
+    assert not traffic.problems()

@@ -34,12 +34,10 @@ except ModuleNotFoundError as exc:  # anywidget (the notebooks extra) or numpy
     raise missing_extra(exc, __name__) from exc
 
 from trinormal.colors import palette
-from trinormal.core import triangle_normal
-from trinormal.display import format_vector
 from trinormal.explorer.view import BUNDLE
-from trinormal.fields import fields_spec
 from trinormal.mesh.normals import face_normals, vertex_normals
 from trinormal.mesh.report import MeshReport, check
+from trinormal.mesh.selection import PRECISION, SELECTION, face_selection, selection_text
 from trinormal.validation import check_precision
 
 __all__ = ["MAX_ARROWS", "MESH_BUNDLE", "MeshView", "face_selection", "selection_text"]
@@ -49,9 +47,6 @@ MESH_BUNDLE = BUNDLE.with_name("mesh-view.js")
 
 #: Most face-normal arrows drawn by default: every face up to this many, a sample above.
 MAX_ARROWS = 2000
-
-#: The rows of the readout under the view, by key of `TriangleNormal.format`.
-_RESULT_ROWS = ("normal", "magnitude", "area", "unit_normal", "status")
 
 
 def _buffer(array: Any, dtype: Any) -> bytes:
@@ -77,107 +72,6 @@ def _edge_sides(faces: npt.NDArray[np.intp], edges: Any, n_vertices: int) -> npt
     found = side_key[order[at]] == edge_key
     out: npt.NDArray[np.intp] = np.unique(order[at[found]])
     return out
-
-
-def face_selection(
-    vertices: npt.ArrayLike,
-    faces: npt.ArrayLike,
-    face: int,
-    precision: int = 4,
-    report: MeshReport | None = None,
-) -> dict[str, Any]:
-    """Describe one face as the view shows it: its vertices, exact normal and area, as text.
-
-    The normal comes from [`trinormal.triangle_normal`][trinormal.core.triangle_normal] on
-    the face's three vertices as stored (the corners in the face's winding order as A, B
-    and C), and every number is printed by the package's formatter.
-
-    Parameters
-    ----------
-    vertices : array_like, shape (V, 3)
-    faces : array_like of int, shape (F, 3)
-    face : int
-        The face, 0 to F - 1.
-    precision : int, default 4
-        Decimal places, 0 to 15.
-    report : MeshReport, optional
-        The mesh's report; with it, a face to flip says so.
-
-    Returns
-    -------
-    dict
-        ``{"face": int, "title": str, "rows": [[label, value, role], ...]}``.
-
-    Raises
-    ------
-    ValueError
-        A face number outside 0 to F - 1.
-
-    Examples
-    --------
-    >>> from trinormal.mesh import cube
-    >>> v, f = cube()
-    >>> sel = face_selection(v, f, 0, precision=2)
-    >>> sel["title"]
-    'Face 0: vertices 0, 2, 3 as A, B, C'
-    >>> for label, value, role in sel["rows"]:
-    ...     print(f"{label}: {value}")
-    A = vertex 0: (-1.00, -1.00, -1.00)
-    B = vertex 2: (-1.00, 1.00, -1.00)
-    C = vertex 3: (1.00, 1.00, -1.00)
-    N = U × V: (0.00, 0.00, -4.00)
-    |N|: 4.00
-    area = |N|/2: 2.00
-    unit normal: (0.00, 0.00, -1.00)
-    status: A proper triangle: the unit normal is defined.
-    """
-    v = np.asarray(vertices, dtype=float)
-    f = np.asarray(faces)
-    precision = check_precision(precision)
-    if isinstance(face, bool) or not isinstance(face, (int, np.integer)):
-        raise ValueError(f"the face must be a whole number, got {face!r}")
-    if not 0 <= int(face) < len(f):
-        raise ValueError(f"face {face} does not exist: the mesh has faces 0 to {len(f) - 1}")
-    face = int(face)
-    corners = [int(i) for i in f[face]]
-    points = [(float(v[i][0]), float(v[i][1]), float(v[i][2])) for i in corners]
-    result = triangle_normal(points[0], points[1], points[2])
-    text = result.format(precision)
-    labels = {spec["key"]: spec["label"] for spec in fields_spec()}
-    rows: list[list[str]] = [
-        [f"{name} = vertex {i}", format_vector(p, precision), name]
-        for name, i, p in zip("ABC", corners, points, strict=True)
-    ]
-    rows += [
-        [labels.get(key, key), text[key], "N" if key == "normal" else ""] for key in _RESULT_ROWS
-    ]
-    if report is not None and face in set(report.faces_to_flip.tolist()):
-        rows.append(
-            ["winding", "turned against its neighbours: fix_winding flips this face", "flipped"]
-        )
-    return {
-        "face": face,
-        "title": f"Face {face}: vertices {', '.join(map(str, corners))} as A, B, C",
-        "rows": rows,
-    }
-
-
-def selection_text(selection: dict[str, Any]) -> str:
-    """Write a face's readout (from `face_selection`) as plain text, one row a line.
-
-    Examples
-    --------
-    >>> from trinormal.mesh import cube
-    >>> print(selection_text(face_selection(*cube(), 0, precision=1)))  # doctest: +ELLIPSIS
-    Face 0: vertices 0, 2, 3 as A, B, C
-      A = vertex 0: (-1.0, -1.0, -1.0)
-    ...
-      area = |N|/2: 2.0
-    ...
-    """
-    lines = [str(selection.get("title", ""))]
-    lines += [f"  {label}: {value}" for label, value, _role in selection.get("rows", [])]
-    return "\n".join(lines)
 
 
 class MeshView(anywidget.AnyWidget):
@@ -250,7 +144,7 @@ class MeshView(anywidget.AnyWidget):
     show_vertex_normals = traitlets.Bool(False).tag(sync=True)
     picked = traitlets.Int(-1).tag(sync=True)
     selection = traitlets.Dict().tag(sync=True)
-    precision = traitlets.Int(4).tag(sync=True)
+    precision = traitlets.Int(PRECISION).tag(sync=True)
 
     def __init__(
         self,
@@ -258,7 +152,7 @@ class MeshView(anywidget.AnyWidget):
         faces: npt.ArrayLike | None = None,
         *,
         report: MeshReport | None = None,
-        precision: int = 4,
+        precision: int = PRECISION,
         max_arrows: int = MAX_ARROWS,
         **kwargs: Any,
     ) -> None:
@@ -412,7 +306,7 @@ class MeshView(anywidget.AnyWidget):
             self.selection = {
                 "face": face,
                 "title": str(error),
-                "rows": [["problem", str(error), ""]],
+                "rows": [[SELECTION["problem_label"], str(error), ""]],
             }
 
     @traitlets.validate("precision")

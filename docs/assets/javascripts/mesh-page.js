@@ -3,7 +3,10 @@
  * (mesh-worker.js, running trinormal-mesh.js) reads it, checks it and fixes its winding, with a
  * progress bar; the page shows the report (rows and sentences from the package, through
  * TRINORMAL_CONSTANTS.mesh), the model in 3D (assets/explorer/mesh-view.js) and offers the
- * repaired file for download. Nothing leaves the browser.
+ * repaired file for download. A face picked in the view (a click, or its number typed) is
+ * answered here as the kernel answers it in Jupyter: its three vertices, its exact normal and
+ * its area from the calculator's core (TrinormalCore), with the package's wording
+ * (TRINORMAL_CONSTANTS.mesh.selection, trinormal.mesh.selection). Nothing leaves the browser.
  */
 const WORKER = new URL("mesh-worker.js", import.meta.url).href;
 const VIEW = new URL("../explorer/mesh-view.js", import.meta.url).href;
@@ -79,6 +82,63 @@ function createModel(initial) {
   };
 }
 
+/** A double's exact value as [numerator, denominator] (BigInt, lowest terms, power-of-two denominator). */
+function exactRatio(x) {
+  if (x === 0) return [0n, 1n];
+  const bits = new DataView(new ArrayBuffer(8));
+  bits.setFloat64(0, x);
+  const hi = bits.getUint32(0);
+  const exponent = (hi >>> 20) & 0x7ff;
+  let n = (BigInt(hi & 0xfffff) << 32n) | BigInt(bits.getUint32(4));
+  let power = -1074; // a subnormal number: n * 2^-1074
+  if (exponent) {
+    n |= 1n << 52n;
+    power = exponent - 1075;
+  }
+  while (power < 0 && !(n & 1n)) {
+    n >>= 1n;
+    power++;
+  }
+  if (hi >>> 31) n = -n;
+  return power >= 0 ? [n << BigInt(power), 1n] : [n, 1n << BigInt(-power)];
+}
+
+function fill(template, values) {
+  return template.replace(/\{(\w+)\}/g, (m, name) => (values[name] !== undefined ? String(values[name]) : m));
+}
+
+/**
+ * The readout of one face, as trinormal.mesh.selection.face_selection writes it in Python: the
+ * corners' coordinates (their exact binary values), then the calculator's exact results.
+ */
+function faceSelection(res, face) {
+  const sel = constants().mesh.selection;
+  const t = sel.templates;
+  const core = window.TrinormalCore;
+  const nf = res.faces.length / 3;
+  const problem = (text) => ({ face, title: text, rows: [[t.problem_label, text, ""]] });
+  if (!Number.isInteger(face) || face < 0 || face >= nf) return problem(fill(t.no_face, { face, last: nf - 1 }));
+  const corners = [0, 1, 2].map((k) => res.faces[3 * face + k]);
+  const ratios = corners.map((v) => [0, 1, 2].map((k) => exactRatio(res.positions[3 * v + k])));
+  const texts = ratios.map((point) => point.map(([n, d]) => (d === 1n ? String(n) : `${n}/${d}`)));
+  const result = core.compute(texts[0], texts[1], texts[2], "ABC", sel.precision);
+  if (!result.ok) return problem(result.status);
+  const labels = Object.fromEntries((constants().fields || []).map((f) => [f.key, f.label]));
+  const rows = corners.map((v, i) => [
+    fill(t.vertex, { name: "ABC"[i], index: v }),
+    "(" + ratios[i].map(([n, d]) => core.formatSurd(n < 0n, n * n, d * d, sel.precision, false)).join(", ") + ")",
+    "ABC"[i],
+  ]);
+  for (const key of sel.rows) {
+    rows.push([labels[key] || key, key === "status" ? result.status : result.out[key], key === "normal" ? "N" : ""]);
+  }
+  if (res.flipped.includes(face)) {
+    const fix = ($("tn-mesh-fix").textContent || "").trim();
+    rows.push([t.flipped_label, fill(t.flipped, { fix }), "flipped"]);
+  }
+  return { face, title: fill(t.title, { face, a: corners[0], b: corners[1], c: corners[2] }), rows };
+}
+
 function cell(tag, text, attrs = {}) {
   const e = document.createElement(tag);
   if (text !== undefined) e.textContent = text;
@@ -115,7 +175,13 @@ function mount(root) {
   let fixedFile = null;
   let busy = false;
   let view = null;
-  const model = createModel({ palette: constants().palette || {}, mesh: null });
+  const model = createModel({ palette: constants().palette || {}, mesh: null, picked: -1, selection: {} });
+  // a face picked in the view: answered as the kernel answers it in Jupyter
+  model.on("change:picked", () => {
+    const face = model.get("picked");
+    const shown = model.get("mesh");
+    model.set("selection", face === -1 || !shown ? {} : faceSelection(shown, face));
+  });
 
   function setStatus(text, state = "ok") {
     status.textContent = text;
@@ -193,6 +259,7 @@ function mount(root) {
       return;
     }
     delete host.dataset.asked;
+    model.set("picked", -1);
     model.set("mesh", {
       positions: res.positions,
       faces: res.faces,

@@ -18,19 +18,25 @@
  *     drawn as short arrows from each face's centre (degenerate faces have zero rows);
  *   vertex_normals (Float32, 3 per vertex, from the kernel): smooth shading and vertex arrows;
  *   cull, smooth, show_face_normals, show_vertex_normals (bool): the toolbar's toggles;
- *   picked (int): the view writes the face clicked (-1: none), and the kernel answers with
- *   selection ({title, rows: [[label, value, role]]}: the face's vertices, exact normal and
+ *   picked (int): the view writes the face clicked or typed (-1: none), and the kernel answers
+ *   with selection ({title, rows: [[label, value, role]]}: the face's vertices, exact normal and
  *   area, as the package's formatter prints them), shown under the view.
- * A host without these keys (the site) gets the toggles as local state, three.js's own vertex
- * normals for smooth shading, and no arrows.
+ * A host without the toggles' keys (the site) gets them as local state, three.js's own vertex
+ * normals for smooth shading, and no arrows. The site's page answers "picked" with "selection"
+ * itself, from its own exact core (docs/assets/javascripts/mesh-page.js).
+ *
+ * Speed (benchmarks/bench_mesh_view.py, 200 000 faces): the surface is one indexed mesh drawn in
+ * one pass, its two sides coloured in the fragment shader (gl_FrontFacing), and a pick casts
+ * the ray against a bounding volume hierarchy (three-mesh-bvh, built once per model, with the
+ * faces kept in file order), not against every face.
  */
 import {
   AmbientLight,
-  BackSide,
   BufferAttribute,
   BufferGeometry,
   Color,
   DirectionalLight,
+  DoubleSide,
   FrontSide,
   LineBasicMaterial,
   LineSegments,
@@ -43,6 +49,7 @@ import {
 import { LineMaterial } from "three/addons/lines/LineMaterial.js";
 import { LineSegments2 } from "three/addons/lines/LineSegments2.js";
 import { LineSegmentsGeometry } from "three/addons/lines/LineSegmentsGeometry.js";
+import { MeshBVH } from "three-mesh-bvh";
 import { createStage, DEFAULT_DIRECTION } from "../scene.js";
 import { isDark, roleColor, surface, watchTheme } from "../theme.js";
 import CSS from "./style.css";
@@ -199,11 +206,33 @@ function typicalEdge(pos, faces) {
   return lengths.length ? lengths[lengths.length >> 1] : 0.1;
 }
 
+/**
+ * The surface's material: Lambert, both sides in one draw, the back side in its own colour
+ * (gl_FrontFacing picks it per pixel). Drawing the model once instead of once per side halves
+ * the vertex and triangle work of every frame. `side` becomes FrontSide to cull back faces.
+ */
+function twoSidedMaterial() {
+  const material = new MeshLambertMaterial({ side: DoubleSide, flatShading: true, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
+  const backColor = { value: new Color() };
+  material.onBeforeCompile = (shader) => {
+    const line = "vec4 diffuseColor = vec4( diffuse, opacity );";
+    if (!shader.fragmentShader.includes(line)) throw new Error("mesh view: three.js's Lambert shader changed");
+    shader.uniforms.backDiffuse = backColor;
+    shader.fragmentShader =
+      "uniform vec3 backDiffuse;\n" + shader.fragmentShader.replace(line, "vec4 diffuseColor = vec4( gl_FrontFacing ? diffuse : backDiffuse, opacity );");
+  };
+  material.customProgramCacheKey = () => "trinormal-two-sided";
+  return { material, backColor: backColor.value };
+}
+
 /** Most vertex-normal arrows drawn (a sample of the vertices on bigger models). */
 const MAX_VERTEX_ARROWS = 1500;
 
+let views = 0; // views made on this page: unique ids for their labels
+
 function render({ model, el }) {
   const doc = el.ownerDocument || document;
+  const canPick = model.get("picked") !== undefined; // the host answers a picked face
   injectStyle(doc);
   const root = element("div", "tnm-root");
   const toolbar = element("div", "tnm-toolbar");
@@ -216,12 +245,27 @@ function render({ model, el }) {
     "tnm-hint",
     "Drag to turn the model, scroll or pinch to zoom. The side a face's normal points out of is " +
       "drawn in the front colour; a face you see in the back colour from outside is wound the " +
-      "other way." + (model.get("picked") === undefined ? "" : " Click a face to see its vertices, its exact normal and its area."),
+      "other way." + (canPick ? " Click a face, or type its number below, to see its vertices, its exact normal and its area." : ""),
   );
+  // the keyboard's way to pick a face: its number, or the faces to flip one after another
+  const keys = element("form", "tnm-keys");
+  keys.hidden = !canPick;
+  const faceId = `tnm-face-${++views}`;
+  const faceLabel = element("label", "tnm-face-label", "Face number");
+  faceLabel.htmlFor = faceId;
+  const faceInput = element("input", "tnm-face-input");
+  Object.assign(faceInput, { id: faceId, type: "number", min: "0", step: "1", inputMode: "numeric", autocomplete: "off" });
+  const showFace = element("button", "tnm-button", "Show face");
+  showFace.type = "submit";
+  const prevFlip = element("button", "tnm-button", "Previous face to flip");
+  const nextFlip = element("button", "tnm-button", "Next face to flip");
+  prevFlip.type = nextFlip.type = "button";
+  keys.append(faceLabel, faceInput, showFace, prevFlip, nextFlip);
   const pickPanel = element("div", "tnm-pick");
   pickPanel.setAttribute("aria-live", "polite");
+  pickPanel.setAttribute("aria-atomic", "true");
   pickPanel.hidden = true;
-  root.append(toolbar, stageEl, legend, pickPanel, hint);
+  root.append(toolbar, stageEl, legend, keys, pickPanel, hint);
   el.appendChild(root);
 
   let dark = isDark(doc);
@@ -240,8 +284,7 @@ function render({ model, el }) {
   stage.camera.add(light);
   scene.add(ambient, stage.camera);
 
-  const front = new MeshLambertMaterial({ side: FrontSide, flatShading: true, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
-  const back = new MeshLambertMaterial({ side: BackSide, flatShading: true, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 });
+  const { material: surfaceMaterial, backColor } = twoSidedMaterial();
   const lineMaterials = {
     flipped: new LineMaterial({ linewidth: 2.5 }),
     boundary: new LineMaterial({ linewidth: 4 }),
@@ -249,6 +292,8 @@ function render({ model, el }) {
   };
   let geometry = null;
   let meshes = [];
+  let bvh = null; // the faces' bounding volume hierarchy, for picking: built once per model
+  let bvhTimer = null; // cancels the BVH's scheduled build
   let lines = {};
   const arrowMaterials = { face: new LineBasicMaterial(), vertex: new LineBasicMaterial() };
   let arrows = {};
@@ -276,8 +321,8 @@ function render({ model, el }) {
     const s = surface(dark);
     root.classList.toggle("tnm-dark", dark);
     stage.setBackground(s.background);
-    front.color = new Color(roleColor(palette(), "front", dark));
-    back.color = new Color(roleColor(palette(), "back", dark));
+    surfaceMaterial.color = new Color(roleColor(palette(), "front", dark));
+    backColor.set(roleColor(palette(), "back", dark));
     for (const [role, m] of Object.entries(lineMaterials)) m.color = new Color(roleColor(palette(), role, dark));
     arrowMaterials.face.color = new Color(roleColor(palette(), "N", dark));
     arrowMaterials.vertex.color = new Color(s.text);
@@ -323,6 +368,8 @@ function render({ model, el }) {
       a.geometry.dispose();
     }
     if (geometry) geometry.dispose();
+    if (bvhTimer) bvhTimer();
+    bvh = bvhTimer = null;
     meshes = [];
     lines = {};
     arrows = {};
@@ -382,18 +429,22 @@ function render({ model, el }) {
   function applyFlags() {
     const cull = flag("cull");
     const smooth = flag("smooth");
-    if (meshes[1]) meshes[1].visible = !cull;
-    for (const m of [front, back]) {
-      if (m.flatShading === smooth) {
-        m.flatShading = !smooth;
-        m.needsUpdate = true;
-      }
+    const side = cull ? FrontSide : DoubleSide;
+    if (smooth && geometry && !geometry.getAttribute("normal")) geometry.computeVertexNormals();
+    if (surfaceMaterial.side !== side || surfaceMaterial.flatShading === smooth) {
+      surfaceMaterial.side = side;
+      surfaceMaterial.flatShading = !smooth;
+      surfaceMaterial.needsUpdate = true;
     }
     if (arrows.face) arrows.face.visible = flag("show_face_normals");
     if (arrows.vertex) arrows.vertex.visible = flag("show_vertex_normals");
     for (const [key, b] of Object.entries(buttons)) b.setAttribute("aria-pressed", String(flag(key)));
     faceButton.hidden = !arrows.face;
     vertexButton.hidden = !arrows.vertex;
+    const faces = current ? current.data.faces.length / 3 : 0;
+    keys.hidden = !canPick || !faces;
+    faceLabel.textContent = faces ? `Face number (0 to ${faces - 1})` : "Face number";
+    prevFlip.hidden = nextFlip.hidden = !(current && current.data.flipped && current.data.flipped.length);
     drawLegend();
     stage.requestRender();
   }
@@ -415,12 +466,19 @@ function render({ model, el }) {
     geometry.setIndex(new BufferAttribute(data.faces, 1));
     if (data.vertex_normals && data.vertex_normals.length === pos.length) {
       geometry.setAttribute("normal", new BufferAttribute(data.vertex_normals, 3));
-    } else {
-      geometry.computeVertexNormals(); // smooth shading on a host that sends no vertex normals
-    }
+    } // else three.js's own, made when smooth shading is first asked for (flat shading needs none)
     geometry.computeBoundingSphere();
-    meshes = [new Mesh(geometry, front), new Mesh(geometry, back)];
+    meshes = [new Mesh(geometry, surfaceMaterial)];
     scene.add(...meshes);
+    // the picking structure, built when the page is next idle after the first picture (or at
+    // the first pick, if that comes sooner)
+    const idle = globalThis.requestIdleCallback || ((cb) => setTimeout(cb, 200));
+    const cancelIdle = globalThis.cancelIdleCallback || clearTimeout;
+    const id = idle(() => {
+      bvhTimer = null;
+      faceTree();
+    }, { timeout: 3000 });
+    bvhTimer = () => cancelIdle(id);
     const sets = {
       flipped: data.flipped ? allSides(data.flipped) : new Int32Array(0),
       boundary: data.boundary || new Int32Array(0),
@@ -444,7 +502,7 @@ function render({ model, el }) {
     for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
     stage.framePoints(corners, true, startDirection(pos, data.faces, sets));
     drawArrows(data, pos);
-    current = { data, pos };
+    current = { data, pos, offset, scale };
     updateResolution();
     applyFlags();
     root.dataset.faces = String(data.faces.length / 3);
@@ -455,28 +513,72 @@ function render({ model, el }) {
   const raycaster = new Raycaster();
   const ndc = new Vector2();
   let down = null;
+  /** The faces' BVH; `indirect` keeps the index buffer (so face numbers) as the file has them. */
+  function faceTree() {
+    // leaves of ~32 faces: a build ~40 % faster than the default 10, a pick still well under 1 ms
+    if (!bvh && geometry) bvh = new MeshBVH(geometry, { indirect: true, targetLeafSize: 32 });
+    return bvh;
+  }
   function facePicked(clientX, clientY) {
-    if (!meshes.length) return -1;
+    if (!meshes.length || !faceTree()) return -1;
     const rect = stage.canvas.getBoundingClientRect();
     ndc.set(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
     raycaster.setFromCamera(ndc, stage.camera);
-    const hits = raycaster.intersectObjects(meshes.filter((m) => m.visible), false);
-    return hits.length ? hits[0].faceIndex : -1;
+    // the mesh is drawn untransformed: the world ray is the model's ray
+    const hit = bvh.raycastFirst(raycaster.ray, flag("cull") ? FrontSide : DoubleSide);
+    if (!hit) return -1;
+    // where the ray met the face, in the model's own coordinates (the tests check it is on it)
+    const { offset, scale } = current;
+    root.dataset.pickPoint = hit.point.toArray().map((x, k) => x / scale + offset[k]).join(",");
+    return hit.faceIndex;
   }
   function onDown(event) {
     down = event.button === 0 ? [event.clientX, event.clientY] : null;
   }
-  function onUp(event) {
-    if (!down || Math.hypot(event.clientX - down[0], event.clientY - down[1]) > 4) return;
-    down = null;
-    const face = facePicked(event.clientX, event.clientY);
-    if (face < 0) return;
+  function pick(face) {
     model.set("picked", face);
     model.save_changes();
     showPick();
   }
+  function onUp(event) {
+    if (!down || Math.hypot(event.clientX - down[0], event.clientY - down[1]) > 4) return;
+    down = null;
+    if (!canPick) return;
+    const face = facePicked(event.clientX, event.clientY);
+    if (face >= 0) pick(face);
+  }
   stage.canvas.addEventListener("pointerdown", onDown);
   stage.canvas.addEventListener("pointerup", onUp);
+  function pickTyped() {
+    const text = faceInput.value.trim();
+    if (!text || !faceInput.checkValidity()) {
+      faceInput.reportValidity();
+      return;
+    }
+    pick(Number(text)); // a face that does not exist gets the host's message
+  }
+  keys.addEventListener("submit", (event) => {
+    event.preventDefault();
+    pickTyped();
+  });
+  // Enter in the box, handled here: JupyterLab's notebook swallows the form's own submission
+  faceInput.addEventListener("keydown", (event) => {
+    if (event.key !== "Enter") return;
+    event.preventDefault();
+    pickTyped();
+  });
+  /** The next (step 1) or previous (-1) face to flip from the one picked, round the list. */
+  function stepFlipped(step) {
+    const list = current ? current.data.flipped : null;
+    if (!list || !list.length) return;
+    const at = model.get("picked");
+    let i = step > 0 ? list.findIndex((f) => f > at) : list.findLastIndex((f) => f < at);
+    if (i < 0) i = step > 0 ? 0 : list.length - 1;
+    faceInput.value = String(list[i]);
+    pick(list[i]);
+  }
+  prevFlip.addEventListener("click", () => stepFlipped(-1));
+  nextFlip.addEventListener("click", () => stepFlipped(1));
 
   /** Outline the picked face and show the kernel's answer for it. */
   function showPick() {
@@ -489,6 +591,7 @@ function render({ model, el }) {
       pickLine.renderOrder = 3;
       scene.add(pickLine);
       root.dataset.picked = String(face);
+      if (doc.activeElement !== faceInput) faceInput.value = String(face);
     } else {
       delete root.dataset.picked;
     }
@@ -559,8 +662,7 @@ function render({ model, el }) {
     observer.disconnect();
     stopTheme();
     clear();
-    front.dispose();
-    back.dispose();
+    surfaceMaterial.dispose();
     for (const m of Object.values(lineMaterials)) m.dispose();
     for (const m of Object.values(arrowMaterials)) m.dispose();
     pickMaterial.dispose();
