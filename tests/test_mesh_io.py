@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from trinormal import mesh
-from trinormal.mesh import MeshFileError
+from trinormal.mesh import MeshFileError, io
 
 DATA = Path(__file__).parent / "data" / "meshes"
 BAD = DATA / "bad"
@@ -151,6 +151,19 @@ def test_stl_minus_zero_is_zero_and_nearby_points_stay_apart():
     m = mesh.parse_mesh(pack_stl(corners), "stl")
     assert m.faces.tolist() == [[0, 1, 2], [0, 2, 3]]  # -0.0 is the vertex 0; 1+2**-20 is new
     assert len(m.vertices) == 4
+
+
+def test_stl_corners_merge_the_same_when_every_sort_key_collides(monkeypatch):
+    """The merge sorts by a mix of the bit patterns; equal keys of unequal points fall back."""
+    v, f = mesh.icosphere(2)
+    corners = v[f].reshape(-1, 3)
+    data = pack_stl(corners.reshape(-1, 3, 3))
+    want = mesh.parse_mesh(data, "stl")
+    monkeypatch.setattr(io, "_MIX", (0, 0, 0))  # every corner gets the key 0
+    got = mesh.parse_mesh(data, "stl")
+    assert got.faces.tolist() == want.faces.tolist()
+    assert got.vertices.tobytes() == want.vertices.tobytes()
+    assert len(got.vertices) == len(v)  # the sphere's vertices are float32 numbers apart
 
 
 def test_stl_and_obj_of_one_model_have_the_same_report(tmp_path):

@@ -518,7 +518,7 @@ def _read_stl(data: bytes, name: str) -> MeshData:
         (n,) = struct.unpack_from("<I", data, 80)
         if len(data) == 84 + 50 * n:  # a binary STL, even when its header starts with "solid"
             rec = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)
-            corners = rec["corners"].reshape(-1, 3).astype(np.float64)
+            corners = rec["corners"].reshape(-1, 3)  # float32, as stored: merged before widening
             if not np.isfinite(corners).all():
                 bad = int(np.flatnonzero(~np.isfinite(corners).all(axis=1))[0]) // 3
                 raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
@@ -572,31 +572,42 @@ def _read_stl_ascii(data: bytes, name: str) -> MeshData:
     return _merge_corners(arr, name, "ascii")
 
 
+#: Odd 64-bit multipliers that mix a corner's three bit patterns into one sort key.
+_MIX = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9)
+
+
 def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
-    """Corners with exactly equal coordinates become one vertex, numbered by first use."""
-    corners = corners + 0.0  # -0.0 becomes 0.0: equal numbers, one vertex
+    """Corners with exactly equal coordinates become one vertex, numbered by first use.
+
+    ``corners`` (3F, 3) holds float32 (binary STL) or float64 (ASCII) numbers;
+    they are compared as stored, by their bit patterns, and widened to float64
+    only once merged.
+    """
+    corners = corners + corners.dtype.type(0)  # -0.0 becomes 0.0: equal numbers, one vertex
     n = corners.shape[0]
     if n == 0:
         empty = np.empty((0, 3), np.intp)
         return MeshData(np.empty((0, 3)), empty, "stl", encoding, np.empty(0, np.intp), 0, name)
-    bits = np.ascontiguousarray(corners).view(np.uint64)
+    bits = corners.view(np.uint32 if corners.dtype == np.float32 else np.uint64)
+    x, y, z = (bits[:, k].astype(np.uint64) for k in range(3))
     # sort by a mix of the three bit patterns; equal rows get equal keys, and the rows
     # themselves are compared after the sort, so equality is exact, never a hash match
+    mx, my, mz = (np.uint64(m) for m in _MIX)
     with np.errstate(over="ignore"):
-        key = (
-            bits[:, 0] * np.uint64(0x9E3779B97F4A7C15)
-            ^ bits[:, 1] * np.uint64(0xC2B2AE3D27D4EB4F)
-            ^ bits[:, 2] * np.uint64(0x165667B19E3779F9)
-        )
+        key = x * mx
+        key ^= y * my
+        key ^= z * mz
     order = np.argsort(key, kind="stable")
-    sb, sk = bits[order], key[order]
-    same_key = sk[1:] == sk[:-1]
-    same_row = (sb[1:] == sb[:-1]).all(axis=1)
-    if (same_key & ~same_row).any():  # two different points share a key: sort the rows
-        order = np.lexsort((bits[:, 2], bits[:, 1], bits[:, 0]))
-        sb = bits[order]
-        same_row = (sb[1:] == sb[:-1]).all(axis=1)
-    new = np.concatenate([[True], ~same_row])
+    sx, sy, sz = x[order], y[order], z[order]
+    same_row = (sx[1:] == sx[:-1]) & (sy[1:] == sy[:-1]) & (sz[1:] == sz[:-1])
+    sk = key[order]
+    if ((sk[1:] == sk[:-1]) & ~same_row).any():  # two different points share a key: sort rows
+        order = np.lexsort((z, y, x))
+        sx, sy, sz = x[order], y[order], z[order]
+        same_row = (sx[1:] == sx[:-1]) & (sy[1:] == sy[:-1]) & (sz[1:] == sz[:-1])
+    new = np.empty(n, dtype=bool)
+    new[0] = True
+    np.logical_not(same_row, out=new[1:])
     group = np.cumsum(new) - 1  # group of each sorted corner
     first = order[new]  # both sorts are stable: the first corner of each group in file order
     rank = np.empty(first.size, dtype=np.intp)

@@ -55,21 +55,19 @@ _LO = 2.0**-900
 class _Block:
     """Scratch arrays for one block of ``n`` faces, reused block after block.
 
-    Every array is laid out coordinate by coordinate (one contiguous row of
-    ``n`` numbers per coordinate), so every arithmetic step runs on contiguous
-    memory.
+    The edges and the normal are laid out coordinate by coordinate (one
+    contiguous row of ``n`` numbers per coordinate), so the arithmetic runs on
+    contiguous memory.
 
     Attributes
     ----------
-    index : ndarray of int (3, n)
-        The block's vertex indices, corner by corner.
-    corners : ndarray (3, 3, n)
-        ``corners[c, k]``: coordinate k of corner c (A, B, C); the kernel then
-        turns B and C into the edges U = B − A and V = C − A in place.
+    gathered : ndarray (3 n,)
+        One coordinate of the block's corners, face by face (A, B, C of the
+        first face, then of the second, …): a take with the faces' own indices.
+    edges : ndarray (2, 3, n)
+        ``edges[0, k]``, ``edges[1, k]``: coordinate k of U = B − A and V = C − A.
     normal : ndarray (3, n)
         N = U × V.
-    products : ndarray (3, n)
-        Component-wise products (N·N, U·V, U·U) before they are summed.
     norm : ndarray (n,)
         |N|², then |N|.
     dot : ndarray (n,)
@@ -77,26 +75,27 @@ class _Block:
     bound : ndarray (n,)
         |U|²|V|², then tol²|U|²|V|² (the degeneracy bound), then |U|² − U·V.
     temp : ndarray (n,)
-        One product at a time.
+        One product at a time (sums of products are added one term at a time).
     in_range, degenerate : ndarray of bool (n,)
         Rows the fast arithmetic handles; rows whose sine is at most tol.
     """
 
-    _LAST = ("index", "normal", "products")  # 2-D: cut along the last axis
+    _LAST = ("normal",)  # 2-D: cut along the last axis
     _ROWS = ("norm", "dot", "bound", "temp", "in_range", "degenerate")
 
     def __init__(self, n: int) -> None:
         e = np.empty
-        self.index = e((3, n), dtype=np.intp)
-        self.corners = e((3, 3, n))
-        self.normal, self.products = e((3, n)), e((3, n))
+        self.gathered = e(3 * n)
+        self.edges = e((2, 3, n))
+        self.normal = e((3, n))
         self.norm, self.dot, self.bound, self.temp = e(n), e(n), e(n), e(n)
         self.in_range, self.degenerate = e(n, dtype=bool), e(n, dtype=bool)
 
     def view(self, n: int) -> _Block:
         """Return the first ``n`` faces of every scratch array (for the last, shorter block)."""
         out = object.__new__(_Block)
-        out.corners = self.corners[:, :, :n]
+        out.gathered = self.gathered[: 3 * n]
+        out.edges = self.edges[:, :, :n]
         for name in self._LAST:
             setattr(out, name, getattr(self, name)[:, :n])
         for name in self._ROWS:
@@ -195,19 +194,21 @@ def _face_block(
     mul, sub, add = np.multiply, np.subtract, np.add
     unit_out, deg_out, mag_out, angles_out = out.unit, out.degenerate, out.magnitude, out.angles
     with np.errstate(all="ignore"):
-        np.copyto(w.index, f[s:e].T)
-        if w.index.min() < 0 or w.index.max() >= nv:
+        index = f[s:e].reshape(-1)  # the faces' own memory: A, B, C of each face in turn
+        # one test for both ends: a negative index, read as unsigned, is beyond any count
+        if index.view(np.uintp).max() >= nv:
             _raise_range_error(f, nv)
         # short local names for the block's arrays (see _Block): the kernel reads as formulas
-        g, n, sq, ss = w.corners, w.normal, w.products, w.norm
+        g, n, ss = w.gathered, w.normal, w.norm
         d, q, t = w.dot, w.bound, w.temp
-        for c in range(3):  # gather: one contiguous take per corner and coordinate
-            for k in range(3):
-                np.take(columns[k], w.index[c], out=g[c, k], mode="clip")
-        sub(g[1], g[0], out=g[1])  # U = B - A
-        sub(g[2], g[0], out=g[2])  # V = C - A
-        ux, uy, uz = g[1]
-        vx, vy, vz = g[2]
+        u, v = w.edges
+        corner = g.reshape(-1, 3)  # corner[i, c]: this coordinate of corner c of face i
+        for k in range(3):  # gather one coordinate of every corner, then its two edges
+            np.take(columns[k], index, out=g, mode="clip")
+            sub(corner[:, 1], corner[:, 0], out=u[k])  # U = B - A
+            sub(corner[:, 2], corner[:, 0], out=v[k])  # V = C - A
+        ux, uy, uz = u
+        vx, vy, vz = v
         # N = U × V
         mul(uy, vz, out=n[0])
         mul(uz, vy, out=t)
@@ -218,13 +219,17 @@ def _face_block(
         mul(ux, vy, out=n[2])
         mul(uy, vx, out=t)
         sub(n[2], t, out=n[2])
-        # |N|² and U·V
-        mul(n, n, out=sq)
-        add(sq[0], sq[1], out=ss)
-        add(ss, sq[2], out=ss)
-        mul(g[1], g[2], out=sq)
-        add(sq[0], sq[1], out=d)
-        add(d, sq[2], out=d)
+        # |N|² and U·V, summed x, y, z in turn
+        mul(n[0], n[0], out=ss)
+        mul(n[1], n[1], out=t)
+        add(ss, t, out=ss)
+        mul(n[2], n[2], out=t)
+        add(ss, t, out=ss)
+        mul(ux, vx, out=d)
+        mul(uy, vy, out=t)
+        add(d, t, out=d)
+        mul(uz, vz, out=t)
+        add(d, t, out=d)
         # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
         mul(d, d, out=q)
         add(q, ss, out=q)
@@ -246,9 +251,11 @@ def _face_block(
             # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
             ang = angles_out[s:e]
             np.arctan2(ss, d, out=ang[:, 0])
-            mul(g[1], g[1], out=sq)
-            add(sq[0], sq[1], out=q)
-            add(q, sq[2], out=q)
+            mul(ux, ux, out=q)
+            mul(uy, uy, out=t)
+            add(q, t, out=q)
+            mul(uz, uz, out=t)
+            add(q, t, out=q)
             sub(q, d, out=q)
             np.arctan2(ss, q, out=ang[:, 1])
             add(ang[:, 0], ang[:, 1], out=t)
