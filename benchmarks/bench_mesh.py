@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import importlib.util
 import logging
+import os
 import platform
 import time
 from collections.abc import Callable
@@ -130,6 +131,8 @@ def main() -> None:
         f"Python {platform.python_version()}"
     )
     print(f"machine: {platform.machine()}, block of {mesh.normals._BLOCK} faces")
+    load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
+    print(f"load average at the start (1, 5, 15 min): {load}")
     bandwidth = copy_bandwidth()
     print(f"measured copy bandwidth: {bandwidth / 1e9:.2f} GB/s (read + write)")
     v, f = mesh.terrain(GRID, GRID)

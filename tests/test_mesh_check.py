@@ -543,3 +543,34 @@ def test_huge_vertex_numbers_take_the_unpacked_sorts(vf):
         assert (mesh.non_manifold_edges(g) == mesh.non_manifold_edges(f) + offset).all()
         assert (mesh.non_manifold_vertices(g) == mesh.non_manifold_vertices(f) + offset).all()
         assert (mesh.connected_components(g) == mesh.connected_components(f)).all()
+
+
+def _pieces_by_python(n: int, a: list[int], b: list[int]) -> list[int]:
+    """Connected pieces by a plain union-find, numbered by each piece's smallest node."""
+    root = list(range(n))
+
+    def find(x: int) -> int:
+        while root[x] != x:
+            x = root[x]
+        return x
+
+    for i, j in zip(a, b, strict=True):
+        ri, rj = find(i), find(j)
+        root[max(ri, rj)] = min(ri, rj)
+    number: dict[int, int] = {}
+    return [number.setdefault(find(x), len(number)) for x in range(n)]
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_pieces_of_random_graphs_match_a_plain_union_find(seed):
+    from trinormal.mesh.topology import _components
+
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 400))
+    m = int(rng.integers(0, 2 * n))
+    a, b = rng.integers(0, n, m), rng.integers(0, n, m)
+    if seed % 4 == 0:  # long chains: a path numbered backwards, the worst case for hooking
+        a = np.arange(n - 1)[::-1].copy()
+        b = a + 1
+    got = _components(n, a, b)
+    assert got.tolist() == _pieces_by_python(n, a.tolist(), b.tolist())

@@ -56,25 +56,35 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
     """Label the connected pieces of the graph on nodes ``0..n-1`` with edges ``a[i]–b[i]``.
 
     Labels are 0, 1, 2, … in the order of each piece's smallest node. Pure
-    numpy: every root is hooked to the smallest root it touches, then every
-    node is pointed straight at its root, until no edge joins two roots; a
-    handful of rounds on a mesh.
+    numpy, in rounds: every root is hooked to the smallest root it touches;
+    the roots just hooked follow their chains (each step halves them), and
+    then every node, which pointed at a root, takes that root's root; edges
+    inside one piece are dropped. A handful of rounds on a mesh.
     """
     parent = np.arange(n, dtype=np.intp)
     a = np.asarray(a, dtype=np.intp)
     b = np.asarray(b, dtype=np.intp)
+    ra, rb = a, b  # the roots of each edge's ends: at first every node is its own
+    hooked_mask = np.zeros(n, dtype=bool)
     while a.size:
-        ra, rb = parent[a], parent[b]
         differ = ra != rb
-        if not differ.any():
-            break
-        a, b, ra, rb = a[differ], b[differ], ra[differ], rb[differ]
-        np.minimum.at(parent, np.maximum(ra, rb), np.minimum(ra, rb))
-        while True:  # every node straight to its root (labels only decrease: no cycles)
-            up = parent[parent]
-            if np.array_equal(up, parent):
+        if not differ.all():
+            if not differ.any():
                 break
-            parent = up
+            a, b, ra, rb = a[differ], b[differ], ra[differ], rb[differ]
+        high = np.maximum(ra, rb)
+        np.minimum.at(parent, high, np.minimum(ra, rb))  # labels only decrease: no cycles
+        hooked_mask[high] = True
+        hooked = np.flatnonzero(hooked_mask)
+        hooked_mask[hooked] = False
+        top = parent[hooked]
+        while True:
+            up = parent[top]
+            if np.array_equal(up, top):
+                break
+            parent[hooked] = top = up
+        parent = parent[parent]
+        ra, rb = parent[a], parent[b]
     # every root is the smallest node of its piece: number the roots in order
     is_root = parent == np.arange(n)
     out: IntArray = (np.cumsum(is_root) - 1)[parent].astype(np.intp)
