@@ -186,6 +186,14 @@ class _Outputs:
     angles: FloatArray | None
 
 
+def _dot(x: FloatArray, y: FloatArray, out: FloatArray, temp: FloatArray) -> None:
+    """Write x · y of (3, n) rows into ``out``, summed x, y, z in turn (``temp``: scratch)."""
+    np.multiply(x[0], y[0], out=out)
+    for k in (1, 2):
+        np.multiply(x[k], y[k], out=temp)
+        np.add(out, temp, out=out)
+
+
 def _face_block(
     w: _Block, columns: FloatArray, f: IntArray, s: int, e: int, tol2: float, out: _Outputs
 ) -> IntArray | None:
@@ -219,17 +227,8 @@ def _face_block(
         mul(ux, vy, out=n[2])
         mul(uy, vx, out=t)
         sub(n[2], t, out=n[2])
-        # |N|² and U·V, summed x, y, z in turn
-        mul(n[0], n[0], out=ss)
-        mul(n[1], n[1], out=t)
-        add(ss, t, out=ss)
-        mul(n[2], n[2], out=t)
-        add(ss, t, out=ss)
-        mul(ux, vx, out=d)
-        mul(uy, vy, out=t)
-        add(d, t, out=d)
-        mul(uz, vz, out=t)
-        add(d, t, out=d)
+        _dot(n, n, ss, t)  # |N|²
+        _dot(u, v, d, t)  # U·V
         # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
         mul(d, d, out=q)
         add(q, ss, out=q)
@@ -251,11 +250,7 @@ def _face_block(
             # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
             ang = angles_out[s:e]
             np.arctan2(ss, d, out=ang[:, 0])
-            mul(ux, ux, out=q)
-            mul(uy, uy, out=t)
-            add(q, t, out=q)
-            mul(uz, uz, out=t)
-            add(q, t, out=q)
+            _dot(u, u, q, t)  # |U|²
             sub(q, d, out=q)
             np.arctan2(ss, q, out=ang[:, 1])
             add(ang[:, 0], ang[:, 1], out=t)
