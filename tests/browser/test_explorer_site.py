@@ -107,6 +107,8 @@ def test_the_calculator_has_a_webgl_view_served_from_the_site(view, traffic):
     for name in ("Reset the camera", "View along the x axis", "View along the y axis"):
         assert name in names
     assert "View along the z axis" in names
+    # the first picture frames the triangle (the Reset and new-triangle cases are below)
+    assert_framed(view)
 
 
 def test_orbiting_changes_the_picture_but_not_the_numbers(view):
@@ -272,6 +274,10 @@ def test_the_views_order_button_flips_the_calculator(view):
     assert button.inner_text() == "⇄ A→C→B"
     assert outputs(view) == python_outputs(inputs(view), winding="ACB")
     assert query(view)["w"] == ["ACB"]
+    # turned over, N points the other way: Reset frames the triangle with N's head in view
+    view.get_by_role("button", name="Reset the camera").click()
+    settle(view)
+    assert_framed(view)
     # and the form's own flip turns the view back
     view.click("#tn-flip")
     assert button.inner_text() == "⇄ A→B→C"
@@ -392,6 +398,8 @@ def assert_framed(page) -> dict[str, list[float]]:
         (("0.3", "0.1", "0.2"), ("0.1", "0.4", "0"), ("0", "0", "0.3")),
         (("3", "3", "3"), ("3.5", "3", "3"), ("3", "3.5", "3.2")),  # far from the origin
         (("-4", "4", "1"), ("-3", "4.5", "1"), ("-3.6", "3.4", "2")),
+        (("-1200", "300", "0"), ("4100", "900", "-800"), ("2500", "3700", "1500")),  # huge
+        (("1e6", "1e6", "1e6"), ("1000400", "1e6", "1e6"), ("1e6", "1000300", "1000200")),
     ],
 )
 def test_the_camera_frames_a_new_triangle_and_a_drag_never_moves_it(view, triangle):

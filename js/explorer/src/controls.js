@@ -63,12 +63,17 @@ export function createControls(parent, view) {
       box.addEventListener("input", () => {
         box.dataset.dirty = "true";
       });
-      box.addEventListener("change", () => {
+      // Enter sends what was typed (a box outside a form fires no change event on Enter),
+      // and so does leaving the box
+      const send = () => {
+        if (!box.dataset.dirty) return;
         delete box.dataset.dirty;
         view.edit({ [p + q]: box.value });
-      });
+      };
+      box.addEventListener("change", send);
       box.addEventListener("keydown", (event) => {
-        if (event.key === "Escape") {
+        if (event.key === "Enter") send();
+        else if (event.key === "Escape") {
           delete box.dataset.dirty;
           box.value = String((view.get(p) || [])[i] ?? "");
         }

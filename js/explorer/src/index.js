@@ -97,7 +97,8 @@ function render({ model, el }) {
   toolbar.setAttribute("role", "toolbar");
   toolbar.setAttribute("aria-label", "3D view");
   const stageEl = element("div", "tnx-stage");
-  // the banner and the legend sit under the view, never over a label or an arrow
+  // the banner, the refusal of an edit (`error`) and the legend sit under the view, never
+  // over a label or an arrow
   const message = element("p", "tnx-message");
   message.hidden = true;
   message.setAttribute("role", "status");
@@ -113,7 +114,7 @@ function render({ model, el }) {
       "Drag A, B or C to move a point, or Tab to it and press the arrow keys (x, y) or " +
       "Page Up/Page Down (z). On a touch screen, tap the view first, then drag.",
   );
-  main.append(toolbar, stageEl, message, legend);
+  main.append(toolbar, stageEl, message, error, legend);
   root.append(main, side);
   el.appendChild(root);
   const readout = createReadout(side);
@@ -259,7 +260,9 @@ function render({ model, el }) {
     // and the axes are context: framing them too would make a triangle away from it small)
     const box = disp.slice();
     const [a, b, c] = disp;
+    // N as drawn: A→C→B turns it over (framing the other side would leave its head out)
     const n = new Vector3().crossVectors(b.clone().sub(a), c.clone().sub(a));
+    if (winding === "ACB") n.negate();
     const lMax = Math.max(a.distanceTo(b), a.distanceTo(c), b.distanceTo(c));
     const centroid = a.clone().add(b).add(c).divideScalar(3);
     if (n.length() > 0) {
@@ -274,7 +277,7 @@ function render({ model, el }) {
     }
     const center = lo.clone().add(hi).multiplyScalar(0.5);
     const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
-    return { S, offset, includeOrigin, radius, center, box, L, t, start: startDirection(winding === "ACB" ? n.negate() : n) };
+    return { S, offset, includeOrigin, radius, center, box, L, t, start: startDirection(n) };
   }
 
   function applyFrame(next, moveCamera) {
