@@ -97,3 +97,9 @@ def test_uv_run_then_make_lab_from_a_fresh_clone(clone: Path) -> None:
     after = (clone / ".venv" / "pyvenv.cfg").stat()
     assert (after.st_ino, after.st_mtime_ns) == (cfg.st_ino, cfg.st_mtime_ns)
     assert not TOOLS & installed(clone / ".venv")
+    # make lab's environment gives Notebook 7 too (the README says the explorer works there)
+    notebook = subprocess.run(
+        [str(clone / ".venv" / "bin" / "jupyter"), "notebook", "--version"],
+        cwd=clone, env=env(), capture_output=True, text=True,
+    )  # fmt: skip
+    assert notebook.returncode == 0 and notebook.stdout.startswith("7."), notebook

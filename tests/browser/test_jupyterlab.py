@@ -13,6 +13,7 @@ from __future__ import annotations
 import ast
 import json
 import re
+import time
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -38,7 +39,8 @@ PROJECTOR = {"width": 1280, "height": 720}
 REPORT = """\
 import json as _json
 print("KERNEL", _json.dumps({"texts": ex.texts, "winding": ex.winding.value,
-      "parallelogram": ex.view.show_parallelogram, "format": ex.result.format(ex.precision)}))"""
+      "parallelogram": ex.view.show_parallelogram, "unit": ex.view.show_unit_normal,
+      "precision": ex.precision, "format": ex.result.format(ex.precision)}))"""
 
 #: What the views on the page show: per explorer, its vertex labels, readout and drawing.
 VIEWS = """() => [...document.querySelectorAll('.tnx-root')].map((root) => ({
@@ -47,8 +49,28 @@ VIEWS = """() => [...document.querySelectorAll('.tnx-root')].map((root) => ({
         .map((tr) => [tr.dataset.key, tr.cells[1].textContent])),
     banner: !root.querySelector('.tnx-message').hidden,
     parallelogram: root.querySelector('[aria-label="Parallelogram"]').getAttribute('aria-pressed'),
+    unit: root.querySelector('[aria-label="Unit normal N/|N|"]').getAttribute('aria-pressed'),
+    order: root.querySelector('[aria-label^="Flip the order"]').textContent,
+    boxes: [...root.querySelectorAll('.tnx-exact')].map((e) => e.value),
+    sliders: [...root.querySelectorAll('.tnx-slider')].map((e) => Number(e.value)),
+    decimals: root.querySelector('.tnx-decimals select').value,
+    error: root.querySelector('.tnx-error').hidden ? null : root.querySelector('.tnx-error').textContent,
     drawn: root.tnxProject ? root.tnxProject() : null,
 }))"""
+
+#: Where one view draws (its tnxProject) and the boxes of its labels and overlays, in px
+#: from the view's top left corner; the view is scrolled to first.
+DRAWN = """(i) => {
+    const root = document.querySelectorAll('.tnx-root')[i];
+    const s = root.querySelector('.tnx-stage').getBoundingClientRect();
+    const boxes = (selector) => [...root.querySelectorAll(selector)]
+        .filter((e) => !e.hidden && !e.closest('[hidden]') && e.getClientRects().length)
+        .map((e) => { const r = e.getBoundingClientRect();
+                      return {text: e.textContent, left: r.left - s.left, top: r.top - s.top,
+                              right: r.right - s.left, bottom: r.bottom - s.top}; });
+    return {...root.tnxProject(), labels: boxes('.tnx-vertex, .tnx-arrow'),
+            overlays: boxes('.tnx-message, .tnx-error, .tnx-legend, .tnx-hint')};
+}"""
 
 
 @pytest.fixture
@@ -108,8 +130,8 @@ def point_text(texts: dict[str, str], p: str) -> str:
 
 
 def assert_views_show(page: Any, state: dict[str, Any], views: int = 1) -> None:
-    """Every view on the page draws and prints exactly the kernel's state."""
-    shown = page.evaluate(VIEWS)
+    """The page's first ``views`` views draw and print exactly the kernel's state."""
+    shown = page.evaluate(VIEWS)[:views]
     assert len(shown) == views
     texts = state["texts"]
     for view in shown:
@@ -122,6 +144,53 @@ def assert_views_show(page: Any, state: dict[str, Any], views: int = 1) -> None:
         for key in ("u", "v", "normal", "magnitude", "area", "unit_normal", "plane"):
             assert view["readout"][key] == state["format"][key], key
         assert view["parallelogram"] == str(state["parallelogram"]).lower()
+        assert view["unit"] == str(state["unit"]).lower()
+        assert view["order"] == "⇄ " + ("A→B→C" if state["winding"] == "ABC" else "A→C→B")
+        assert view["decimals"] == str(state["precision"])
+        # the boxes hold the kernel's exact text; each slider sits on its 0.1 grid, at the
+        # grid point nearest the exact value (1/3 shows as 0.3 and stays 1/3 in the box)
+        assert view["boxes"] == [texts[p + q] for p in "abc" for q in "xyz"]
+        for slider, key in zip(view["sliders"], (p + q for p in "abc" for q in "xyz"), strict=True):
+            assert slider * 10 == pytest.approx(round(slider * 10), abs=1e-9), (key, slider)
+            assert abs(slider - float(Fraction(texts[key]))) <= 0.05 + 1e-9, (key, slider)
+
+
+def assert_framed(page: Any, index: int = 0, framed: bool = True) -> dict[str, Any]:
+    """View ``index`` frames its triangle, and no overlay covers a label or an arrow head.
+
+    Framed: the triangle spans at least 40 % of the view's smaller side, and no vertex,
+    arrow head or label is clipped (``framed=False`` skips that, for a view the learner
+    has moved things in: a drag never re-frames). Always: no overlay (banner, refusal,
+    legend, hint) covers a vertex label, an arrow's label or an arrow head.
+    """
+    page.locator(".tnx-root").nth(index).scroll_into_view_if_needed()
+    page.evaluate("() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))")
+    drawn = page.evaluate(DRAWN, index)
+    w, h = drawn["width"], drawn["height"]
+    assert {b["text"] for b in drawn["labels"]} >= {"A", "B", "C"}
+    if framed:
+        xs, ys = zip(*(drawn["points"][k] for k in "ABC"), strict=True)
+        span = max(max(xs) - min(xs), max(ys) - min(ys))
+        assert span >= 0.4 * min(w, h), (span, w, h)
+        for key, (x, y) in drawn["points"].items():  # the vertices and the arrow heads
+            assert 0 <= x <= w and 0 <= y <= h, (key, x, y, w, h)
+        for b in drawn["labels"]:
+            assert b["left"] >= -1 and b["top"] >= -1, b
+            assert b["right"] <= w + 1 and b["bottom"] <= h + 1, (b, w, h)
+    heads = [
+        {"left": x - 4, "top": y - 4, "right": x + 4, "bottom": y + 4}
+        for x, y in drawn["points"].values()
+    ]
+    for overlay in drawn["overlays"]:
+        for b in drawn["labels"] + heads:
+            apart = (
+                overlay["right"] <= b["left"]
+                or b["right"] <= overlay["left"]
+                or overlay["bottom"] <= b["top"]
+                or b["bottom"] <= overlay["top"]
+            )
+            assert apart, (overlay, b)
+    return drawn
 
 
 def last_set_in_notebook_05() -> dict[str, Any]:
@@ -183,7 +252,8 @@ def test_run_all_of_notebook_05_ends_where_the_last_cell_put_it(
         assert state["winding"] == last["winding"] and state["parallelogram"] is False
         assert state["format"] == expected
         assert_views_show(page, state)
-        assert page.evaluate(VIEWS)[0]["banner"] is False
+        assert [view["banner"] for view in page.evaluate(VIEWS)] == [False]  # one view
+        assert_framed(page)  # the last cell set this triangle: the view frames it
     assert own_warnings(console) == [], console
 
 
@@ -193,7 +263,44 @@ LOOP = [
     'for i in range(50):\n    ex.set(c=(f"{i % 7}/3", "0.1", f"-{i % 5}"), winding="ACB" if i % 2 else "ABC")',
     'ex.set(a=("1/3", "0.2", "0"), b=(1, "2.3", "-0.5"), c=("0.1", 1, "1/7"), winding="ABC")',
     REPORT,
+    "other = Explorer(a=(0, 0, 0), b=(1, 1, 0), c=(2, 2, 0))  # a second explorer, collinear\nother",
 ]
+
+#: Keys of the nine coordinates, in the order of the boxes.
+KEYS = [p + q for p in "abc" for q in "xyz"]
+GRID = re.compile(r"-?\d+(\.\d)?")  # a value the view wrote: on the 0.1 grid
+
+
+def boxes_of(view: dict[str, Any]) -> dict[str, str]:
+    return dict(zip(KEYS, view["boxes"], strict=True))
+
+
+def both_views(page: Any, check: Any, what: str, timeout_s: float = 30) -> list[dict[str, Any]]:
+    """Wait until views 0 and 1 (the same explorer) show the same values, and ``check`` holds."""
+    deadline = time.monotonic() + timeout_s
+    while True:
+        shown = page.evaluate(VIEWS)[:2]
+        same = all(
+            shown[0][k] == shown[1][k]
+            for k in ("labels", "readout", "boxes", "parallelogram", "unit", "order", "decimals")
+        )
+        if same and check(shown[0]):
+            return shown
+        brief = [{k: v[k] for k in ("boxes", "parallelogram", "unit", "order", "decimals", "error")}
+                 for v in shown]  # fmt: skip
+        assert time.monotonic() < deadline, f"{what}: {json.dumps(brief, ensure_ascii=False)}"
+        page.wait_for_timeout(100)
+
+
+def drag(page: Any, label: Any, dx: float, dy: float, steps: int = 10) -> None:
+    label.scroll_into_view_if_needed()
+    box = label.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for i in range(1, steps + 1):
+        page.mouse.move(x + dx * i / steps, y + dy * i / steps)
+    page.mouse.up()
 
 
 @pytest.mark.parametrize("app", ["lab", "notebook"])
@@ -205,63 +312,151 @@ def test_fifty_sets_then_a_final_set_and_two_views_that_follow_each_other(
     open_notebook(lab, page, name, app)
     run_all(page)
     wait_for_report(page)
-    page.wait_for_function("() => document.querySelectorAll('.tnx-root canvas').length === 2")
+    page.wait_for_function("() => document.querySelectorAll('.tnx-root canvas').length === 3")
     page.wait_for_timeout(500)
     state = report(page)
     final = triangle_normal(("1/3", "0.2", "0"), (1, "2.3", "-0.5"), ("0.1", 1, "1/7"))
     assert state["format"] == final.format(4)
     assert state["texts"]["ax"] == "1/3" and state["texts"]["cz"] == "1/7"
     assert_views_show(page, state, views=2)
+    for index in (0, 1):  # a cell set the triangle: both views frame it
+        assert_framed(page, index)
+    # the other explorer: collinear, its banner under the view, not over a label
+    assert page.evaluate(VIEWS)[2]["banner"] is True
+    assert_framed(page, 2)
 
-    # an edit in either view reaches the kernel and the other view
-    for index, key in ((0, "ArrowUp"), (1, "PageDown")):
-        label = page.locator('[data-vertex="B"]').nth(index)
-        label.focus()
-        page.keyboard.press(key)
-        page.wait_for_timeout(400)
+    # every kind of edit, made in either view, reaches the kernel and the other view
+    # (one after another, as one learner makes them: each edit is seen before the next)
+    roots = page.locator(".tnx-root")
+    roots.nth(0).locator('[data-vertex="B"]').focus()
+    page.keyboard.press("ArrowUp")  # an arrow key on a vertex
+    both_views(page, lambda v: boxes_of(v)["by"] == "2.4", "ArrowUp")
+    roots.nth(1).locator('[data-vertex="B"]').focus()
+    page.keyboard.press("PageDown")
+    both_views(
+        page, lambda v: boxes_of(v)["by"] == "2.4" and boxes_of(v)["bz"] == "-0.6", "PageDown"
+    )
+    # a drag in view 1 moves C onto the grid; view 0 follows
+    drag(page, roots.nth(1).locator('[data-vertex="C"]'), 60, 40)
+    shown = both_views(
+        page,
+        lambda v: [boxes_of(v)[k] for k in ("cx", "cy", "cz")] != ["0.1", "1", "1/7"],
+        "drag",
+    )
+    assert all(GRID.fullmatch(boxes_of(shown[0])[k]) for k in ("cx", "cy", "cz")), shown[0]
+    # a slider in view 0 moves A.y on its grid; A.x stays exactly one third
+    slider = roots.nth(0).locator(".tnx-slider").nth(1)
+    slider.scroll_into_view_if_needed()
+    width = slider.bounding_box()["width"]
+    slider.click(position={"x": width * 0.8, "y": 5})
+    shown = both_views(page, lambda v: boxes_of(v)["ay"] != "0.2", "slider")
+    assert GRID.fullmatch(boxes_of(shown[0])["ay"]) and boxes_of(shown[0])["ax"] == "1/3"
+    # an exact value typed in view 1's box for C.z
+    box = roots.nth(1).locator(".tnx-exact").nth(8)
+    box.fill("2/7")
+    box.press("Enter")
+    both_views(page, lambda v: boxes_of(v)["cz"] == "2/7", "typed")
+    # the toolbar's toggles and the decimals, in turn from each view
+    roots.nth(0).locator('[aria-label="Parallelogram"]').click()
+    both_views(page, lambda v: v["parallelogram"] == "true", "parallelogram")
+    roots.nth(1).locator('[aria-label^="Flip the order"]').click()
+    both_views(page, lambda v: v["order"] == "⇄ A→C→B", "flip")
+    roots.nth(0).locator('[aria-label="Unit normal N/|N|"]').click()
+    both_views(page, lambda v: v["unit"] == "true", "unit normal")
+    roots.nth(1).locator(".tnx-decimals select").select_option("3")
+    both_views(page, lambda v: v["decimals"] == "3", "decimals")
+    # a value the kernel refuses: both views say why, nothing moves, the box shows A.z again
+    box = roots.nth(0).locator(".tnx-exact").nth(2)
+    box.fill("abc")
+    box.press("Enter")
+    shown = both_views(page, lambda v: bool(v["error"]) and boxes_of(v)["az"] == "0", "refused")
+    assert shown[0]["error"].startswith("A.z = 'abc' is not a number"), shown[0]["error"]
+    assert shown[1]["error"] == shown[0]["error"]
+
     run_cell(page, 4)
     page.wait_for_function(
         """() => [...document.querySelectorAll('.jp-OutputArea-output')]
-            .some((o) => o.innerText.includes('"by": "2.4"') && o.innerText.includes('"bz": "-0.6"'))""",
+            .some((o) => o.innerText.includes('"cz": "2/7"') && o.innerText.includes('"precision": 3'))""",
         timeout=30_000,
     )
     state = report(page)
-    assert state["texts"]["by"] == "2.4" and state["texts"]["bz"] == "-0.6"
-    assert state["texts"]["ax"] == "1/3"  # untouched values stay exact
+    texts = state["texts"]
+    assert (texts["by"], texts["bz"], texts["cz"], texts["ax"]) == ("2.4", "-0.6", "2/7", "1/3")
+    assert texts["ay"] == boxes_of(shown[0])["ay"] and texts["az"] == "0"
+    assert (state["parallelogram"], state["unit"], state["winding"]) == (True, True, "ACB")
+    assert state["precision"] == 3
+    assert state["format"] == triangle_normal(
+        *([texts[p + q] for q in "xyz"] for p in "abc"), winding="ACB"
+    ).format(3)
     assert_views_show(page, state, views=2)
+    # the banner of refusal, the legend and the hint cover nothing; Reset frames it again
+    assert_framed(page, 0, framed=False)
+    roots.nth(0).get_by_role("button", name="Reset the camera").click()
+    assert_framed(page, 0)
+
+    # a cell that makes the explorer again: still one three.js on the page, no warning
+    run_cell(page, 0)
+    page.wait_for_function(
+        "() => document.querySelectorAll('.tnx-root canvas').length === 3", timeout=60_000
+    )
+    wait_idle(page)
+    page.wait_for_timeout(500)
+    runtimes = page.evaluate(
+        """() => [Object.keys(globalThis.__trinormalExplorer || {}).length,
+                  Object.getOwnPropertySymbols(globalThis)
+                      .filter((s) => String(s).includes('trinormal.three@')).length]"""
+    )
+    assert runtimes == [1, 1]
     assert own_warnings(console) == [], console
 
 
 DRAG = [
     'from trinormal.explorer import Explorer\nex = Explorer(c=(0, "1/3", 0))\nex',
-    'import time\ntime.sleep(2.5)\nex.set(c=("-1/3", "2/3", "0.25"))',
+    'import time\ntime.sleep(3)\nex.set(c=("-1/3", "2/3", "0.25"))',
     REPORT,
 ]
 
+#: What the first view draws for C (its own edit while a drag is unanswered).
+VIEW_C = "() => document.querySelector('.tnx-root').tnxProject().values[2]"
 
+
+@pytest.mark.parametrize("app", ["lab", "notebook"])
 def test_a_cell_that_sets_a_vertex_during_a_drag_has_the_last_word(
-    lab: Lab, page: Any, console: list[str]
+    lab: Lab, page: Any, console: list[str], app: str
 ) -> None:
-    lab.write_notebook("drag.ipynb", DRAG)
-    open_notebook(lab, page, "drag.ipynb", "lab")
+    name = f"drag_{app}.ipynb"
+    lab.write_notebook(name, DRAG)
+    open_notebook(lab, page, name, app)
     run_cell(page, 0)
     page.wait_for_selector('[data-vertex="C"]', timeout=60_000)
     page.wait_for_timeout(500)
     run_cell(page, 1)  # sleeps, then sets C while the drag below is still going
     label = page.locator('[data-vertex="C"]').first
+    label.scroll_into_view_if_needed()
     box = label.bounding_box()
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
     page.mouse.move(x, y)
     page.mouse.down()
-    for i in range(1, 60):  # about 5 s of dragging, across the moment the cell sets C
-        page.mouse.move(x + 2 * i, y + (i % 10))
+    # drag until the cell's C has arrived, then on for a second: the drag spans that moment
+    seen: list[list[str]] = []
+    cell = ["-1/3", "2/3", "0.25"]
+    after = 0
+    for i in range(1, 400):
+        page.mouse.move(x + 2 * (i % 60), y + (i % 10))
         page.wait_for_timeout(80)
+        seen.append(page.evaluate(VIEW_C))
+        after += seen[-1] == cell
+        if after >= 12:
+            break
     page.mouse.up()
+    assert after >= 12, f"the cell's C never reached the view while the mouse was down: {seen}"
+    dragged = [c for c in seen[: seen.index(cell)] if c != ["0", "1/3", "0"]]
+    assert dragged, f"the drag never moved C before the cell set it: {seen}"
     page.wait_for_timeout(800)
     run_cell(page, 2)
     wait_for_report(page)
     state = report(page)
-    assert [state["texts"][k] for k in ("cx", "cy", "cz")] == ["-1/3", "2/3", "0.25"]
+    assert [state["texts"][k] for k in ("cx", "cy", "cz")] == cell
     assert state["texts"]["ax"] == "0" and state["texts"]["bx"] == "1"
     assert Fraction(state["texts"]["cy"]) == Fraction(2, 3)
     assert_views_show(page, state)
@@ -391,6 +586,9 @@ def test_view_and_readout_fit_a_projector_at_every_zoom(
         open_notebook(lab, page, "fit.ipynb", app)
         run_all(page)
         page.wait_for_selector(".tnx-root canvas", timeout=90_000)
+        if app == "lab":  # the file browser takes its share of the width
+            files = page.locator("#filebrowser").bounding_box()
+            assert files is not None and files["width"] >= 200, files
         page.wait_for_timeout(800)
         m = page.evaluate(LAYOUT)
         page.wait_for_timeout(200)
