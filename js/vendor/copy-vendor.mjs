@@ -1,5 +1,7 @@
 // Copy the browser files of the npm packages in package.json into docs/assets/vendor/, where
-// the site serves them (the site never loads anything from another origin).
+// the site serves them (the site never loads anything from another origin), and axe-core (a
+// devDependency: the site never serves it) into tests/browser/vendor/, where the accessibility
+// tests read it.
 // Run `npm ci && npm run vendor` here after changing a version; the copies are committed.
 import { copyFileSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
@@ -35,3 +37,21 @@ writeFileSync(
     "fonts and the MIT LICENSE. Loaded only by pages that contain math.\n",
 );
 console.log(`katex ${version} -> ${out}`);
+
+// axe-core: the accessibility engine the browser tests inject into each page
+// (tests/browser/page_checks.py), its MPL-2.0 licence and its third-party licences.
+const axe = join(here, "node_modules", "axe-core");
+const axeVersion = JSON.parse(readFileSync(join(axe, "package.json"), "utf8")).version;
+const axeOut = join(here, "..", "..", "tests", "browser", "vendor", "axe-core");
+rmSync(axeOut, { recursive: true, force: true });
+mkdirSync(axeOut, { recursive: true });
+for (const name of ["axe.min.js", "LICENSE", "LICENSE-3RD-PARTY.txt"]) {
+  copyFileSync(join(axe, name), join(axeOut, name));
+}
+writeFileSync(
+  join(axeOut, "SOURCE.txt"),
+  `Vendored from the npm package \`axe-core@${axeVersion}\` by js/vendor/copy-vendor.mjs: axe.min.js,\n` +
+    "its LICENSE (MPL-2.0) and LICENSE-3RD-PARTY.txt. Injected into pages by the browser tests only;\n" +
+    "the site never serves it.\n",
+);
+console.log(`axe-core ${axeVersion} -> ${axeOut}`);

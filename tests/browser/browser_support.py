@@ -77,6 +77,24 @@ def site_pages(site_dir: Path) -> list[str]:
     return pages
 
 
+def source_pages() -> list[str]:
+    """Every page the site is built from, as ``site_pages`` names them, read from the sources.
+
+    ``docs/**/*.md`` (``x/index.md`` is ``x/``, ``x.md`` is ``x/`` too) and one page per
+    ``notebooks/*.ipynb``. Known before any build, so tests can be parametrized by page;
+    ``test_every_page.py`` checks that the build has exactly these pages.
+    """
+    pages = []
+    for md in (ROOT / "docs").rglob("*.md"):
+        rel = md.relative_to(ROOT / "docs")
+        if rel.parts[0] in ("hooks", "notebooks"):
+            continue
+        folder = rel.parent if rel.stem == "index" else rel.with_suffix("")
+        pages.append("" if folder.as_posix() == "." else folder.as_posix() + "/")
+    pages += [f"notebooks/{nb.stem}/" for nb in (ROOT / "notebooks").glob("*.ipynb")]
+    return sorted(pages)
+
+
 def newest_source() -> float:
     """Modification time of the newest file the site is built from."""
     sources = [ROOT / "mkdocs.yml"]

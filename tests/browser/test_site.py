@@ -1,31 +1,19 @@
-"""Every page of the built site loads cleanly, offline, reads well on a phone, and has its math.
+"""The built site: offline, its math, its layout check, links, search, the getting-started page.
 
-Layout checks run on every page at three viewports (phone, tablet, desktop) and in both colour
-schemes (Material's ``default`` and ``slate``): no sideways scrolling of the page; every display
-equation is visible and fits, or scrolls inside its own box; tables and notebook outputs scroll
-inside their own box, which the keyboard can reach; no number in a notebook's text output is
-broken across two lines.
+The checks made on every page (loading, math engine, layout at every width in both palettes,
+axe-core, notebook pages) are in test_every_page.py, which visits each page once per screen.
 """
 
 from __future__ import annotations
 
 import json
 import re
-import urllib.request
 from pathlib import Path
 
 import yaml
-from browser_support import ROOT, Traffic, site_pages
-
-NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
-VIEWPORTS = {"phone": (360, 740), "tablet": (768, 1024), "desktop": (1280, 800)}
-SCHEMES = ("default", "slate")
-MATH_ENGINES = ("katex", "mathjax")
-
-
-def _settle(page) -> None:
-    page.wait_for_load_state("load")
-    page.wait_for_load_state("networkidle")
+from browser_support import ROOT
+from page_checks import LAYOUT_PROBLEMS as _LAYOUT_PROBLEMS  # test_mesh_site.py imports it here
+from page_checks import assert_math_typeset, settle
 
 
 def _mkdocs_config() -> dict:
@@ -38,32 +26,9 @@ def _mkdocs_config() -> dict:
     return yaml.load((ROOT / "mkdocs.yml").read_text(encoding="utf-8"), Loader=Loader)
 
 
-def test_every_page_loads_without_errors_or_foreign_requests(page, server, site_dir, traffic):
-    pages = [*site_pages(site_dir), "404.html"]
-    assert len(pages) >= 12, pages
-    problems: dict[str, list[str]] = {}
-    seen = 0
-    for path in pages:
-        before = len(traffic.requests)
-        mark = {k: len(getattr(traffic, k)) for k in ("off_origin", "failed", "bad_status")}
-        mark |= {k: len(getattr(traffic, k)) for k in ("console_errors", "page_errors")}
-        response = page.goto(server + path)
-        assert response is not None and response.ok, f"{path}: {response and response.status}"
-        _settle(page)
-        seen += len(traffic.requests) - before
-        fresh = Traffic(origin=traffic.origin)
-        for k, n in mark.items():
-            setattr(fresh, k, getattr(traffic, k)[n:])
-        if fresh.problems():
-            problems[path] = fresh.problems()
-    assert not problems, json.dumps(problems, indent=1)
-    assert not traffic.off_origin
-    assert seen > len(pages)  # stylesheets, scripts and images were requested (and served)
-
-
 def test_every_request_stays_on_127_0_0_1(page, server, traffic):
     page.goto(server + "calculator/")
-    _settle(page)
+    settle(page)
     assert traffic.requests
     foreign = [u for u in traffic.requests if not u.startswith((traffic.origin, "data:", "blob:"))]
     assert foreign == []
@@ -75,58 +40,9 @@ def test_every_request_stays_on_127_0_0_1(page, server, traffic):
 # ----------------------------------------------------------------------------- math
 
 
-def _has_math_markup(page) -> bool:
-    """True when the article holds math: arithmatex spans, or TeX in a notebook's cells."""
-    return page.evaluate(
-        r"""() => {
-          if (document.querySelector("article .arithmatex, article .jp-RenderedLatex")) return true;
-          return [...document.querySelectorAll("article .jp-RenderedMarkdown")].some(
-            e => /\$|\\\(|\\\[/.test(e.textContent) || e.querySelector(".katex"));
-        }"""
-    )
-
-
-def test_math_engine_loads_only_where_there_is_math(page, server, site_dir, traffic):
-    with_math, without = [], []
-    for path in site_pages(site_dir):
-        before = len(traffic.requests)
-        page.goto(server + path)
-        _settle(page)
-        requested = traffic.requests[before:]
-        engines = [u for u in requested if any(e in u.lower() for e in MATH_ENGINES)]
-        if _has_math_markup(page):
-            with_math.append(path)
-            assert any(u.endswith("/katex.min.js") for u in engines), f"{path}: no KaTeX"
-            assert page.locator("body[data-math='typeset']").count() == 1, path
-        else:
-            without.append(path)
-            assert engines == [], f"{path} has no math but loads {engines}"
-        assert not any("mathjax" in u.lower() for u in requested), path
-    assert "guide/method/" in with_math and "" in without and "calculator/" in without
-    assert not (site_dir / "assets" / "vendor" / "mathjax").exists(), "the MathJax bundle is back"
-    assert not traffic.problems()
-
-
-def _assert_math_typeset(page, where: str) -> None:
-    page.wait_for_selector("body[data-math='typeset']", timeout=20_000)
-    count = page.locator("article .katex").count()
-    assert count > 0, f"{where}: no typeset math"
-    # the article's prose, without code (where a dollar sign or a backslash is just code)
-    text = page.locator("article").evaluate(
-        """a => { const c = a.cloneNode(true);
-                  c.querySelectorAll('pre, code, .katex, script').forEach(e => e.remove());
-                  return c.textContent; }"""
-    )
-    assert "$$" not in text, f"{where}: raw $$ left"
-    assert "\\(" not in text and "\\[" not in text, f"{where}: raw TeX delimiters left"
-    assert not re.search(r"\\(?:frac|times|hat|mathbf|displaystyle|left)\b", text), where
-    errors = page.locator("article .katex-error").all_inner_texts()
-    assert errors == [], f"{where}: KaTeX could not render {errors[:3]}"
-
-
 def test_math_is_typeset_on_a_guide_page(page, server, traffic):
     page.goto(server + "guide/method/")
-    _assert_math_typeset(page, "guide/method/")
+    assert_math_typeset(page, "guide/method/")
     assert page.locator("article div.arithmatex .katex-display").count() >= 3
     # every arithmatex element was rendered, and KaTeX's MathML is there for screen readers
     assert page.locator("article .arithmatex:not(:has(.katex))").count() == 0
@@ -134,149 +50,8 @@ def test_math_is_typeset_on_a_guide_page(page, server, traffic):
     assert not traffic.problems()
 
 
-def _notebooks_with_math() -> list[Path]:
-    """Notebooks with TeX in a Markdown cell or a text/latex output (sympy's display)."""
-    out = []
-    for path in NOTEBOOKS:
-        nb = json.loads(path.read_text(encoding="utf-8"))
-        for cell in nb["cells"]:
-            markdown_math = cell["cell_type"] == "markdown" and re.search(
-                r"\$|\\\(|\\\[", "".join(cell["source"])
-            )
-            latex_output = any("text/latex" in o.get("data", {}) for o in cell.get("outputs", []))
-            if markdown_math or latex_output:
-                out.append(path)
-                break
-    return out
-
-
-def test_math_is_typeset_on_a_notebook_page(page, server, traffic):
-    with_math = _notebooks_with_math()
-    assert with_math, "no notebook in notebooks/ has math (Markdown TeX or a text/latex output)"
-    for path in with_math:
-        page.goto(server + f"notebooks/{path.stem}/")
-        _assert_math_typeset(page, path.name)
-        rendered = page.locator(".jp-RenderedMarkdown .katex, .jp-RenderedLatex .katex").count()
-        assert rendered > 0, path.name
-        raw = page.locator(".jp-RenderedLatex").evaluate_all(
-            "els => els.filter(e => !e.querySelector('.katex')).map(e => e.textContent)"
-        )
-        assert raw == [], f"{path.name}: LaTeX output left untypeset: {raw[:3]}"
-    assert not traffic.problems()
-
-
-# ----------------------------------------------------------------------------- layout
-
-# One pass over a page, in the browser: a list of what a reader would find wrong.
-_LAYOUT_PROBLEMS = r"""() => {
-  const problems = [];
-  const vw = document.documentElement.clientWidth;
-  const name = el => el.tagName.toLowerCase() + (el.className && typeof el.className === "string"
-      ? "." + el.className.trim().split(/\s+/).slice(0, 2).join(".") : "");
-  const scrolls = el => ["auto", "scroll"].includes(getComputedStyle(el).overflowX);
-  const clips = el => ["hidden", "clip"].includes(getComputedStyle(el).overflowX);
-  const focusable = el => el.tabIndex >= 0 && !el.disabled && el.getAttribute("tabindex") !== "-1";
-
-  // 1. the page itself never scrolls sideways
-  const sw = document.documentElement.scrollWidth;
-  if (sw > vw + 1) {
-    const wide = [...document.querySelectorAll("body *")].filter(e => {
-      const r = e.getBoundingClientRect(); return r.width > 0 && r.right > vw + 1;
-    }).slice(0, 3).map(name);
-    problems.push(`the page scrolls sideways (${sw}px wide in ${vw}px): ${wide.join(", ")}`);
-  }
-
-  // 2. display equations and tables: visible, and fitting or scrolling inside their own box
-  const check = (el, what, visual) => {
-    if (!el.checkVisibility()) return;  // not shown on purpose (display: none, closed details)
-    const r = visual.getBoundingClientRect();
-    if (r.width < 8 || r.height < 8) {
-      problems.push(`${what} is not visible (${Math.round(r.width)}x${Math.round(r.height)} px)`);
-      return;
-    }
-    let box = null;
-    for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
-      if (scrolls(a)) { box = a; break; }
-      const b = a.getBoundingClientRect();
-      if (clips(a) && (r.left < b.left - 1 || r.right > b.right + 1)) {
-        problems.push(`${what} is cut off by ${name(a)}`);
-        return;
-      }
-    }
-    if (box) {
-      const b = box.getBoundingClientRect();
-      if (b.left < -1 || b.right > vw + 1) problems.push(`the box of ${what} sticks out of the page`);
-      if (r.left < b.left - 1 - (box.scrollLeft || 0)) problems.push(`${what} starts left of its box`);
-      if (r.right > b.right + 1 && box.scrollWidth <= box.clientWidth + 1)
-        problems.push(`${what} is wider than its box, which does not scroll`);
-    } else if (r.left < -1 || r.right > vw + 1) {
-      problems.push(`${what} sticks out of the page (${Math.round(r.left)}..${Math.round(r.right)})`);
-    }
-  };
-  document.querySelectorAll("article .katex-display, article .jp-RenderedLatex .katex").forEach(
-    (el, i) => check(el, `equation ${i + 1}`, el.querySelector(".katex-html") || el));
-  document.querySelectorAll("article table").forEach(
-    (el, i) => check(el, `table ${i + 1}`, el));
-
-  // 3. a box that scrolls sideways can be reached with the keyboard (axe: scrollable-region-focusable)
-  document.querySelectorAll("article *").forEach(el => {
-    if (!scrolls(el) || el.scrollWidth <= el.clientWidth) return;  // as axe counts it
-    if (getComputedStyle(el).visibility === "hidden" || el.closest("[hidden], .katex-mathml")) return;
-    if (focusable(el) || [...el.querySelectorAll("*")].some(focusable)) return;
-    problems.push(`${name(el)} scrolls sideways but the keyboard cannot reach it`);
-  });
-
-  // 4. no number in a notebook's text output is broken across two lines
-  const number = /[-−]?\d+(?:[.,/]\d+)*(?:e[-+]?\d+)?/g;
-  let broken = 0, checked = 0;
-  document.querySelectorAll("article .jp-OutputArea-output pre").forEach(pre => {
-    const walker = document.createTreeWalker(pre, NodeFilter.SHOW_TEXT);
-    for (let t = walker.nextNode(); t && checked < 400; t = walker.nextNode()) {
-      for (const m of t.data.matchAll(number)) {
-        if (m[0].length < 2) continue;
-        const range = document.createRange();
-        range.setStart(t, m.index);
-        range.setEnd(t, m.index + m[0].length);
-        const tops = new Set([...range.getClientRects()].map(q => Math.round(q.top)));
-        checked += 1;
-        if (tops.size > 1 && broken++ < 3) problems.push(`the number ${m[0]} is broken across lines`);
-      }
-    }
-  });
-  return problems;
-}"""
-
-
-def _set_scheme(page, scheme: str) -> None:
-    page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", scheme)
-
-
-def test_every_page_reads_well_on_phone_tablet_and_desktop_in_both_schemes(
-    page, server, site_dir, traffic
-):
-    problems: dict[str, list[str]] = {}
-    pages = site_pages(site_dir)
-    for path in pages:
-        page.set_viewport_size(dict(zip(("width", "height"), VIEWPORTS["phone"], strict=True)))
-        page.goto(server + path)
-        _settle(page)
-        if _has_math_markup(page):
-            page.wait_for_selector("body[data-math='typeset']", timeout=20_000)
-        page.wait_for_selector("body[data-scrollboxes='checked']")
-        for label, (width, height) in VIEWPORTS.items():
-            page.set_viewport_size({"width": width, "height": height})
-            page.wait_for_timeout(250)  # scrollboxes.js re-checks 100 ms after a resize
-            for scheme in SCHEMES:
-                _set_scheme(page, scheme)
-                found = page.evaluate(_LAYOUT_PROBLEMS)
-                if found:
-                    problems[f"{path or 'home'} @ {label} {width}x{height} {scheme}"] = found
-    assert not problems, json.dumps(problems, indent=1, ensure_ascii=False)
-    assert not traffic.problems()
-
-
 def test_the_layout_check_catches_what_it_should(page, server, traffic):
-    """The checks above are not vacuous: break a page on purpose and they object."""
+    """The layout check (test_every_page.py) is not vacuous: break a page and it objects."""
     page.set_viewport_size({"width": 360, "height": 740})
     page.goto(server + "guide/method/")
     page.wait_for_selector("body[data-math='typeset']")
@@ -355,7 +130,7 @@ def test_api_reference_links_its_cross_references(page, server, site_dir, traffi
     assert total >= 20, "the API reference has few cross-reference links"
     assert missing == []
     page.goto(server + "api/core/")
-    _settle(page)
+    settle(page)
     assert page.locator("article a.autorefs-internal").count() >= 5
     assert not traffic.problems()
 
@@ -383,7 +158,7 @@ def test_getting_started_has_the_commands_and_the_repository(page, server, traff
     nav = page.locator("nav.md-nav--primary a").evaluate_all("els => els.map(e => e.href)")
     assert server + "getting-started/" in nav
     page.goto(server + "getting-started/")
-    _settle(page)
+    settle(page)
     text = page.locator("article").inner_text()
     for needed in ("make lab", "make test", "pip install", "uv run jupyter lab notebooks"):
         assert needed in text, needed
@@ -393,71 +168,6 @@ def test_getting_started_has_the_commands_and_the_repository(page, server, traff
     assert f"git clone {repo_url}.git" in text
     # the header links to the repository too (without asking the GitHub API for stars)
     assert page.locator(f"header a.md-source[href='{repo_url}']").count() == 1
-    assert not traffic.problems()
-
-
-def test_every_notebook_is_in_the_site_with_a_download_link(page, server, site_dir, traffic):
-    assert NOTEBOOKS, "notebooks/ holds no notebook"
-    page.goto(server)
-    nav = page.locator("nav.md-nav--primary a").evaluate_all("els => els.map(e => e.href)")
-    for path in NOTEBOOKS:
-        url = server + f"notebooks/{path.stem}/"
-        assert (site_dir / "notebooks" / path.stem / "index.html").is_file(), path.name
-        assert url in nav, f"{path.name} is missing from the navigation"
-        page.goto(url)
-        page.wait_for_load_state(
-            "networkidle"
-        )  # the page's scripts loaded, none cut off by the next goto
-        link = page.locator(f"a[download][href='{path.name}']").first
-        assert link.is_visible(), f"{path.name}: no download link"
-        how = page.locator("article a[href$='getting-started/']").first
-        assert how.is_visible(), f"{path.name}: no link to the instructions for running it"
-        with urllib.request.urlopen(url + path.name) as resp:  # the link's target is served
-            downloaded = json.loads(resp.read())
-        assert downloaded == json.loads(path.read_text(encoding="utf-8"))
-    assert not traffic.problems()
-
-
-def _has_widget_output(path: Path) -> bool:
-    nb = json.loads(path.read_text(encoding="utf-8"))
-    return any(
-        "application/vnd.jupyter.widget-view+json" in out.get("data", {})
-        for cell in nb["cells"]
-        for out in cell.get("outputs", [])
-    )
-
-
-def test_widget_outputs_are_replaced_by_a_note_and_a_picture(page, server, traffic):
-    for path in NOTEBOOKS:
-        page.goto(server + f"notebooks/{path.stem}/")
-        _settle(page)
-        html = page.content()
-        assert "application/vnd.jupyter.widget" not in html, path.name
-        assert not re.search(r'"model_id"\s*:', page.locator("article").inner_text()), path.name
-        # every figure keeps the text alternative the notebook gave it
-        assert "No description has been provided" not in html, path.name
-        for img in page.locator("article img").all():
-            assert (img.get_attribute("alt") or "").strip(), f"{path.name}: a figure without alt"
-        if _has_widget_output(path):
-            live = page.locator("article .tn-explorer-live")
-            if live.count():  # the explorer notebook: its live view (test_explorer_site.py)
-                assert live.first.is_visible(), f"{path.name}: the live view is hidden"
-                continue
-            note = page.locator(".tn-widget-note").first
-            assert note.is_visible(), f"{path.name}: widget output without a note"
-            text = note.inner_text()
-            assert "JupyterLab" in text, path.name
-            if note.locator('a[href$="mesh/"]').count():
-                # a mesh view: its summary from the last run, and the page that shows one live
-                assert "Check a mesh" in text and "faces" in note.locator("pre").inner_text()
-                continue
-            assert "Calculator" in text, path.name
-            img = note.locator("img")
-            assert img.get_attribute("alt")
-            img.scroll_into_view_if_needed()
-            page.wait_for_function(
-                "img => img.complete && img.naturalWidth > 0", arg=img.element_handle()
-            )
     assert not traffic.problems()
 
 
