@@ -562,6 +562,12 @@ def test_no_readout_value_is_cut_on_the_explorer_page(browser, server, width):
                 })"""
             )
             assert len(cells) == 7
+            # every button of the view's toolbar is there to press, none cut off
+            live = page.locator(".tn-explorer-live .tnx-stage").first.bounding_box()
+            for button in page.locator(".tn-explorer-live .tnx-toolbar button").all():
+                b = button.bounding_box()
+                assert b is not None and b["x"] >= live["x"] - 1, button.inner_text()
+                assert b["x"] + b["width"] <= live["x"] + live["width"] + 1, button.inner_text()
             for cell in cells:
                 assert not cell["cut"] and cell["right"] <= min(width, cell["clip"]) + 1, cell
                 assert all(n == 1 for n in cell["parts"]), cell  # no component breaks
