@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import io
 import json
+import math
 import re
 from urllib.parse import parse_qs, urlsplit
 
@@ -602,3 +603,45 @@ def test_one_three_js_however_many_views_and_no_console_warnings(page, server, t
     assert page.evaluate("Object.keys(globalThis.__trinormalExplorer).length") == 1
     assert [m for m in messages if "GPU stall due to ReadPixels" not in m] == []
     assert not traffic.problems()
+
+
+# --------------------------------------------------------------------------- N's drawn length
+
+
+def _scale_label(ratio: float, unit: bool = False) -> str:
+    """The label an arrow drawn `ratio` times its true length must carry (ratio a power of 2)."""
+    k = round(math.log2(ratio))
+    assert ratio == pytest.approx(2.0**k, rel=1e-6), f"drawn {ratio} times: not a power of two"
+    if k == 0:
+        return "N/|N|" if unit else "N"
+    f = str(2 ** abs(k))
+    if k < 0:
+        return f"N/({f}|N|)" if unit else f"N/{f}"
+    return f"{f}N/|N|" if unit else f"{f}N"
+
+
+@pytest.mark.parametrize(
+    ("triangle", "expected"),
+    [
+        ((("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0")), "N"),  # |N| = 1: true length
+        ((("0", "0", "0"), ("4", "0", "0"), ("0", "4", "0")), "N/4"),  # |N| = 16, edges 4
+        ((("0", "0", "0"), ("0.3", "0", "0"), ("0", "0.3", "0")), "4N"),  # |N| = 0.09
+    ],
+)
+def test_a_scaled_n_says_by_how_much_in_its_label(view, triangle, expected):
+    set_triangle(view, *triangle)
+    view.get_by_role("button", name="Unit normal N/|N|").click()
+    settle(view)
+    drawn = view.evaluate(PROJECTED)["drawn"]
+    r = triangle_normal(*triangle)
+    normal = [float(x) for x in r.exact.normal]
+    labels = view.locator("#tn-view .tnx-arrow:visible").all_inner_texts()
+    # the arrow drawn is N times some factor: the same direction, the length the label says
+    ratio = math.hypot(*drawn["N"]) / math.hypot(*normal)
+    for got, want in zip(drawn["N"], normal, strict=True):
+        assert got == pytest.approx(want * ratio, abs=1e-9 * math.hypot(*normal) * ratio)
+    assert _scale_label(ratio) == expected
+    assert expected in labels
+    # the unit normal too: drawn `unit_ratio` times its length of 1, and labelled so
+    unit_ratio = math.hypot(*drawn["unit"])
+    assert _scale_label(unit_ratio, unit=True) in labels

@@ -32,9 +32,33 @@ const KEYS = [
 ];
 // what the view draws from its own edit until the host answers
 const DRAWN = new Set(["a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal"]);
-// N is drawn at its length, but at least 0.6 and at most N_MAX times the longest edge, so
-// the triangle and N fit the picture together
-const N_MAX = 1.1;
+// N is drawn at its true length (in the axes' units) when that is about the longest edge
+// (0.57 to 1.13 times it); otherwise it is scaled by a power of two into that range, so the
+// triangle and N fit the picture together, and its label says so: "N/4", "2N" (as the
+// matplotlib figure labels it). The unit normal likewise: "N/(4|N|)", "2N/|N|".
+const N_AIM = 0.8; // the drawn length aimed at, times the longest edge
+const UNIT_AIM = 0.5;
+
+/** The power of two that brings `length` nearest to `aim` on a log scale (1 when it is 0). */
+function drawScale(length, aim) {
+  if (!(length > 0) || !(aim > 0) || !Number.isFinite(length)) return 1;
+  return 2 ** Math.round(Math.log2(aim / length));
+}
+
+const SUPERSCRIPT = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+function powerText(factor) {
+  const k = Math.round(Math.log2(factor));
+  if (Math.abs(k) <= 12) return String(2 ** Math.abs(k));
+  return "2" + [...String(Math.abs(k))].map((d) => SUPERSCRIPT[Number(d)]).join("");
+}
+
+/** The label of N drawn `factor` times its length: "N", "N/4", "2N"; unit: "N/|N|", "N/(4|N|)", "2N/|N|". */
+function scaledLabel(factor, unit = false) {
+  if (factor === 1) return unit ? "N/|N|" : "N";
+  const f = powerText(factor);
+  if (factor < 1) return unit ? `N/(${f}|N|)` : `N/${f}`;
+  return unit ? `${f}N/|N|` : `${f}N`;
+}
 const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
 const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
 
@@ -226,6 +250,7 @@ function render({ model, el }) {
   let hostMoved = false; // the host (a cell, not this view) changed the triangle
   let display = null; // display-unit points of the last drawing
   let heads = {}; // display-unit arrow heads of the last drawing
+  let scales = {}; // the power of two N and the unit normal are drawn at (their labels say it)
 
   function dataPoints() {
     const pts = [get("a"), get("b"), get("c")].map(parsePoint);
@@ -266,8 +291,8 @@ function render({ model, el }) {
     const lMax = Math.max(a.distanceTo(b), a.distanceTo(c), b.distanceTo(c));
     const centroid = a.clone().add(b).add(c).divideScalar(3);
     if (n.length() > 0) {
-      box.push(centroid.clone().add(n.clone().setLength(Math.min(Math.max(n.length(), 0.6 * lMax), N_MAX * lMax))));
-      if (get("show_unit_normal")) box.push(centroid.clone().add(n.clone().setLength(Math.min(Math.max(1 / S, 0.35 * lMax), 2 * lMax))));
+      box.push(centroid.clone().add(n.clone().setLength(drawnLength(n.length() * S * S, S, N_AIM * lMax))));
+      if (get("show_unit_normal")) box.push(centroid.clone().add(n.clone().setLength(drawnLength(1, S, UNIT_AIM * lMax))));
     }
     const lo = box[0].clone();
     const hi = box[0].clone();
@@ -297,6 +322,14 @@ function render({ model, el }) {
       labels.place("axis:" + a, tip, { away: new Vector3(), offset: 18, visible: next.includeOrigin });
       labels.items.get("axis:" + a).el.style.color = colors(a);
     }
+  }
+
+  /**
+   * The length (display units) at which a vector of `length` (data units) is drawn: its true
+   * length length / S, times the power of two that brings it nearest to `aim` (display units).
+   */
+  function drawnLength(length, S, aim) {
+    return (length / S) * drawScale(length / S, aim);
   }
 
   function sameUnits(a, b) {
@@ -367,13 +400,23 @@ function render({ model, el }) {
     const n = new Vector3().crossVectors(U, V);
     const nLen = n.length();
     const degenerate = !!st.degenerate || !(nLen > 0) || !Number.isFinite(nLen);
-    const lMax = Math.max(U.length(), V.length(), 1e-9);
+    const lMax = Math.max(U.length(), V.length(), P.distanceTo(Q), 1e-9); // the longest edge
+    // n = U x V in display units is N / S^2: N's true length in display units is nLen * S
     let nDraw = new Vector3();
-    if (!degenerate) nDraw = n.clone().setLength(Math.min(Math.max(nLen, 0.6 * lMax), N_MAX * lMax));
-    let unitDraw = null;
-    if (!degenerate && get("show_unit_normal")) {
-      unitDraw = n.clone().setLength(Math.min(Math.max(1 / S, 0.35 * lMax), 2 * lMax));
+    let nFactor = 1;
+    if (!degenerate) {
+      nFactor = drawScale(nLen * S, N_AIM * lMax);
+      nDraw = n.clone().setLength(nLen * S * nFactor);
     }
+    let unitDraw = null;
+    let unitFactor = 1;
+    if (!degenerate && get("show_unit_normal")) {
+      unitFactor = drawScale(1 / S, UNIT_AIM * lMax);
+      unitDraw = n.clone().setLength(unitFactor / S);
+    }
+    labels.label("arrow:N", "arrow", scaledLabel(nFactor));
+    labels.label("arrow:unit", "arrow", scaledLabel(unitFactor, true));
+    scales = { N: nFactor, unit: unitDraw ? unitFactor : null };
     const r = frame.radius * 0.014;
     const g = { A, B, C, P, Q, centroid, nDraw, unitDraw, degenerate, showParallelogram: !!get("show_parallelogram"), r };
     drawing.update(g);
@@ -506,6 +549,8 @@ function render({ model, el }) {
     repaint();
   });
 
+  const centroidOf = (d) => d.A.clone().add(d.B).add(d.C).divideScalar(3);
+
   /** Where the vertices and arrow heads are on screen (px in the view), for tests and tools. */
   root.tnxProject = () => {
     if (!display || !frame) return null;
@@ -518,7 +563,10 @@ function render({ model, el }) {
       out[key] = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
     }
     const distance = stage.camera.position.distanceTo(stage.controls.target);
-    return { width, height, distance, points: out, values: ["a", "b", "c"].map((k) => (get(k) || []).map(String)) };
+    // the arrows as drawn, in data units (display units times S), and their drawing scales
+    const vector = (p) => (p && display ? p.clone().sub(centroidOf(display)).multiplyScalar(frame.S).toArray() : null);
+    const drawn = { N: vector(heads.N), unit: vector(heads.unit), scales: { ...scales } };
+    return { width, height, distance, points: out, drawn, values: ["a", "b", "c"].map((k) => (get(k) || []).map(String)) };
   };
 
   stage.resize();
