@@ -141,7 +141,7 @@ def test_dragging_vertex_a_moves_a_and_updates_results_and_url(view):
     # during the drag: the boxes already follow
     view.wait_for_function("['ax','ay','az'].some(id => document.getElementById(id).value !== '0')")
     view.mouse.move(x - 90, y + 110, steps=10)
-    # the address follows too (at most every 100 ms while the boxes change every frame)
+    # the address follows too, once the pointer rests
     view.wait_for_function(URL_SHOWS_A)
     view.mouse.up()
     view.wait_for_function(URL_SHOWS_A)
