@@ -16,13 +16,9 @@ from browser_support import ROOT
 #: page by the tests; the site never serves it.
 AXE_JS = ROOT / "tests" / "browser" / "vendor" / "axe-core" / "axe.min.js"
 AXE = Axe.from_file(AXE_JS)
-#: Only violations are listed in full. label-content-name-mismatch was experimental (off) in
-#: axe-core 4.12, which these tests ran until December 2026, and is on since: the 3D view's
-#: "Reset view" button (named "Reset the camera", js/explorer/src/index.js) fails it. Fix the
-#: name there, then drop this rule from the list.
+#: Only violations are listed in full.
 AXE_OPTIONS = {
     "resultTypes": ["violations"],
-    "rules": {"label-content-name-mismatch": {"enabled": False}},
 }
 
 VIEWPORTS = {"phone": (360, 740), "tablet": (768, 1024), "desktop": (1280, 800)}

@@ -105,7 +105,7 @@ def test_the_calculator_has_a_webgl_view_served_from_the_site(view, traffic):
     # the toolbar is made of real buttons
     buttons = view.locator("#tn-view .tnx-toolbar button")
     names = buttons.evaluate_all("bs => bs.map(b => b.getAttribute('aria-label') || b.textContent)")
-    for name in ("Reset the camera", "View along the x axis", "View along the y axis"):
+    for name in ("Reset view", "View along the x axis", "View along the y axis"):
         assert name in names
     assert "View along the z axis" in names
     # the first picture frames the triangle (the Reset and new-triangle cases are below)
@@ -128,7 +128,7 @@ def test_orbiting_changes_the_picture_but_not_the_numbers(view):
     assert outputs(view) == before_out
     assert view.url == before_url
     # reset brings the first picture back
-    view.get_by_role("button", name="Reset the camera").click()
+    view.get_by_role("button", name="Reset view").click()
     assert canvas_png(view) == before
 
 
@@ -276,7 +276,7 @@ def test_the_views_order_button_flips_the_calculator(view):
     assert outputs(view) == python_outputs(inputs(view), winding="ACB")
     assert query(view)["w"] == ["ACB"]
     # turned over, N points the other way: Reset frames the triangle with N's head in view
-    view.get_by_role("button", name="Reset the camera").click()
+    view.get_by_role("button", name="Reset view").click()
     settle(view)
     assert_framed(view)
     # and the form's own flip turns the view back
@@ -418,7 +418,7 @@ def test_the_camera_frames_a_new_triangle_and_a_drag_never_moves_it(view, triang
     for key in ("B", "C"):
         assert after[key] == pytest.approx(before[key], abs=0.5), key
     # Reset view frames it again
-    view.get_by_role("button", name="Reset the camera").click()
+    view.get_by_role("button", name="Reset view").click()
     settle(view)
     assert_framed(view)
 
@@ -511,7 +511,7 @@ def test_a_swipe_over_the_view_scrolls_the_page_a_tap_activates_it_and_a_pinch_z
         assert page.evaluate("window.scrollY") == scroll
         assert page.evaluate(PROJECTED)["points"]["A"] != before["A"]  # the view turned
         # two fingers apart: the view zooms in (the triangle grows on the screen)
-        page.locator("#tn-view").get_by_role("button", name="Reset the camera").click()
+        page.locator("#tn-view").get_by_role("button", name="Reset view").click()
         settle(page)
 
         drawn = page.evaluate(PROJECTED)

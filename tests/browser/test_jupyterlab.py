@@ -391,7 +391,7 @@ def test_fifty_sets_then_a_final_set_and_two_views_that_follow_each_other(
     assert_views_show(page, state, views=2)
     # the banner of refusal, the legend and the hint cover nothing; Reset frames it again
     assert_framed(page, 0, framed=False)
-    roots.nth(0).get_by_role("button", name="Reset the camera").click()
+    roots.nth(0).get_by_role("button", name="Reset view").click()
     assert_framed(page, 0)
 
     # a cell that makes the explorer again: still one three.js on the page, no warning

@@ -33,10 +33,10 @@ const KEYS = [
 // what the view draws from its own edit until the host answers
 const DRAWN = new Set(["a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal"]);
 // N is drawn at its true length (in the axes' units) when that is about the longest edge
-// (0.57 to 1.13 times it); otherwise it is scaled by a power of two into that range, so the
+// (0.49 to 0.99 times it); otherwise it is scaled by a power of two into that range, so the
 // triangle and N fit the picture together, and its label says so: "N/4", "2N" (as the
 // matplotlib figure labels it). The unit normal likewise: "N/(4|N|)", "2N/|N|".
-const N_AIM = 0.8; // the drawn length aimed at, times the longest edge
+const N_AIM = 0.7; // the drawn length aimed at, times the longest edge (at most 0.99 of it: the triangle keeps its share of the frame)
 const UNIT_AIM = 0.5;
 
 /** The power of two that brings `length` nearest to `aim` on a log scale (1 when it is 0). */
@@ -212,11 +212,13 @@ function render({ model, el }) {
   unit.setAttribute("aria-label", "Unit normal N/|N|");
   unit.title = "Show the unit normal N/|N|";
   para.title = "Show the parallelogram on U and V (area |N|)";
-  const reset = button("", "Reset the camera", () => {
+  // Named by its visible words ("Reset view", or "Reset" when narrow), so speech users can say them.
+  const reset = button("", "Reset view", () => {
     if (frame) applyFrame(computeFrame(lastGood || dataPoints(), get("winding")), true);
     stage.reset();
   });
   reset.append(element("span", "tnx-long", "Reset view"), element("span", "tnx-short", "Reset"));
+  reset.title = "Reset view: frame the triangle and its arrows again";
   toolbar.append(
     reset,
     button("x", "View along the x axis", () => stage.along("x")),

@@ -38,6 +38,7 @@ export class LabelLayer {
     if (text !== undefined && item.text !== text) {
       item.el.textContent = text;
       item.text = text;
+      item.half = null; // its size is measured again when next shown
     }
     return item;
   }
@@ -110,6 +111,13 @@ export class LabelLayer {
         placed.push({ x, y });
       }
       item.el.hidden = false;
+      if (item.kind === "arrow") {
+        // keep an arrow's label ("N/2", "N/|N|") wholly inside the view; measured once per text
+        if (!item.half || !item.half.w) item.half = { w: item.el.offsetWidth / 2, h: item.el.offsetHeight / 2 };
+        const { w, h } = item.half;
+        if (size.width > 2 * w + 4) x = Math.min(Math.max(x, w + 2), size.width - w - 2);
+        if (size.height > 2 * h + 4) y = Math.min(Math.max(y, h + 2), size.height - h - 2);
+      }
       item.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
     }
   }
