@@ -45,6 +45,12 @@ function drawScale(length, aim) {
   return 2 ** Math.round(Math.log2(aim / length));
 }
 
+/** How a vector of true `length` (display units) is drawn: its factor and its drawn length. */
+function drawnAt(length, aim) {
+  const factor = drawScale(length, aim);
+  return { factor, length: length * factor };
+}
+
 const SUPERSCRIPT = "⁰¹²³⁴⁵⁶⁷⁸⁹";
 function powerText(factor) {
   const k = Math.round(Math.log2(factor));
@@ -293,8 +299,9 @@ function render({ model, el }) {
     const lMax = Math.max(a.distanceTo(b), a.distanceTo(c), b.distanceTo(c));
     const centroid = a.clone().add(b).add(c).divideScalar(3);
     if (n.length() > 0) {
-      box.push(centroid.clone().add(n.clone().setLength(drawnLength(n.length() * S * S, S, N_AIM * lMax))));
-      if (get("show_unit_normal")) box.push(centroid.clone().add(n.clone().setLength(drawnLength(1, S, UNIT_AIM * lMax))));
+      // n = U x V in display units is N / S^2: N's true length in display units is |n| * S
+      box.push(centroid.clone().add(n.clone().setLength(drawnAt(n.length() * S, N_AIM * lMax).length)));
+      if (get("show_unit_normal")) box.push(centroid.clone().add(n.clone().setLength(drawnAt(1 / S, UNIT_AIM * lMax).length)));
     }
     const lo = box[0].clone();
     const hi = box[0].clone();
@@ -324,14 +331,6 @@ function render({ model, el }) {
       labels.place("axis:" + a, tip, { away: new Vector3(), offset: 18, visible: next.includeOrigin });
       labels.items.get("axis:" + a).el.style.color = colors(a);
     }
-  }
-
-  /**
-   * The length (display units) at which a vector of `length` (data units) is drawn: its true
-   * length length / S, times the power of two that brings it nearest to `aim` (display units).
-   */
-  function drawnLength(length, S, aim) {
-    return (length / S) * drawScale(length / S, aim);
   }
 
   function sameUnits(a, b) {
@@ -407,14 +406,16 @@ function render({ model, el }) {
     let nDraw = new Vector3();
     let nFactor = 1;
     if (!degenerate) {
-      nFactor = drawScale(nLen * S, N_AIM * lMax);
-      nDraw = n.clone().setLength(nLen * S * nFactor);
+      const d = drawnAt(nLen * S, N_AIM * lMax);
+      nFactor = d.factor;
+      nDraw = n.clone().setLength(d.length);
     }
     let unitDraw = null;
     let unitFactor = 1;
     if (!degenerate && get("show_unit_normal")) {
-      unitFactor = drawScale(1 / S, UNIT_AIM * lMax);
-      unitDraw = n.clone().setLength(unitFactor / S);
+      const d = drawnAt(1 / S, UNIT_AIM * lMax);
+      unitFactor = d.factor;
+      unitDraw = n.clone().setLength(d.length);
     }
     labels.label("arrow:N", "arrow", scaledLabel(nFactor));
     labels.label("arrow:unit", "arrow", scaledLabel(unitFactor, true));
