@@ -60,13 +60,16 @@ lab-env: $(UV_DEP)
 lab: lab-env
 	$(RUN) jupyter lab notebooks $(LAB_FLAGS) $(LAB_ARGS)
 
-## test: lint, types, unit/property/doctests, notebooks (nbval), the site and its browser tests
+## test: lint, types, unit/property/doctests, the site and its browser tests, the notebooks (nbval)
+# The notebooks are checked by nbval once, in the browser stage (tests/browser/test_wheel.py): copied
+# out of the built wheel and run in a kernel of the fresh venv it is installed in. `make nbval` checks
+# them in this environment.
 # Prints each stage's time at the end, also when a stage fails.
 test:
 	@$(PY) scripts/stages.py reset
 	@$(MAKE) --no-print-directory test-stages; status=$$?; $(PY) scripts/stages.py report; exit $$status
 
-test-stages: env lint types unit nbval docs-build browser
+test-stages: env lint types unit docs-build browser
 
 lint: env
 	$(TIMED) $(RUN) ruff check trinormal tests benchmarks docs scripts
@@ -79,6 +82,7 @@ types: env
 unit: env
 	$(TIMED) $(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q -n auto
 
+## nbval: the notebooks' stored outputs, re-run here (make test runs nbval on the wheel's copies)
 nbval: env
 	$(TIMED) $(RUN) pytest --nbval --nbval-current-env --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks -q
 

@@ -1,28 +1,23 @@
-"""Every page of the built site, visited twice, with every per-page check made in those visits.
+"""Every page of the built site, visited once, with every per-page check made in that visit.
 
-Each page is two tests (parametrized from the site's sources, so the two browser workers share
-the pages); ``test_the_pages_tested_are_the_pages_built`` holds that list to the build.
-
-On a desktop (1280x800), in the light palette:
+Each page is one test (parametrized from the site's sources, so the two browser workers share
+the pages); ``test_the_pages_tested_are_the_pages_built`` holds that list to the build. A
+phone (360x740) opens the page, which is then widened to a tablet's (768x1024) and a desktop's
+(1280x800) width:
 
 * the page loads without a failed request, an HTTP error, a console or page error, or a
   request to another origin;
+* the layout reads well at each width, in both palettes: no sideways scrolling of the page;
+  every display equation visible and fitting or scrolling inside its own box; tables and
+  notebook outputs scrolling inside their own box, which the keyboard can reach; no number of
+  a notebook's text output broken across two lines (``page_checks.LAYOUT_PROBLEMS``);
+* axe-core finds nothing serious on the phone in the dark palette (where boxes that scroll
+  sideways are most common), nor on the desktop in the light palette;
 * the math engine (KaTeX) loads only where there is math, and has typeset it by then;
   MathJax never loads;
-* a notebook's page: a download link to the very notebook, a link to the instructions for
-  running it, its navigation entry, its math typeset, its widget outputs replaced by a note
-  (and a picture) and every figure with a text alternative;
-* axe-core finds nothing serious.
-
-On a phone (360x740), where the page is opened:
-
-* the layout reads well at the phone's, a tablet's (768x1024) and the desktop's width, in
-  both palettes: no sideways scrolling of the page; every display equation visible and
-  fitting or scrolling inside its own box; tables and notebook outputs scrolling inside their
-  own box, which the keyboard can reach; no number of a notebook's text output broken across
-  two lines (``page_checks.LAYOUT_PROBLEMS``);
-* axe-core finds nothing serious in the dark palette, where boxes that scroll sideways are
-  most common.
+* a notebook's page, on the desktop: a download link to the very notebook, a link to the
+  instructions for running it, its navigation entry, its math typeset, its widget outputs
+  replaced by a note (and a picture) and every figure with a text alternative.
 """
 
 from __future__ import annotations
@@ -47,6 +42,7 @@ from page_checks import (
     open_for_axe,
     prepare_for_axe,
     resize,
+    set_scheme,
     settle,
     size,
 )
@@ -84,14 +80,35 @@ def test_the_404_page_loads_without_errors_or_foreign_requests(page, server, tra
 
 
 @pytest.mark.parametrize("path", PAGES, ids=_page_id)
-def test_on_a_desktop_in_light(page, server, traffic, path):
+def test_every_page_at_every_width_in_both_palettes(page, server, traffic, path):
     where = path or "home"
-    page.set_viewport_size(size("desktop"))
+    problems: dict[str, list[str]] = {}
+
+    # a phone opens the page: it loads cleanly, its math is typeset, its boxes checked
+    page.set_viewport_size(size("phone"))
     _loads_cleanly(page, server + path, traffic, where)
+    has_math = has_math_markup(page)
+    if has_math:
+        page.wait_for_selector("body[data-math='typeset']", timeout=20_000)
+    page.wait_for_selector("body[data-scrollboxes='checked']")
+    problems |= layout_problems(page, f"{where} @ phone")
+
+    # axe on the page as opened on the phone, in the dark palette; a page that axe's
+    # preparation changes (the mesh page loads an example) is opened again for it, after the
+    # layout checks
+    changes = changes_page_for_axe(page)
+    dark: list[dict[str, Any]] = []
+    if not changes:
+        prepare_for_axe(page, "slate")
+        dark = axe_serious(page, where)
+
+    for label in ("tablet", "desktop"):
+        resize(page, *VIEWPORTS[label])
+        problems |= layout_problems(page, f"{where} @ {label}")
+    assert not problems, json.dumps(problems, indent=1, ensure_ascii=False)
 
     # the math engine: loaded only where there is math, and done by the time the page is idle
     engines = [u for u in traffic.requests if any(e in u.lower() for e in MATH_ENGINES)]
-    has_math = has_math_markup(page)
     assert has_math is MATH_EXPECTED.get(path, has_math), f"{where}: math found: {has_math}"
     if has_math:
         assert any(u.endswith("/katex.min.js") for u in engines), f"{where}: no KaTeX"
@@ -100,47 +117,20 @@ def test_on_a_desktop_in_light(page, server, traffic, path):
         assert engines == [], f"{where} has no math but loads {engines}"
     assert not any("mathjax" in u.lower() for u in traffic.requests), where
 
-    if path in NOTEBOOKS:
-        _check_notebook_page(page, server, NOTEBOOKS[path])
-        page.evaluate("() => window.scrollTo(0, 0)")  # axe reads the page as it opens
-
-    prepare_for_axe(page, "default")
-    found = axe_serious(page, where)
-    assert not found, json.dumps({f"{where} (light, 1280px)": found}, indent=1)
-    assert not traffic.problems()
-
-
-@pytest.mark.parametrize("path", PAGES, ids=_page_id)
-def test_on_a_phone_at_every_width_and_in_dark(page, server, traffic, path):
-    where = path or "home"
-    problems: dict[str, list[str]] = {}
-    found: list[dict[str, Any]] = []
-    page.set_viewport_size(size("phone"))
-    page.goto(server + path)
-    settle(page)
-    if has_math_markup(page):
-        page.wait_for_selector("body[data-math='typeset']", timeout=20_000)
-    page.wait_for_selector("body[data-scrollboxes='checked']")
-    problems |= layout_problems(page, f"{where} @ phone")
-
-    # axe on the page as opened on the phone; a page that axe's preparation changes (the mesh
-    # page loads an example) is opened again for it, after the layout checks
-    changes = changes_page_for_axe(page)
-    if not changes:
-        prepare_for_axe(page, "slate")
-        found = axe_serious(page, where)
-
-    for label in ("tablet", "desktop"):
-        resize(page, *VIEWPORTS[label])
-        problems |= layout_problems(page, f"{where} @ {label}")
-
     if changes:
         page.set_viewport_size(size("phone"))
         open_for_axe(page, server + path, "slate")
-        found = axe_serious(page, where)
+        dark = axe_serious(page, where)
+        resize(page, *VIEWPORTS["desktop"])
+    assert not dark, json.dumps({f"{where} (dark, 360px)": dark}, indent=1)
 
-    assert not problems, json.dumps(problems, indent=1, ensure_ascii=False)
-    assert not found, json.dumps({f"{where} (dark, 360px)": found}, indent=1)
+    # on the desktop, in the light palette: a notebook's page, then axe on the page from its top
+    if path in NOTEBOOKS:
+        _check_notebook_page(page, server, NOTEBOOKS[path])
+        page.evaluate("() => window.scrollTo(0, 0)")
+    set_scheme(page, "default")  # the page was prepared for axe on the phone
+    light = axe_serious(page, where)
+    assert not light, json.dumps({f"{where} (light, 1280px)": light}, indent=1)
     assert not traffic.problems()
 
 

@@ -3,16 +3,21 @@
 The session fixtures (conftest.py) build the wheel once, install ``wheel[notebooks]``
 into a fresh venv in a temporary folder, and start the run's one JupyterLab server
 from that venv. Here: the wheel carries the licences, the explorer's bundle, the
-notebooks and the typing marker; ``trinormal-notebooks`` copies the notebooks out and
-they execute there with nbclient; a core-only install runs the CLI and names the extra
-to install for the rest. The explorer rendering from that install in JupyterLab and in
+notebooks and the typing marker; ``trinormal-notebooks`` copies the notebooks out, and
+nbval runs them there, in a kernel of that venv, against the outputs stored in them (this
+is the run's one nbval check of the notebooks: ``make test`` does not run them a second
+time in the development environment); a core-only install runs the CLI and names the
+extra to install for the rest. The explorer rendering from that install in JupyterLab and in
 Notebook 7 is tested in test_wheel_lab.py.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import subprocess
+import sys
+import xml.etree.ElementTree as ET
 import zipfile
 from pathlib import Path
 from typing import Any
@@ -22,24 +27,18 @@ from install_support import install
 
 NOTEBOOKS = sorted(p.name for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 
-#: Executes every notebook in a folder with nbclient, from a clean kernel, in that folder.
-EXECUTE = """\
-import sys
-from pathlib import Path
+#: How nbval cleans outputs before comparing them (the Makefile's ``nbval`` target uses it too).
+SANITIZE = ROOT / "tests" / "nbval_sanitize.cfg"
 
-import nbformat
-from nbclient import NotebookClient
 
-folder = Path(sys.argv[1])
-for path in sorted(folder.glob("*.ipynb")):
-    nb = nbformat.read(path, as_version=4)
-    client = NotebookClient(
-        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(folder)}}
-    )
-    client.execute()
-    nbformat.write(nb, path)
-    print("executed", path.name, flush=True)
-"""
+def kernel_of(python: Path, where: Path) -> dict[str, str]:
+    """A Jupyter kernel spec that runs ``python``'s ipykernel; the environment that finds it."""
+    spec = where / "kernels" / "trinormal-wheel"
+    spec.mkdir(parents=True)
+    argv = [str(python), "-m", "ipykernel_launcher", "-f", "{connection_file}"]
+    kernel = {"argv": argv, "display_name": "trinormal from the wheel", "language": "python"}
+    (spec / "kernel.json").write_text(json.dumps(kernel), encoding="utf-8")
+    return {**os.environ, "JUPYTER_PATH": str(where)}
 
 
 def run(args: list[Any], cwd: Path) -> subprocess.CompletedProcess[str]:
@@ -78,15 +77,22 @@ def test_copied_notebooks_execute_in_the_installed_package(wheel_env: Path, tmp_
     # the kernel imports the installed package, not this checkout
     where = run([wheel_env, "-c", "import trinormal; print(trinormal.__file__)"], cwd=dest)
     assert Path(where.stdout.strip()).is_relative_to(bin_dir.parent), where
-    done = run([wheel_env, "-c", EXECUTE, dest], cwd=dest)
-    assert done.returncode == 0, done.stdout + done.stderr[-3000:]
-    assert done.stdout.split() == [w for n in NOTEBOOKS for w in ("executed", n)]
-    for name in NOTEBOOKS:
-        nb = json.loads((dest / name).read_text(encoding="utf-8"))
-        errors = [
-            o for c in nb["cells"] for o in c.get("outputs", []) if o["output_type"] == "error"
-        ]
-        assert not errors, name
+    # nbval (this environment's) checks every copied notebook's outputs, run in the installed
+    # package's kernel from a clean start, in the folder they were copied to
+    env = kernel_of(wheel_env, tmp_path / "jupyter")
+    junit = tmp_path / "nbval.xml"
+    done = subprocess.run(
+        [
+            sys.executable, "-m", "pytest", "--nbval", "--nbval-kernel-name", "trinormal-wheel",
+            "--nbval-sanitize-with", str(SANITIZE), "-p", "no:cacheprovider", "-q",
+            f"--junit-xml={junit}", str(dest),
+        ],
+        cwd=dest, env=env, capture_output=True, text=True,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stdout[-6000:] + done.stderr[-3000:]
+    cases = ET.parse(junit).getroot().iter("testcase")
+    checked = {Path(c.get("file") or c.get("classname", "")).name for c in cases}
+    assert {n for n in checked if n.endswith(".ipynb")} == set(NOTEBOOKS), checked
 
 
 def test_python_m_form_copies_too(wheel_env: Path, tmp_path: Path) -> None:
