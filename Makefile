@@ -4,8 +4,12 @@
 PYTHON ?= python3
 export UV_PYTHON_DOWNLOADS := never
 # No bytecode compiling when installing (44 s of CPU for every group here): Python compiles what
-# is imported, once, on first import.
+# is imported, once, on first import, and keeps it. For that, PYTHONDONTWRITEBYTECODE (set on some
+# machines, this one included) is not passed on: with it, every process (each pytest worker, the
+# JupyterLab server, every kernel) compiled every module it imported from source, every time
+# (collecting the unit tests: 18 s of CPU against 5 s with the bytecode kept).
 export UV_COMPILE_BYTECODE := 0
+unexport PYTHONDONTWRITEBYTECODE
 export NO_MKDOCS_2_WARNING := 1
 
 SYSTEM_UV := $(shell command -v uv 2>/dev/null)
