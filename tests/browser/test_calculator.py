@@ -15,6 +15,8 @@ VECTORS = json.loads((ROOT / "tests/data/calculator_vectors.json").read_text(enc
 FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
 OUTPUTS = {f.key: "#" + f.output_id for f in FIELDS_SPEC}
 DASH = "—"
+#: The boxes of the page as it opens (the worked example).
+DEFAULT = dict(zip(FIELDS, ["0", "0", "0", "1", "0", "0", "0", "1", "0"], strict=True))
 
 
 def open_calculator(page, url: str) -> None:
@@ -31,8 +33,21 @@ def calc(page, server, traffic):
     assert not traffic.problems()
 
 
+#: The readout as a reader sees it (each output's innerText, as Playwright's inner_text reads it),
+#: its status line and the status's state, in one call.
+_READOUT = """(ids) => ({
+  outputs: Object.fromEntries(Object.entries(ids).map(([k, sel]) => [k, document.querySelector(sel).innerText])),
+  status: document.getElementById('out-status').innerText,
+  state: document.getElementById('out-status').getAttribute('data-state'),
+})"""
+
+
+def readout(page) -> dict:
+    return page.evaluate(_READOUT, OUTPUTS)
+
+
 def outputs(page) -> dict[str, str]:
-    return {key: page.locator(sel).inner_text() for key, sel in OUTPUTS.items()}
+    return readout(page)["outputs"]
 
 
 def status(page) -> str:
@@ -56,20 +71,53 @@ def test_the_default_page_is_the_worked_example(calc):
     assert status(calc) == "A proper triangle: the unit normal is defined."
 
 
+#: Every vector entered into the page's own form, one after the other, in one call: the nine
+#: boxes, the winding and the precision set, then an input event sent (the page's handler reads
+#: the whole form on each one, as it does when a reader types), so the page computes with its
+#: core and writes the readout, which is read back as a reader sees it.
+_ENTER_ALL = """([vectors, fields, ids]) => vectors.map((v) => {
+  const values = [...v.a, ...v.b, ...v.c];
+  fields.forEach((id, i) => { document.getElementById(id).value = values[i]; });
+  document.getElementById('winding').value = v.winding;
+  const precision = document.getElementById('precision');
+  precision.value = String(v.precision);
+  precision.dispatchEvent(new Event('input', {bubbles: true}));
+  const status = document.getElementById('out-status');
+  return {
+    outputs: Object.fromEntries(Object.entries(ids).map(([k, sel]) => [k, document.querySelector(sel).innerText])),
+    status: status.innerText,
+    state: status.getAttribute('data-state'),
+  };
+})"""
+
+#: Vectors also typed into the boxes through Playwright (the real UI path, each box filled and
+#: the winding chosen in its select): an exact result with fractions in the ACB winding at full
+#: precision, a degenerate triangle, and refused input with its message.
+UI_SAMPLE = ["precision 15 on thirds", "collinear (table row 4)", "not a number", "Infinity"]
+
+
+def _want(v: dict) -> dict:
+    state = "error" if not v["ok"] else "degenerate" if v["degenerate"] else "ok"
+    return {"outputs": v["expected"], "status": v["status"], "state": state}
+
+
 def test_every_shared_vector_matches_python(calc):
+    """Every shared vector through the page's form and handlers; a sample typed in the boxes."""
     assert len(VECTORS) >= 40
-    mismatches = []
-    for v in VECTORS:
-        enter(calc, v["a"], v["b"], v["c"], v["winding"], v["precision"])
-        got = outputs(calc)
-        got_status = status(calc)
-        state = calc.locator("#out-status").get_attribute("data-state")
-        want_state = "error" if not v["ok"] else "degenerate" if v["degenerate"] else "ok"
-        if got != v["expected"] or got_status != v["status"] or state != want_state:
-            mismatches.append(
-                {"label": v["label"], "got": got, "status": got_status, "state": state}
-            )
+    got = calc.evaluate(_ENTER_ALL, [VECTORS, FIELDS, OUTPUTS])
+    mismatches = [
+        {"label": v["label"], "got": g, "want": _want(v)}
+        for v, g in zip(VECTORS, got, strict=True)
+        if g != _want(v)
+    ]
     assert not mismatches, json.dumps(mismatches, indent=1, ensure_ascii=False)
+    by_label = {v["label"]: v for v in VECTORS}
+    sample = [by_label[label] for label in UI_SAMPLE]
+    assert {_want(v)["state"] for v in sample} == {"ok", "degenerate", "error"}
+    assert {v["winding"] for v in sample} == {"ABC", "ACB"}
+    for v in sample:
+        enter(calc, v["a"], v["b"], v["c"], v["winding"], v["precision"])
+        assert readout(calc) == _want(v), v["label"]
 
 
 def test_results_update_as_you_type(calc):
@@ -128,9 +176,10 @@ def test_url_state_round_trip(page, server, traffic):
     query = parse_qs(urlsplit(page.evaluate("location.href")).query)
     assert query == {"a": ["1,1,1"], "b": ["2,1,1"], "c": ["1,2,1/3"], "w": ["ABC"], "p": ["5"]}
     shared = page.evaluate("location.href")
-    # ... and opening that address elsewhere restores the same state
-    open_calculator(page, server + "calculator/")
+    # ... and opening that address afresh (a new document, not this one) restores the same state
+    page.evaluate("window.__tnBefore = true")
     open_calculator(page, shared)
+    assert page.evaluate("window.__tnBefore") is None, "the address did not load a new page"
     assert page.locator("#cz").input_value() == "1/3"
     assert outputs(page) == expected(("1", "1", "1"), ("2", "1", "1"), ("1", "2", "1/3"), "ABC", 5)
     assert not traffic.problems()
@@ -147,30 +196,33 @@ def test_url_with_odd_values_round_trips(page, server, traffic):
     assert not traffic.problems()
 
 
-@pytest.mark.parametrize(
-    ("field", "text", "message"),
-    [
-        ("ax", "", "A.x is empty"),
-        ("by", "abc", "B.y = 'abc' is not a number"),
-        ("cz", "1/0", "C.z = '1/0' divides by zero"),
-        ("bx", "NaN", "B.x is NaN"),
-        ("cy", "Infinity", "C.y is infinite"),
-    ],
-)
-def test_bad_input_names_the_field_and_dashes_the_outputs(calc, field, text, message):
-    calc.fill("#" + field, text)
-    assert status(calc).startswith(message)
-    assert calc.locator("#out-status").get_attribute("data-state") == "error"
-    assert calc.locator("#" + field).get_attribute("aria-invalid") == "true"
-    shown = outputs(calc)
-    assert set(shown.values()) == {DASH}
-    page_text = calc.locator(".tn-results").inner_text()
-    for word in ("NaN", "undefined", "Infinity"):
-        assert word not in page_text
-    # fixing the field brings the numbers back
-    calc.fill("#" + field, "0" if field != "bx" else "1")
-    assert calc.locator("#" + field).get_attribute("aria-invalid") is None
-    assert DASH not in calc.locator("#out-normal").inner_text()
+#: Bad input in one box: the field, what is typed, the message that starts the status line.
+BAD_INPUT = [
+    ("ax", "", "A.x is empty"),
+    ("by", "abc", "B.y = 'abc' is not a number"),
+    ("cz", "1/0", "C.z = '1/0' divides by zero"),
+    ("bx", "NaN", "B.x is NaN"),
+    ("cy", "Infinity", "C.y is infinite"),
+]
+
+
+def test_bad_input_names_the_field_and_dashes_the_outputs(calc):
+    """Each bad value in turn, on one visit: typed, checked, then fixed before the next."""
+    for field, text, message in BAD_INPUT:
+        case = f"{field} = {text!r}"
+        calc.fill("#" + field, text)
+        assert status(calc).startswith(message), case
+        assert calc.locator("#out-status").get_attribute("data-state") == "error", case
+        assert calc.locator("#" + field).get_attribute("aria-invalid") == "true", case
+        shown = outputs(calc)
+        assert set(shown.values()) == {DASH}, case
+        page_text = calc.locator(".tn-results").inner_text()
+        for word in ("NaN", "undefined", "Infinity"):
+            assert word not in page_text, case
+        # fixing the field brings the numbers back (the default triangle's value)
+        calc.fill("#" + field, DEFAULT[field])
+        assert calc.locator("#" + field).get_attribute("aria-invalid") is None, case
+        assert DASH not in calc.locator("#out-normal").inner_text(), case
 
 
 def test_degenerate_triangle_says_undefined(calc):
