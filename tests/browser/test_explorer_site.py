@@ -392,18 +392,27 @@ def assert_framed(page) -> dict[str, list[float]]:
     return drawn["points"]
 
 
-@pytest.mark.parametrize(
-    "triangle",
-    [
-        (("0", "0", "0"), ("0.1", "0", "0"), ("0", "0.1", "0")),  # a tenth of the usual size
-        (("0.3", "0.1", "0.2"), ("0.1", "0.4", "0"), ("0", "0", "0.3")),
-        (("3", "3", "3"), ("3.5", "3", "3"), ("3", "3.5", "3.2")),  # far from the origin
-        (("-4", "4", "1"), ("-3", "4.5", "1"), ("-3.6", "3.4", "2")),
-        (("-1200", "300", "0"), ("4100", "900", "-800"), ("2500", "3700", "1500")),  # huge
-        (("1e6", "1e6", "1e6"), ("1000400", "1e6", "1e6"), ("1e6", "1000300", "1000200")),
-    ],
-)
-def test_the_camera_frames_a_new_triangle_and_a_drag_never_moves_it(view, triangle):
+#: Triangles the camera must frame: small, off-centre, far from the origin, huge.
+FRAMED = [
+    (("0", "0", "0"), ("0.1", "0", "0"), ("0", "0.1", "0")),  # a tenth of the usual size
+    (("0.3", "0.1", "0.2"), ("0.1", "0.4", "0"), ("0", "0", "0.3")),
+    (("3", "3", "3"), ("3.5", "3", "3"), ("3", "3.5", "3.2")),  # far from the origin
+    (("-4", "4", "1"), ("-3", "4.5", "1"), ("-3.6", "3.4", "2")),
+    (("-1200", "300", "0"), ("4100", "900", "-800"), ("2500", "3700", "1500")),  # huge
+    (("1e6", "1e6", "1e6"), ("1000400", "1e6", "1e6"), ("1e6", "1000300", "1000200")),
+]
+
+
+def test_the_camera_frames_a_new_triangle_and_a_drag_never_moves_it(view):
+    """Each triangle of FRAMED typed in turn on one visit (a failure names the triangle)."""
+    for triangle in FRAMED:
+        try:
+            _frame_drag_and_reset(view, triangle)
+        except AssertionError as err:
+            raise AssertionError(f"triangle {triangle}: {err}") from err
+
+
+def _frame_drag_and_reset(view, triangle) -> None:
     set_triangle(view, *triangle)
     before = assert_framed(view)
     # dragging A moves A only: B and C stay where they are on the screen (no re-framing)
@@ -620,28 +629,34 @@ def _scale_label(ratio: float, unit: bool = False) -> str:
     return f"{f}N/|N|" if unit else f"{f}N"
 
 
-@pytest.mark.parametrize(
-    ("triangle", "expected"),
-    [
-        ((("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0")), "N"),  # |N| = 1: true length
-        ((("0", "0", "0"), ("4", "0", "0"), ("0", "4", "0")), "N/4"),  # |N| = 16, edges 4
-        ((("0", "0", "0"), ("0.3", "0", "0"), ("0", "0.3", "0")), "4N"),  # |N| = 0.09
-    ],
-)
-def test_a_scaled_n_says_by_how_much_in_its_label(view, triangle, expected):
-    set_triangle(view, *triangle)
-    view.get_by_role("button", name="Unit normal N/|N|").click()
-    settle(view)
-    drawn = view.evaluate(PROJECTED)["drawn"]
-    r = triangle_normal(*triangle)
-    normal = [float(x) for x in r.exact.normal]
-    labels = view.locator("#tn-view .tnx-arrow:visible").all_inner_texts()
-    # the arrow drawn is N times some factor: the same direction, the length the label says
-    ratio = math.hypot(*drawn["N"]) / math.hypot(*normal)
-    for got, want in zip(drawn["N"], normal, strict=True):
-        assert got == pytest.approx(want * ratio, abs=1e-9 * math.hypot(*normal) * ratio)
-    assert _scale_label(ratio) == expected
-    assert expected in labels
-    # the unit normal too: drawn `unit_ratio` times its length of 1, and labelled so
-    unit_ratio = math.hypot(*drawn["unit"])
-    assert _scale_label(unit_ratio, unit=True) in labels
+#: Triangles and the label their N must carry: true length, shrunk, grown.
+SCALED = [
+    ((("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0")), "N"),  # |N| = 1: true length
+    ((("0", "0", "0"), ("4", "0", "0"), ("0", "4", "0")), "N/4"),  # |N| = 16, edges 4
+    ((("0", "0", "0"), ("0.3", "0", "0"), ("0", "0.3", "0")), "4N"),  # |N| = 0.09
+]
+
+
+def test_a_scaled_n_says_by_how_much_in_its_label(view):
+    """Each triangle of SCALED typed in turn on one visit, the unit normal shown."""
+    unit = view.get_by_role("button", name="Unit normal N/|N|")
+    unit.click()
+    assert unit.get_attribute("aria-pressed") == "true"
+    for triangle, expected in SCALED:
+        set_triangle(view, *triangle)
+        settle(view)
+        drawn = view.evaluate(PROJECTED)["drawn"]
+        r = triangle_normal(*triangle)
+        normal = [float(x) for x in r.exact.normal]
+        labels = view.locator("#tn-view .tnx-arrow:visible").all_inner_texts()
+        # the arrow drawn is N times some factor: the same direction, the length the label says
+        ratio = math.hypot(*drawn["N"]) / math.hypot(*normal)
+        for got, want in zip(drawn["N"], normal, strict=True):
+            assert got == pytest.approx(want * ratio, abs=1e-9 * math.hypot(*normal) * ratio), (
+                triangle
+            )
+        assert _scale_label(ratio) == expected, triangle
+        assert expected in labels, (triangle, labels)
+        # the unit normal too: drawn `unit_ratio` times its length of 1, and labelled so
+        unit_ratio = math.hypot(*drawn["unit"])
+        assert _scale_label(unit_ratio, unit=True) in labels, (triangle, labels)
