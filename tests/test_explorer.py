@@ -438,7 +438,7 @@ def test_exact_values_set_by_code_stay_exact_everywhere():
 def test_a_slider_moved_in_the_browser_lands_exactly_on_the_grid():
     # the view sends the grid point as text ("3.3"), never the float 3.3000000000000007
     ex = Explorer()
-    assert edit(ex, {"b": ["3.3", "0", "0"]})["ok"]
+    assert edit(ex, {"bx": "3.3"})["ok"]
     assert ex.texts["bx"] == "3.3" and ex.result.exact.b[0] == Fraction(33, 10)
     assert ex.inputs["bx"].value == "3.3" and ex.view.b == ["3.3", "0", "0"]
 
@@ -455,7 +455,7 @@ def test_code_makes_new_versions_and_browser_edits_do_not():
     ex.view.show_parallelogram = True  # a trait set from a cell is the kernel's too
     assert ex.view.version > v1
     v2 = ex.view.version
-    answer = edit(ex, {"c": ["0", "2", "0"]})
+    answer = edit(ex, {"cy": "2"})
     assert answer == {"view": "w1", "seq": edit.seq, "ok": True, "stale": False, "error": ""}
     assert ex.view.version == v2 and ex.result.exact.c == (0, 2, 0)
 
@@ -465,7 +465,7 @@ def test_an_edit_made_before_a_cell_set_values_is_refused():
     ex = Explorer(c=(0, 1, 0))
     old = ex.view.version
     ex.set(a=(0, 0, 0), b=(1, 0, 0), c=(0, "1/3", 0))  # the last cell
-    answer = edit(ex, {"c": ["0", "0.3", "0"]}, base=old)  # the late answer
+    answer = edit(ex, {"cy": "0.3"}, base=old)  # the late answer
     assert answer["ok"] is False and answer["stale"] is True
     assert ex.result.exact.c == (0, Fraction(1, 3), 0) and ex.view.c == ["0", "1/3", "0"]
     assert ex.message.value == ""  # a stale edit is dropped quietly
@@ -478,9 +478,9 @@ def test_fifty_sets_then_a_final_one_leave_the_final_triangle():
         ex.set(c=(0, f"{i % 10}/7", 0))
         versions.append(ex.view.version)
     assert versions == sorted(set(versions))  # every set is a new version
-    stale = [edit(ex, {"c": ["0", "0.1", "0"]}, base=v) for v in versions[:-1]]
+    stale = [edit(ex, {"cy": "0.1"}, base=v) for v in versions[:-1]]
     ex.set(a=(0, 0, 0), b=(1, 0, 0), c=(0, 1, 0))
-    late = edit(ex, {"c": ["0", "0.2", "0"]}, base=versions[-1])
+    late = edit(ex, {"cy": "0.2"}, base=versions[-1])
     assert not any(a["ok"] for a in [*stale, late])
     assert ex.result.exact == triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).exact
     assert ex.view.state == view_state(ex.result, 4)
@@ -488,17 +488,73 @@ def test_fifty_sets_then_a_final_one_leave_the_final_triangle():
 
 def test_two_views_share_one_model():
     ex = Explorer()
-    assert edit(ex, {"a": ["0.5", "0", "0"]}, view="first")["ok"]
-    assert edit(ex, {"b": ["2", "0", "0"]}, view="second")["ok"]  # same version: both taken
+    assert edit(ex, {"ax": "0.5"}, view="first")["ok"]
+    assert edit(ex, {"bx": "2"}, view="second")["ok"]  # same version: both taken
     assert ex.view.a == ["0.5", "0", "0"] and ex.view.b == ["2", "0", "0"]
     assert ex.view.last_edit["view"] == "second"
+
+
+def test_two_views_editing_one_vertex_at_once_keep_both_edits():
+    # one explorer shown twice: view 1 types A.x, view 2 presses the arrow key that moves
+    # A.y before view 1's edit has come back; each names only its coordinate, so both land
+    ex = Explorer(a=("0.1", "0.2", "0.3"))
+    base = ex.view.version
+    first = edit(ex, {"ax": "1/3"}, base=base, view="one")
+    second = edit(ex, {"ay": "0.3"}, base=base, view="two")
+    assert first["ok"] and second["ok"] and ex.view.version == base
+    assert ex.result.exact.a == (Fraction(1, 3), Fraction(3, 10), Fraction(3, 10))
+    assert ex.view.a == ["1/3", "0.3", "0.3"] and ex.texts["az"] == "0.3"
+    assert ex.result == triangle_normal(("1/3", "0.3", "0.3"), (1, 0, 0), (0, 1, 0))
+
+
+def test_a_drag_and_a_typed_value_on_one_vertex_from_two_views_both_land():
+    # view 2 types C.z exactly; view 1 drags C in the plane it looks along z: C.x and C.y
+    ex = Explorer(c=(0, 1, "1/7"))
+    base = ex.view.version
+    assert edit(ex, {"cz": "2/7"}, base=base, view="two")["ok"]
+    assert edit(ex, {"cx": "0.4", "cy": "1.3"}, base=base, view="one")["ok"]
+    assert ex.result.exact.c == (Fraction(2, 5), Fraction(13, 10), Fraction(2, 7))
+
+
+def test_one_coordinate_edited_in_two_views_keeps_the_edit_that_arrives_last():
+    ex = Explorer()
+    base = ex.view.version
+    assert edit(ex, {"bx": "2"}, base=base, view="one")["ok"]
+    assert edit(ex, {"bx": "-1/3"}, base=base, view="two")["ok"]
+    assert ex.view.b == ["-1/3", "0", "0"] and ex.result.exact.b[0] == Fraction(-1, 3)
+    assert ex.view.last_edit["view"] == "two"
+
+
+def test_a_stale_edit_changes_no_coordinate_and_a_fresh_one_after_it_lands():
+    # a cell sets B between two edits of one view: the edit made before it is refused as a
+    # whole, quietly; the view's next edit, made against the new version, is taken
+    ex = Explorer()
+    old = ex.view.version
+    assert edit(ex, {"ax": "0.5"}, base=old, view="one")["ok"]  # not a new version
+    ex.set(b=("1/3", "2/3", 0))
+    answer = edit(ex, {"bz": "0.4", "ay": "0.1"}, base=old, view="one")
+    assert answer["ok"] is False and answer["stale"] is True and answer["seq"] == edit.seq
+    assert ex.view.a == ["0.5", "0", "0"] and ex.view.b == ["1/3", "2/3", "0"]
+    assert ex.message.value == ""
+    assert edit(ex, {"bz": "0.4"}, view="one")["ok"]
+    assert ex.result.exact.b == (Fraction(1, 3), Fraction(2, 3), Fraction(2, 5))
+
+
+def test_the_view_alone_applies_edits_per_coordinate_all_or_nothing():
+    v = ExplorerView()
+    v._handle_custom_msg({"edit": {"ay": "2", "cz": "1"}, "seq": 1, "view": "w", "base": 0}, [])
+    assert v.a == ["0", "2", "0"] and v.c == ["0", "1", "1"] and v.last_edit["ok"]
+    v._handle_custom_msg({"edit": {"ax": "3", "winding": 5}, "seq": 2, "view": "w", "base": 0}, [])
+    assert v.last_edit["ok"] is False and "winding" in v.last_edit["error"]
+    assert v.a == ["0", "2", "0"] and v.winding == "ABC" and v.version == 0
 
 
 @pytest.mark.parametrize(
     ("changes", "message"),
     [
-        ({"a": [0.5, "0", "0"]}, r"A\.x must be sent as text"),
-        ({"a": ["0", "0"]}, r"A has 2 coordinates"),
+        ({"ax": 0.5}, r"A\.x must be sent as text"),
+        ({"a": ["0.5", "0", "0"]}, r"unknown field 'a'"),  # a coordinate is named by its key
+        ({"ax": "0.5", "ay": "abc"}, r"A\.y = 'abc' is not a number"),  # all or nothing
         ({"zz": "1"}, r"unknown field 'zz'"),
         ({"winding": "CBA"}, r"winding must be 'ABC' or 'ACB'"),
         ({"precision": 99}, r"precision must be from 0 to 15"),
@@ -521,7 +577,7 @@ def test_toggles_and_precision_from_the_view():
 
 def test_dragging_a_vertex_in_the_view_updates_every_surface():
     ex = Explorer(precision=3)
-    edit(ex, {"c": ["0.4", "1.1", "-0.7"]})
+    edit(ex, {"cx": "0.4", "cy": "1.1", "cz": "-0.7"})  # a drag moves up to three coordinates
     expected = triangle_normal((0, 0, 0), (1, 0, 0), ("0.4", "1.1", "-0.7"))
     assert ex.result == expected and ex.result.exact.c == (
         Fraction(2, 5),
@@ -545,11 +601,11 @@ def test_the_view_flips_the_winding():
 def test_a_bad_move_from_the_view_is_refused_and_the_view_keeps_the_kernel_values():
     ex = Explorer()
     before = ex.result
-    edit(ex, {"a": ["9", "0", "0"]})
+    edit(ex, {"ax": "9"})
     assert ex.result is before and ex.view.a == ["0", "0", "0"]
     assert "A.x = 9 is outside the slider range -5 to 5" in ex.message.value
     assert ex.view.message.startswith("A.x = 9 is outside")
-    edit(ex, {"b": ["1", "nan", "0"]})
+    edit(ex, {"by": "nan"})
     assert ex.result is before and ex.view.b == ["1", "0", "0"]
     assert "B.y" in ex.message.value and "NaN" in ex.message.value
 
@@ -620,6 +676,6 @@ def test_the_colour_code_is_the_package_one():
 def test_an_off_grid_value_stays_until_someone_moves_it():
     ex = Explorer(b=("1/3", 0, 0), c=(0, "2.35", 0))
     assert ex.view.b == ["1/3", "0", "0"] and ex.controls["bx"].value == 1 / 3
-    edit(ex, {"c": ["0", "2.4", "0"]})  # the student moves the C.y slider one notch
+    edit(ex, {"cy": "2.4"})  # the student moves the C.y slider one notch
     assert ex.texts["cy"] == "2.4" and ex.result.exact.c[1] == Fraction(12, 5)
     assert ex.result.exact.b[0] == Fraction(1, 3)

@@ -8,12 +8,17 @@ model object fed by the site's JavaScript core, so the view is written once.
 State flows one way, kernel → traitlets → view. The browser never writes a
 traitlet: a learner's move (a drag, an arrow key, a slider, a typed value, a
 toolbar toggle) reaches the kernel as an *identified edit*, a custom message
-``{"edit": {...}, "seq": n, "view": id, "base": version}``. ``version`` counts
-the kernel's own changes (a cell calling ``ex.set``, a trait set from code); an
-edit made against an older version is refused, so a browser's late answer
-never overwrites what a cell set. The kernel applies an accepted edit with the
-exact core and answers in one update: the new values, ``state`` and
-``last_edit`` (which edit this was, and whether it was taken).
+``{"edit": {...}, "seq": n, "view": id, "base": version}``. The edit names only
+what the learner changed: a coordinate by its key (``{"ay": "2/7"}``; a drag
+names each coordinate it moved, up to three), the winding, the decimals or a
+toggle. So two views of one explorer that edit different coordinates of one
+vertex at once both land, and for one coordinate the edit that reaches the
+kernel last wins. ``version`` counts the kernel's own changes (a cell calling
+``ex.set``, a trait set from code); an edit made against an older version is
+refused, so a browser's late answer never overwrites what a cell set. The
+kernel applies an accepted edit with the exact core and answers in one update:
+the new values, ``state`` and ``last_edit`` (which edit this was, and whether
+it was taken).
 
 Examples
 --------
@@ -23,12 +28,13 @@ Examples
 >>> v.a = ["0.5", "0", "0"]  # set from code: a new version
 >>> v.version
 1
->>> v._handle_custom_msg({"edit": {"b": ["2", "0", "0"]}, "seq": 1, "view": "w", "base": 0}, [])
+>>> v._handle_custom_msg({"edit": {"bx": "2"}, "seq": 1, "view": "w", "base": 0}, [])
 >>> v.b, v.last_edit["ok"], v.last_edit["stale"]  # made against version 0: refused
 (['1', '0', '0'], False, True)
->>> v._handle_custom_msg({"edit": {"b": ["2", "0", "0"]}, "seq": 2, "view": "w", "base": 1}, [])
->>> v.b, v.last_edit["ok"], v.version  # a browser edit is not a new version
-(['2', '0', '0'], True, 1)
+>>> v._handle_custom_msg({"edit": {"bx": "2"}, "seq": 2, "view": "w", "base": 1}, [])
+>>> v._handle_custom_msg({"edit": {"bz": "1/3"}, "seq": 1, "view": "w2", "base": 1}, [])
+>>> v.b, v.last_edit["ok"], v.version  # both taken; a browser edit is not a new version
+(['2', '0', '1/3'], True, 1)
 """
 
 from __future__ import annotations
@@ -45,10 +51,16 @@ from trinormal.colors import palette
 from trinormal.fields import fields_spec
 from trinormal.validation import MAX_PRECISION, MIN_PRECISION
 
-__all__ = ["BUNDLE", "ExplorerView"]
+__all__ = ["BUNDLE", "COORDINATES", "EDIT_FIELDS", "ExplorerView"]
+
+#: Keys of the nine coordinates, in order: A's x, y, z, then B's, then C's.
+COORDINATES: tuple[str, ...] = tuple(p + q for p in "abc" for q in "xyz")
 
 #: The traits a learner can change in the browser (through an edit) and code can set.
 EDITABLE = ("a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal")
+
+#: What an edit may name: a coordinate (its new exact text), or one of the other editable traits.
+EDIT_FIELDS: tuple[str, ...] = (*COORDINATES, *EDITABLE[3:])
 
 #: An edit handler: applies one edit and returns why it was refused, or None.
 EditHandler = Callable[[dict[str, Any]], "str | None"]
@@ -153,12 +165,20 @@ class ExplorerView(anywidget.AnyWidget):
             self.last_edit = {**ident, "ok": error is None, "stale": False, "error": error or ""}
 
     def _set_traits(self, edit: dict[str, Any]) -> str | None:
-        unknown = sorted(set(edit) - set(EDITABLE))
+        unknown = sorted(set(edit) - set(EDIT_FIELDS))
         if unknown:
             return f"unknown field {unknown[0]!r}"
+        points = {p: list(getattr(self, p)) for p in "abc"}
+        for key, value in edit.items():
+            if key in COORDINATES:
+                points[key[0]]["xyz".index(key[1])] = value
         try:
-            for key, value in edit.items():
-                setattr(self, key, value)
+            with self.hold_trait_notifications():  # all or nothing
+                for p, point in points.items():
+                    setattr(self, p, point)
+                for key, value in edit.items():
+                    if key not in COORDINATES:
+                        setattr(self, key, value)
         except traitlets.TraitError as error:
             return str(error)
         return None

@@ -33,7 +33,7 @@ from trinormal.display import exact_literals, format_number
 from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
 from trinormal.explorer.state import coordinate_text, exact_value, view_state
-from trinormal.explorer.view import ExplorerView
+from trinormal.explorer.view import COORDINATES, ExplorerView
 from trinormal.validation import (
     MAX_PRECISION,
     MIN_PRECISION,
@@ -43,9 +43,6 @@ from trinormal.validation import (
 )
 
 __all__ = ["COORDINATES", "PRECISION_RANGE", "Control", "Explorer", "Text"]
-
-#: Keys of the nine coordinates, in order: A's x, y, z, then B's, then C's.
-COORDINATES: tuple[str, ...] = tuple(p + q for p in "abc" for q in "xyz")
 
 #: Smallest and largest number of decimal places the precision control offers.
 PRECISION_RANGE: tuple[int, int] = (MIN_PRECISION, MAX_PRECISION)
@@ -441,19 +438,18 @@ class Explorer:
         self.view.message = str(error)
 
     def _edit(self, edit: dict[str, Any]) -> str | None:
-        """Apply one edit from the browser (or a typed value); return why it was refused."""
+        """Apply one edit from the browser (or a typed value); return why it was refused.
+
+        An edit names only what changed (``{"ay": "2/7"}``, the winding, a toggle), so
+        edits to other coordinates of the same vertex, made at the same time in another
+        view, are kept. All of it is checked before anything moves.
+        """
         texts = dict(self._texts)
         winding, precision = self.result.winding.value, self._precision
         toggles: dict[str, bool] = {}
         try:
             for key, value in edit.items():
-                if key in ("a", "b", "c"):
-                    values = list(value)
-                    if len(values) != 3:
-                        raise ValueError(f"{key.upper()} has {len(values)} coordinates, expected 3")
-                    for q, v in zip("xyz", values, strict=True):
-                        texts[key + q] = self._typed_text(key + q, v)
-                elif key in COORDINATES:
+                if key in COORDINATES:
                     texts[key] = self._typed_text(key, value)
                 elif key == "winding":
                     winding = _check_winding(value)

@@ -58,8 +58,11 @@ function readoutRows(out, winding) {
  * A model with the part of anywidget's API the view uses (get, send, on, off) and its edit
  * protocol: the view sends { edit, seq, view, base }; the host's own changes (`update`) count
  * as new versions, and an edit made against an older version is refused, as the kernel does.
+ * An edit names coordinates one by one ({ ay: "0.3" }); the model applies them to its own
+ * values of the vertex, as the kernel does, so the other coordinates stay as they are now.
  * `state` follows a, b, c, winding and precision. `onEdit(changes)` receives an accepted edit
- * ({key: value}); without it the model applies the edit itself.
+ * as whole values ({ a: ["0", "0.3", "0"], winding: "ACB" }); without it the model applies
+ * the edit itself.
  */
 export function createModel(initial, onEdit, maxPrecision) {
   const C = constants();
@@ -111,6 +114,22 @@ export function createModel(initial, onEdit, maxPrecision) {
     return changed.length > 0;
   }
 
+  /** An edit as whole values: each coordinate it names put into the vertex's current values. */
+  function wholeValues(edit) {
+    const values = {};
+    for (const [key, value] of Object.entries(edit)) {
+      const m = /^([abc])([xyz])$/.exec(key);
+      if (!m) {
+        values[key] = value;
+        continue;
+      }
+      const [, p, q] = m;
+      if (!values[p]) values[p] = [...data[p]];
+      values[p]["xyz".indexOf(q)] = value;
+    }
+    return values;
+  }
+
   function send(content) {
     if (!content || typeof content.edit !== "object") return;
     const ident = { view: String(content.view || ""), seq: content.seq || 0 };
@@ -121,8 +140,9 @@ export function createModel(initial, onEdit, maxPrecision) {
     }
     answering = true;
     try {
-      if (onEdit) onEdit(content.edit);
-      else update(content.edit);
+      const values = wholeValues(content.edit);
+      if (onEdit) onEdit(values);
+      else update(values);
     } finally {
       answering = false;
     }

@@ -1,9 +1,10 @@
 /*
  * The explorer's controls, drawn by the view itself: per coordinate a slider on the grid
  * (`step`, inside `bounds`) and a box holding its exact text, and the number of decimals.
- * They write nothing on their own: a learner's move becomes an edit (`edit({...})`), which
- * the host applies (the kernel, with the exact core) and answers with new values. So a
- * value the host set (1/3, 2.35) is shown as set and is never rounded back to the grid.
+ * They write nothing on their own: a learner's move becomes an edit naming the one
+ * coordinate moved or typed (`edit({ ay: "2/7" })`), which the host applies (the kernel,
+ * with the exact core) and answers with new values. So a value the host set (1/3, 2.35) is
+ * shown as set and is never rounded back to the grid.
  */
 import { gridIndex, gridText, parseCoordinate, readStep } from "./numbers.js";
 
@@ -52,12 +53,10 @@ export function createControls(parent, view) {
           frame = 0;
           const grid = readStep(view.get("step"));
           const k = gridIndex(Number(slider.value), grid, view.get("bounds"));
-          const values = (view.get(p) || ["0", "0", "0"]).map(String);
           const text = gridText(k, grid);
-          if (values[i] === text) return;
-          values[i] = text;
+          if (String((view.get(p) || [])[i] ?? "") === text) return;
           box.value = text;
-          view.edit({ [p]: values });
+          view.edit({ [p + q]: text }); // this coordinate only
         });
       });
       box.addEventListener("input", () => {

@@ -7,19 +7,21 @@
  * host computes every printed string (`state`); the view draws.
  *
  * The view never writes the host's values. A learner's move (drag, arrow key, slider, typed
- * value, toolbar toggle) is sent as an identified edit,
- *   model.send({ edit: { c: ["0.4", "1.1", "0"] }, seq, view, base: version }),
- * made against the host's `version` (which counts the host's own changes). The host refuses
- * an edit made against an older version, so a late edit never overwrites what a cell set,
- * and answers with its values and `last_edit` ({ view, seq, ok }). Until that answer the view
- * draws its own edit (so a drag follows the pointer); a new `version` from the host ends a
- * drag in progress and drops whatever the view had not yet had answered.
+ * value, toolbar toggle) is sent as an identified edit naming only what the learner changed,
+ *   model.send({ edit: { cx: "0.4", cy: "1.1" }, seq, view, base: version }),
+ * made against the host's `version` (which counts the host's own changes). A coordinate is
+ * named by its key ("ax" … "cz"), so two views of one explorer editing different coordinates
+ * of one vertex at once do not undo each other. The host refuses an edit made against an
+ * older version, so a late edit never overwrites what a cell set, and answers with its values
+ * and `last_edit` ({ view, seq, ok }). Until that answer the view draws its own edit, per
+ * coordinate (so a drag follows the pointer); a new `version` from the host ends a drag in
+ * progress and drops whatever the view had not yet had answered.
  */
 import { TOUCH, Vector3 } from "three";
 import { Drawing } from "./geometry.js";
 import { setupInteraction } from "./interaction.js";
 import { LabelLayer } from "./labels.js";
-import { niceCeil, parsePoint, powerOfTen, readStep, tickText } from "./numbers.js";
+import { niceCeil, parseCoordinate, parsePoint, powerOfTen, readStep, tickText } from "./numbers.js";
 import { createControls } from "./controls.js";
 import { createReadout } from "./readout.js";
 import { createStage, DEFAULT_DIRECTION } from "./scene.js";
@@ -30,8 +32,11 @@ const KEYS = [
   "a", "b", "c", "winding", "precision", "step", "bounds", "show_parallelogram", "show_unit_normal",
   "show_readout", "show_controls", "precision_range", "palette", "state", "message",
 ];
-// what the view draws from its own edit until the host answers
-const DRAWN = new Set(["a", "b", "c", "winding", "precision", "show_parallelogram", "show_unit_normal"]);
+// a vertex's coordinates as edits name them: "a" -> ["ax", "ay", "az"]
+const COORDS = { a: ["ax", "ay", "az"], b: ["bx", "by", "bz"], c: ["cx", "cy", "cz"] };
+const COORDINATE = new Set(Object.values(COORDS).flat());
+// what the view draws from its own edit until the host answers (a coordinate: when readable)
+const DRAWN = new Set([...COORDINATE, "winding", "precision", "show_parallelogram", "show_unit_normal"]);
 // N is drawn at its true length (in the axes' units) when that is about the longest edge
 // (0.49 to 0.99 times it); otherwise it is scaled by a power of two into that range, so the
 // triangle and N fit the picture together, and its label says so: "N/4", "2N" (as the
@@ -153,14 +158,21 @@ function render({ model, el }) {
   // ------------------------------------------------------------------ edits and their answers
   let seq = 0;
   let pending = {}; // key -> { value, seq }: the view's own edits the host has not answered yet
-  const value = (key) => (key in pending ? pending[key].value : model.get(key));
-  const get = value;
+  /** The host's value of `key`, with the view's unanswered edits over it (a vertex: per coordinate). */
+  function get(key) {
+    const coords = COORDS[key];
+    if (!coords || !coords.some((k) => k in pending)) return key in pending ? pending[key].value : model.get(key);
+    const host = model.get(key) || ["", "", ""];
+    return coords.map((k, i) => (k in pending ? pending[k].value : host[i]));
+  }
 
   /** Send a learner's move to the host as an identified edit; draw it until the answer. */
   function edit(changes) {
     seq += 1;
     for (const [key, v] of Object.entries(changes)) {
-      if (DRAWN.has(key)) pending[key] = { value: v, seq };
+      // a typed value the view cannot read ("abc") is not drawn: the host will refuse it
+      const readable = !COORDINATE.has(key) || Number.isFinite(parseCoordinate(v));
+      if (DRAWN.has(key) && readable) pending[key] = { value: v, seq };
     }
     model.send({ edit: changes, seq, view: viewId, base: model.get("version") ?? 0 });
   }
@@ -498,8 +510,8 @@ function render({ model, el }) {
     bounds: () => get("bounds"),
     values: (name) => (get(name.toLowerCase()) || ["", "", ""]).map(String),
     position: (name) => (display ? display[name] : null),
-    write(name, strings) {
-      edit({ [name.toLowerCase()]: strings });
+    write(changes) {
+      edit(changes);
       flush();
     },
     dragging(on) {

@@ -1,13 +1,19 @@
 /*
  * Moving a vertex: by dragging its label or its point (in the plane through it that faces
  * the camera), or with the keyboard on its focused label. Values are snapped to the grid
- * (`step`) and clamped to `bounds`; an axis the user did not move keeps its exact text.
+ * (`step`) and clamped to `bounds`. What is written names only the coordinates the user
+ * moved ({ ax: "0.3", az: "-1.2" }): an axis the user did not move is not written at all,
+ * so it keeps its exact text, and an edit made meanwhile elsewhere (another view of the
+ * same explorer) to another coordinate of the vertex stands.
  * Dragging anywhere else is left to the orbit controls.
  */
 import { Plane, Raycaster, Vector2, Vector3 } from "three";
 import { gridIndex, gridText, onGridAt, parseCoordinate } from "./numbers.js";
 
 const PICK_PX = 22;
+
+/** The key of a vertex's coordinate in an edit: ("A", 1) -> "ay". */
+const coordinateKey = (name, axis) => name.toLowerCase() + "xyz"[axis];
 const KEYS = {
   ArrowRight: [0, 1],
   ArrowLeft: [0, -1],
@@ -19,8 +25,9 @@ const KEYS = {
 
 /**
  * view: { container, canvas, camera, size(), scale(), grid(), bounds(), values(name),
- *         position(name) -> display Vector3, write(name, strings), dragging(bool),
+ *         position(name) -> display Vector3, write(changes), dragging(bool),
  *         touchActive() -> bool }
+ * `changes` maps coordinate keys ("ax" … "cz") to their new text.
  * Returns a cleanup function; its .cancel() ends a drag in progress without writing.
  */
 export function setupInteraction(view) {
@@ -72,6 +79,7 @@ export function setupInteraction(view) {
       pointerId: event.pointerId,
       hit,
       strings,
+      moved: new Set(), // the axes this drag has moved: only they are written
       start: strings.map((s, i) => {
         const x = parseCoordinate(s);
         return Number.isFinite(x) ? x : origin.getComponent(i) * view.scale();
@@ -91,14 +99,20 @@ export function setupInteraction(view) {
     if (!hit) return;
     const delta = hit.sub(drag.hit).multiplyScalar(view.scale());
     const grid = view.grid();
-    const next = drag.strings.map((s, i) => {
-      const d = delta.getComponent(i);
-      if (Math.abs(d) < grid.value / 2) return s; // not moved along this axis: keep the exact text
-      const k = gridIndex(drag.start[i] + d, grid, view.bounds());
-      return onGridAt(drag.start[i], k, grid) ? s : gridText(k, grid); // clamped back: keep it
-    });
     const now = view.values(drag.name);
-    if (next.some((s, i) => s !== now[i])) view.write(drag.name, next);
+    const changes = {};
+    drag.strings.forEach((s, i) => {
+      let next = s; // not moved along this axis (or clamped back to where it was): its exact text
+      const d = delta.getComponent(i);
+      if (Math.abs(d) >= grid.value / 2) {
+        const k = gridIndex(drag.start[i] + d, grid, view.bounds());
+        if (!onGridAt(drag.start[i], k, grid)) next = gridText(k, grid);
+      }
+      if (next !== s) drag.moved.add(i);
+      // an axis the drag moved is written, also back to its first text; no other axis is
+      if (drag.moved.has(i) && next !== now[i]) changes[coordinateKey(drag.name, i)] = next;
+    });
+    if (Object.keys(changes).length) view.write(changes);
   }
 
   function onPointerDown(event) {
@@ -161,14 +175,14 @@ export function setupInteraction(view) {
     event.preventDefault();
     const name = target.dataset.vertex;
     const [axis, sign] = KEYS[event.key];
-    const strings = view.values(name).slice();
+    const now = view.values(name)[axis];
     const grid = view.grid();
-    let x = parseCoordinate(strings[axis]);
+    let x = parseCoordinate(now);
     if (!Number.isFinite(x)) x = (view.position(name)?.getComponent(axis) ?? 0) * view.scale();
     const k = gridIndex(x + sign * grid.value, grid, view.bounds());
     if (onGridAt(x, k, grid)) return; // at the edge of the range: nothing moves, nothing is written
-    strings[axis] = gridText(k, grid);
-    if (strings[axis] !== view.values(name)[axis]) view.write(name, strings);
+    const text = gridText(k, grid);
+    if (text !== now) view.write({ [coordinateKey(name, axis)]: text });
   }
 
   const c = view.container;
