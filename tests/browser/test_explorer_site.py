@@ -84,7 +84,16 @@ def query(page) -> dict[str, list[str]]:
     return parse_qs(urlsplit(page.evaluate("location.href")).query)
 
 
-def test_the_calculator_has_a_webgl_view_served_from_the_site(view, traffic):
+def test_the_view_is_webgl_turns_without_changing_the_numbers_and_takes_both_palettes(
+    view, traffic
+):
+    """Three checks on one visit, each leaving the view as it found it (a failure says which)."""
+    _a_webgl_view_served_from_the_site(view, traffic)
+    _orbiting_changes_the_picture_but_not_the_numbers(view)
+    _light_and_dark_palettes_both_render(view)
+
+
+def _a_webgl_view_served_from_the_site(view, traffic) -> None:
     canvas = view.locator("#tn-view canvas")
     assert canvas.count() == 1
     kind = canvas.evaluate(
@@ -112,7 +121,7 @@ def test_the_calculator_has_a_webgl_view_served_from_the_site(view, traffic):
     assert_framed(view)
 
 
-def test_orbiting_changes_the_picture_but_not_the_numbers(view):
+def _orbiting_changes_the_picture_but_not_the_numbers(view) -> None:
     before_inputs, before_out, before_url = inputs(view), outputs(view), view.url
     before = canvas_png(view)
     box = view.locator("#tn-view canvas").bounding_box()
@@ -156,7 +165,13 @@ def test_dragging_vertex_a_moves_a_and_updates_results_and_url(view):
     assert query(view)["b"] == ["1,0,0"] and query(view)["c"] == ["0,1,0"]
 
 
-def test_arrow_keys_move_the_focused_vertex_one_step(view):
+def test_arrow_keys_move_the_focused_vertex_one_step_and_stop_at_the_range(view):
+    """Two checks of B's keys on one visit: steps on the grid, then the range's edge."""
+    _arrow_keys_move_the_focused_vertex_one_step(view)
+    _keys_stop_at_the_range_and_never_rewrite_a_value(view)
+
+
+def _arrow_keys_move_the_focused_vertex_one_step(view) -> None:
     label = view.locator('#tn-view [data-vertex="B"]')
     label.focus()
     label.press("ArrowRight")
@@ -173,6 +188,17 @@ def test_arrow_keys_move_the_focused_vertex_one_step(view):
     assert values[:3] == ["0", "0", "0"] and values[6:] == ["0", "1", "0"]
     assert outputs(view) == python_outputs(values)
     view.wait_for_function("() => new URLSearchParams(location.search).get('b') === '0.9,0.1,-0.1'")
+
+
+def _keys_stop_at_the_range_and_never_rewrite_a_value(view) -> None:
+    view.fill("#bx", "5")  # the edge of the view's range, -5 to 5
+    label = view.locator('#tn-view [data-vertex="B"]')
+    label.focus()
+    label.press("ArrowRight")
+    assert view.locator("#bx").input_value() == "5"  # not "5.0", not "5.1"
+    label.press("ArrowLeft")
+    assert view.locator("#bx").input_value() == "4.9"
+    assert outputs(view) == python_outputs(inputs(view))
 
 
 def test_a_typed_value_moves_the_view_and_keeps_its_exact_text(view):
@@ -218,7 +244,7 @@ def _corner(png: bytes) -> tuple[int, int, int]:
     return img.getpixel((4, img.height - 4))
 
 
-def test_light_and_dark_palettes_both_render(view):
+def _light_and_dark_palettes_both_render(view) -> None:
     light = canvas_png(view)
     view.evaluate("document.body.setAttribute('data-md-color-scheme', 'slate')")
     dark = canvas_png(view)
@@ -322,17 +348,6 @@ def test_without_javascript_the_explorer_page_shows_the_picture(browser, server)
         assert picture.first.get_attribute("alt")
     finally:
         context.close()
-
-
-def test_keys_stop_at_the_range_and_never_rewrite_a_value(view):
-    view.fill("#bx", "5")  # the edge of the view's range, -5 to 5
-    label = view.locator('#tn-view [data-vertex="B"]')
-    label.focus()
-    label.press("ArrowRight")
-    assert view.locator("#bx").input_value() == "5"  # not "5.0", not "5.1"
-    label.press("ArrowLeft")
-    assert view.locator("#bx").input_value() == "4.9"
-    assert outputs(view) == python_outputs(inputs(view))
 
 
 # --------------------------------------------------------------------------- framing, overlays
