@@ -132,35 +132,6 @@ def test_results_update_as_you_type(calc):
     assert "Nz = 30.0000" in calc.locator("#chart").get_attribute("aria-label")
 
 
-def test_winding_flip_turns_the_normal_over(calc):
-    enter(calc, ("1", "1", "1"), ("2", "1", "1"), ("1", "2", "2"))
-    assert calc.locator("#out-normal").inner_text() == "(0.0000, -1.0000, 1.0000)"
-    calc.select_option("#winding", "ACB")
-    assert calc.locator("#out-normal").inner_text() == "(0.0000, 1.0000, -1.0000)"
-    assert calc.locator("#out-unit").inner_text() == "(0.0000, 0.7071, -0.7071)"
-    assert calc.locator("#out-area").inner_text() == "0.7071"
-    calc.click("#tn-flip")
-    assert calc.locator("#winding").input_value() == "ABC"
-    assert calc.locator("#out-normal").inner_text() == "(0.0000, -1.0000, 1.0000)"
-
-
-def test_precision_change(calc):
-    enter(calc, ("0", "0", "0"), ("0.5", "0", "0"), ("0", "0.5", "0"))
-    calc.fill("#precision", "2")
-    assert calc.locator("#out-area").inner_text() == "0.13"  # 0.125 rounds half away from zero
-    calc.fill("#precision", "0")
-    assert calc.locator("#out-area").inner_text() == "1e-01"
-    calc.fill("#precision", "10")
-    assert calc.locator("#out-area").inner_text() == "0.1250000000"
-    calc.fill("#precision", "15")
-    assert calc.locator("#out-area").inner_text() == "0.125000000000000"
-    calc.fill("#precision", "16")
-    assert status(calc) == "precision must be from 0 to 15, got 16"
-    assert set(outputs(calc).values()) == {DASH}
-    calc.fill("#precision", "3")
-    assert calc.locator("#out-area").inner_text() == "0.125"
-
-
 def test_url_state_round_trip(page, server, traffic):
     url = server + "calculator/?a=1,1,1&b=2,1,1&c=1,2,2&w=ACB&p=2"
     open_calculator(page, url)
@@ -225,7 +196,45 @@ def test_bad_input_names_the_field_and_dashes_the_outputs(calc):
         assert DASH not in calc.locator("#out-normal").inner_text(), case
 
 
-def test_degenerate_triangle_says_undefined(calc):
+def test_winding_precision_degenerate_and_chart(calc):
+    """Four checks on one visit; each starts by entering a whole triangle (winding ABC,
+    precision 4), so none depends on the one before, and a failure's traceback names its helper."""
+    _winding_flip_turns_the_normal_over(calc)
+    _precision_change(calc)
+    _degenerate_triangle_says_undefined(calc)
+    _chart_draws_signed_bars_with_labels(calc)
+
+
+def _winding_flip_turns_the_normal_over(calc) -> None:
+    enter(calc, ("1", "1", "1"), ("2", "1", "1"), ("1", "2", "2"))
+    assert calc.locator("#out-normal").inner_text() == "(0.0000, -1.0000, 1.0000)"
+    calc.select_option("#winding", "ACB")
+    assert calc.locator("#out-normal").inner_text() == "(0.0000, 1.0000, -1.0000)"
+    assert calc.locator("#out-unit").inner_text() == "(0.0000, 0.7071, -0.7071)"
+    assert calc.locator("#out-area").inner_text() == "0.7071"
+    calc.click("#tn-flip")
+    assert calc.locator("#winding").input_value() == "ABC"
+    assert calc.locator("#out-normal").inner_text() == "(0.0000, -1.0000, 1.0000)"
+
+
+def _precision_change(calc) -> None:
+    enter(calc, ("0", "0", "0"), ("0.5", "0", "0"), ("0", "0.5", "0"))
+    calc.fill("#precision", "2")
+    assert calc.locator("#out-area").inner_text() == "0.13"  # 0.125 rounds half away from zero
+    calc.fill("#precision", "0")
+    assert calc.locator("#out-area").inner_text() == "1e-01"
+    calc.fill("#precision", "10")
+    assert calc.locator("#out-area").inner_text() == "0.1250000000"
+    calc.fill("#precision", "15")
+    assert calc.locator("#out-area").inner_text() == "0.125000000000000"
+    calc.fill("#precision", "16")
+    assert status(calc) == "precision must be from 0 to 15, got 16"
+    assert set(outputs(calc).values()) == {DASH}
+    calc.fill("#precision", "3")
+    assert calc.locator("#out-area").inner_text() == "0.125"
+
+
+def _degenerate_triangle_says_undefined(calc) -> None:
     enter(calc, ("0", "0", "0"), ("1", "1", "1"), ("2", "2", "2"))
     assert calc.locator("#out-unit").inner_text() == "undefined"
     assert calc.locator("#out-plane").inner_text() == "undefined"
@@ -235,7 +244,7 @@ def test_degenerate_triangle_says_undefined(calc):
     )
 
 
-def test_chart_draws_signed_bars_with_labels(calc):
+def _chart_draws_signed_bars_with_labels(calc) -> None:
     enter(calc, ("1", "2", "3"), ("4", "6", "9"), ("-2", "0", "5"))
     chart = calc.locator("#chart")
     assert chart.get_attribute("role") == "img"
