@@ -20,7 +20,7 @@ import urllib.error
 import urllib.request
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -30,10 +30,15 @@ START_TIMEOUT_S = 90
 
 @dataclass
 class Lab:
-    """A running JupyterLab: its base URL and its root folder."""
+    """A running JupyterLab: its base URL and its root folder.
+
+    ``kept`` names the notebooks (paths in the root) whose kernels outlive a test: a
+    module fixture that opened one for several tests adds it, and removes it when done.
+    """
 
     url: str
     root: Path
+    kept: set[str] = field(default_factory=set)
 
     def write_notebook(self, name: str, cells: list[str]) -> str:
         """Write a notebook of code cells into the root; return its URL in JupyterLab."""
@@ -63,10 +68,12 @@ class Lab:
         return f"{self.url}notebooks/{name}"
 
     def shutdown_kernels(self) -> None:
-        """Close every session and stop its kernel (between tests that share the server)."""
+        """Close every session but the kept ones, and stop its kernel (between tests)."""
         with urllib.request.urlopen(self.url + "api/sessions", timeout=10) as r:
             sessions = json.load(r)
         for session in sessions:
+            if session["path"] in self.kept:
+                continue
             request = urllib.request.Request(
                 f"{self.url}api/sessions/{session['id']}", method="DELETE"
             )
@@ -148,20 +155,56 @@ def run_all(page: Any) -> None:
     page.locator(".lm-Menu-itemLabel", has_text="Run All Cells").first.click()
 
 
-def kernel_ready(lab: Lab, timeout_s: float = 60) -> None:
-    """Wait until the server has a kernel that is idle and connected to the page."""
+def kernel_ready(lab: Lab, name: str | None = None, timeout_s: float = 60) -> None:
+    """Wait until notebook ``name`` (else any) has a kernel that is idle and connected to a page."""
     deadline = time.monotonic() + timeout_s
     while time.monotonic() < deadline:
         try:
-            with urllib.request.urlopen(lab.url + "api/kernels", timeout=5) as r:
-                kernels = json.load(r)
+            with urllib.request.urlopen(lab.url + "api/sessions", timeout=5) as r:
+                sessions = json.load(r)
         except OSError:  # a kernel of an earlier test is shutting down, or the machine is busy
             time.sleep(0.3)
             continue
+        kernels = [s["kernel"] for s in sessions if name in (None, s["path"]) and s.get("kernel")]
         if any(k["execution_state"] == "idle" and k["connections"] > 0 for k in kernels):
             return
         time.sleep(0.3)
-    raise TimeoutError(f"no idle, connected kernel after {timeout_s} s")
+    raise TimeoutError(
+        f"no idle, connected kernel for {name or 'any notebook'} after {timeout_s} s"
+    )
+
+
+def restart_and_clear(page: Any) -> None:
+    """A fresh kernel for the open notebook, and no outputs: the Kernel menu's own command.
+
+    The page keeps the loaded app; JupyterLab (and Notebook 7) clears the outputs only once
+    the new kernel has answered, so after this the notebook runs on that fresh kernel.
+    """
+    page.locator(".lm-MenuBar-itemLabel", has_text="Kernel").first.click()
+    page.locator(".lm-Menu-itemLabel", has_text="Restart Kernel and Clear").first.click()
+    page.locator(".jp-Dialog .jp-mod-accept").click()
+    page.wait_for_selector(".jp-Dialog", state="detached")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-Notebook .jp-OutputArea-output')", timeout=60_000
+    )
+    wait_idle(page)
+
+
+def execution_counts(page: Any) -> list[str]:
+    """The prompts of the notebook's code cells (``[1]:`` once the first has run).
+
+    Read once no cell waits for its reply (``[*]``): the kernel may print a cell's output
+    before it answers that the cell is done.
+    """
+    page.wait_for_function(
+        """() => ![...document.querySelectorAll('.jp-Notebook .jp-CodeCell .jp-InputArea-prompt')]
+            .some((p) => p.textContent.includes('*'))""",
+        timeout=30_000,
+    )
+    return [
+        str(t).strip()
+        for t in page.locator(".jp-Notebook .jp-CodeCell .jp-InputArea-prompt").all_inner_texts()
+    ]
 
 
 def wait_idle(page: Any, timeout_ms: int = 60_000) -> None:

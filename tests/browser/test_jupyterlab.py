@@ -14,6 +14,7 @@ import ast
 import json
 import re
 import time
+from collections.abc import Iterator
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -21,8 +22,10 @@ from typing import Any
 import pytest
 from jupyterlab_support import (
     Lab,
+    execution_counts,
     kernel_ready,
     output_text,
+    restart_and_clear,
     run_all,
     run_cell,
     wait_idle,
@@ -113,7 +116,37 @@ def open_notebook(lab: Lab, page: Any, name: str, app: str) -> None:
     url = f"{lab.url}lab/tree/{name}?reset" if app == "lab" else lab.notebook7_url(name)
     page.goto(url)
     page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
-    kernel_ready(lab)
+    kernel_ready(lab, name)
+
+
+@pytest.fixture(scope="module")
+def shared_notebook(lab: Lab, browser: Any) -> Iterator[Any]:
+    """Open a notebook once for the module's tests: ``open(name, cells, app)`` gives its page.
+
+    Each notebook gets its own 1280x720 page and kernel, run once with Run All; its kernel
+    is kept between tests (``Lab.kept``) and stopped with the page at the module's end.
+    """
+    opened: dict[tuple[str, str], Any] = {}
+    contexts: list[Any] = []
+
+    def open_(name: str, cells: list[str], app: str) -> Any:
+        if (name, app) not in opened:
+            context = browser.new_context(viewport=PROJECTOR)
+            contexts.append(context)
+            page = context.new_page()
+            lab.write_notebook(name, cells)
+            open_notebook(lab, page, name, app)
+            lab.kept.add(name)
+            run_all(page)
+            opened[name, app] = page
+        return opened[name, app]
+
+    yield open_
+    for context in contexts:
+        context.close()
+    for name, _ in opened:
+        lab.kept.discard(name)
+    lab.shutdown_kernels()
 
 
 def wait_for_report(page: Any, count: int = 1) -> None:
@@ -234,18 +267,35 @@ def test_run_all_of_notebook_05_ends_where_the_last_cell_put_it(
     # three times, each on a fresh kernel: the kernel's `ex` and the view end on what the
     # last cell set (its ex.set, no parallelogram), never on an earlier cell's state
     name = f"05_{app}.ipynb"
-    (lab.root / name).write_text(json.dumps(notebook_05_with_report()), encoding="utf-8")
+    nb = notebook_05_with_report()
+    (lab.root / name).write_text(json.dumps(nb), encoding="utf-8")
+    code_cells = sum(cell["cell_type"] == "code" for cell in nb["cells"])
+    report_cell = len(nb["cells"]) - 1
     last = last_set_in_notebook_05()
     expected = triangle_normal(last["a"], last["b"], last["c"], winding=last["winding"]).format(4)
     texts = {p + q: str(last[p][i]) for p in "abc" for i, q in enumerate("xyz")}
-    for _ in range(3):
-        open_notebook(lab, page, name, app)
+    for run in range(3):
+        # the first time on a freshly opened notebook (the page loads the app), then with
+        # the Kernel menu's restart, in the same page: a new kernel each time
+        if run == 0:
+            open_notebook(lab, page, name, app)
+        else:
+            restart_and_clear(page)
         run_all(page)
         wait_for_report(page)
         page.wait_for_selector(".tnx-root canvas", timeout=60_000)
+        # a fresh kernel ran every cell once, in order (Shift+Enter on the report cell below
+        # adds an empty cell after it, which the next runs leave alone)
+        counts = execution_counts(page)[:code_cells]
+        assert counts == [f"[{i}]:" for i in range(1, code_cells + 1)], (run, counts)
         page.wait_for_timeout(1000)  # anything late from the browser would arrive by now
-        run_cell(page, -1)  # ask the kernel again
-        page.wait_for_timeout(500)
+        run_cell(page, report_cell)  # ask the kernel again
+        page.wait_for_function(
+            """([i, n]) => document.querySelectorAll('.jp-Notebook .jp-Cell')[i]
+                .querySelector('.jp-InputArea-prompt').textContent.trim() === `[${n}]:`""",
+            arg=[report_cell, code_cells + 1],
+            timeout=30_000,
+        )
         wait_for_report(page)
         state = report(page)
         assert state["texts"] == texts
@@ -478,12 +528,9 @@ print(*(ex.texts[k] for k in ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "c
 
 
 @pytest.fixture
-def notebook(lab: Lab, page: Any) -> Any:
-    page.set_viewport_size(PROJECTOR)
-    page.goto(lab.write_notebook("explorer.ipynb", [EXPLORER, CHECK]))
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
-    kernel_ready(lab)
-    run_all(page)
+def notebook(shared_notebook: Any) -> Any:
+    """The explorer notebook, run once for the two tests below (the first only reads it)."""
+    page = shared_notebook("explorer.ipynb", [EXPLORER, CHECK], "lab")
     page.wait_for_selector('[data-vertex="C"]', timeout=60_000)
     wait_idle(page)
     return page
@@ -567,43 +614,74 @@ LAYOUT = """() => {
 }"""
 
 
+def zoom_to(page: Any, zoom: float, sessions: dict[int, Any]) -> None:
+    """Browser zoom on a 1280x720 window, as Ctrl+plus sets it, and wait for the page to see it.
+
+    The page becomes 1280/zoom by 720/zoom CSS px, drawn at ``zoom`` device px per CSS px
+    (Chromium's own zoom). The override lasts as long as its DevTools session, which
+    ``sessions`` keeps (one per page).
+    """
+    if id(page) not in sessions:
+        sessions[id(page)] = page.context.new_cdp_session(page)
+    width, height = round(PROJECTOR["width"] / zoom), round(PROJECTOR["height"] / zoom)
+    sessions[id(page)].send(
+        "Emulation.setDeviceMetricsOverride",
+        {"width": width, "height": height, "deviceScaleFactor": zoom, "mobile": False},
+    )
+    page.wait_for_function(
+        "([w, h, z]) => innerWidth === w && innerHeight === h && devicePixelRatio === z",
+        arg=[width, height, zoom],
+    )
+
+
+def settled(page: Any, script: str, timeout_s: float = 30) -> Any:
+    """What ``script`` measures once the layout has settled: the same three frames running."""
+    deadline = time.monotonic() + timeout_s
+    last, same = None, 0
+    while same < 2:
+        assert time.monotonic() < deadline, f"the layout never settled: {last}"
+        page.evaluate(
+            "() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))"
+        )
+        m = page.evaluate(script)
+        same = same + 1 if m == last else 0
+        last = m
+        page.wait_for_timeout(100)
+    return last
+
+
+@pytest.fixture(scope="module")
+def cdp_sessions() -> dict[int, Any]:
+    """The DevTools session of each page whose zoom a test set (see zoom_to)."""
+    return {}
+
+
 @pytest.mark.parametrize(
     ("app", "zoom"), [("lab", 1.0), ("lab", 1.25), ("lab", 1.5), ("notebook", 1.0)]
 )
 def test_view_and_readout_fit_a_projector_at_every_zoom(
-    lab: Lab, browser: Any, app: str, zoom: float
+    shared_notebook: Any, cdp_sessions: dict[int, Any], app: str, zoom: float
 ) -> None:
     # 1280x720 at browser zoom 100/125/150 %: the page is 1280/zoom CSS px wide, the file
     # browser open (JupyterLab's default); the view and the rows N, |N|, area and unit normal
-    # are seen together once the explorer is scrolled to, the toolbar is one row
-    context = browser.new_context(
-        viewport={"width": round(1280 / zoom), "height": round(720 / zoom)},
-        device_scale_factor=zoom,
-    )
-    page = context.new_page()
-    try:
-        lab.write_notebook("fit.ipynb", FIT)
-        open_notebook(lab, page, "fit.ipynb", app)
-        run_all(page)
-        page.wait_for_selector(".tnx-root canvas", timeout=90_000)
-        if app == "lab":  # the file browser takes its share of the width
-            files = page.locator("#filebrowser").bounding_box()
-            assert files is not None and files["width"] >= 200, files
-        page.wait_for_timeout(800)
-        m = page.evaluate(LAYOUT)
-        page.wait_for_timeout(200)
-        m = page.evaluate(LAYOUT)
-        panel, stage = m["panel"], m["stage"]
-        assert stage["right"] - stage["left"] >= 360, m
-        inside = ("left", "top"), ("right", "bottom")
-        for what, b in [("view", stage)] + [
-            (k, m["rows"][k]) for k in ("normal", "magnitude", "area", "unit_normal")
-        ]:
-            assert b[inside[0][0]] >= panel["left"] - 1 and b[inside[0][1]] >= panel["top"] - 1
-            assert b[inside[1][0]] <= panel["right"] + 1, (what, b, panel)
-            assert b[inside[1][1]] <= panel["bottom"] + 1, (what, b, panel)
-        assert all(row["lines"] == 1 for row in m["rows"].values()), m["rows"]
-        assert len({round(b["top"]) for b in m["buttons"]}) == 1  # one row
-        assert max(b["right"] for b in m["buttons"]) <= m["toolbar"]["right"] + 1
-    finally:
-        context.close()
+    # are seen together once the explorer is scrolled to, the toolbar is one row. One page
+    # per app, run once; each zoom is set on it, as a teacher zooms an open notebook.
+    page = shared_notebook(f"fit_{app}.ipynb", FIT, app)
+    page.wait_for_selector(".tnx-root canvas", timeout=90_000)
+    zoom_to(page, zoom, cdp_sessions)
+    m = settled(page, LAYOUT)
+    if app == "lab":  # the file browser takes its share of the width
+        files = page.locator("#filebrowser").bounding_box()
+        assert files is not None and files["width"] >= 200, files
+    panel, stage = m["panel"], m["stage"]
+    assert stage["right"] - stage["left"] >= 360, m
+    inside = ("left", "top"), ("right", "bottom")
+    for what, b in [("view", stage)] + [
+        (k, m["rows"][k]) for k in ("normal", "magnitude", "area", "unit_normal")
+    ]:
+        assert b[inside[0][0]] >= panel["left"] - 1 and b[inside[0][1]] >= panel["top"] - 1
+        assert b[inside[1][0]] <= panel["right"] + 1, (what, b, panel)
+        assert b[inside[1][1]] <= panel["bottom"] + 1, (what, b, panel)
+    assert all(row["lines"] == 1 for row in m["rows"].values()), m["rows"]
+    assert len({round(b["top"]) for b in m["buttons"]}) == 1  # one row
+    assert max(b["right"] for b in m["buttons"]) <= m["toolbar"]["right"] + 1
