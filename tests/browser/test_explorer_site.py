@@ -16,6 +16,7 @@ import re
 from urllib.parse import parse_qs, urlsplit
 
 import pytest
+from page_checks import resize
 from PIL import Image
 
 from trinormal import triangle_normal
@@ -564,40 +565,50 @@ def test_a_swipe_over_the_view_scrolls_the_page_a_tap_activates_it_and_a_pinch_z
         context.close()
 
 
-@pytest.mark.parametrize("width", [360, 768, 1280])
-def test_no_readout_value_is_cut_on_the_explorer_page(browser, server, width):
-    context = browser.new_context(viewport={"width": width, "height": 800})
+def test_no_readout_value_is_cut_on_the_explorer_page(browser, server):
+    """Opened on a phone, then widened to a tablet and a desktop (one visit, three widths)."""
+    context = browser.new_context(viewport={"width": 360, "height": 800})
     page = context.new_page()
     try:
         page.goto(server + "notebooks/05_explorer/")
         page.wait_for_selector(".tn-explorer-live[data-ready='true']")
-        for scheme in ("default", "slate"):
-            page.evaluate(f"document.body.setAttribute('data-md-color-scheme', '{scheme}')")
-            settle(page)
-            assert page.evaluate("document.documentElement.scrollWidth") <= width
-            cells = page.locator(".tn-explorer-live .tnx-readout td").evaluate_all(
-                """(cells) => cells.map((td) => {
-                    const r = td.getBoundingClientRect();
-                    const parts = [...td.querySelectorAll('.tnx-part')].map(
-                        (p) => p.getClientRects().length);
-                    let box = td.parentElement;
-                    while (box && getComputedStyle(box).overflowX === 'visible') box = box.parentElement;
-                    return {text: td.textContent, right: r.right, cut: td.scrollWidth > td.clientWidth + 1,
-                            parts, clip: box ? box.getBoundingClientRect().right : innerWidth};
-                })"""
-            )
-            assert len(cells) == 7
-            # every button of the view's toolbar is there to press, none cut off
-            live = page.locator(".tn-explorer-live .tnx-stage").first.bounding_box()
-            for button in page.locator(".tn-explorer-live .tnx-toolbar button").all():
-                b = button.bounding_box()
-                assert b is not None and b["x"] >= live["x"] - 1, button.inner_text()
-                assert b["x"] + b["width"] <= live["x"] + live["width"] + 1, button.inner_text()
-            for cell in cells:
-                assert not cell["cut"] and cell["right"] <= min(width, cell["clip"]) + 1, cell
-                assert all(n == 1 for n in cell["parts"]), cell  # no component breaks
+        for width in (360, 768, 1280):
+            if width != 360:
+                resize(page, width, 800)
+            _no_readout_value_is_cut(page, width)
     finally:
         context.close()
+
+
+def _no_readout_value_is_cut(page, width: int) -> None:
+    for scheme in ("default", "slate"):
+        page.evaluate(f"document.body.setAttribute('data-md-color-scheme', '{scheme}')")
+        settle(page)
+        assert page.evaluate("document.documentElement.scrollWidth") <= width, (width, scheme)
+        cells = page.locator(".tn-explorer-live .tnx-readout td").evaluate_all(
+            """(cells) => cells.map((td) => {
+                const r = td.getBoundingClientRect();
+                const parts = [...td.querySelectorAll('.tnx-part')].map(
+                    (p) => p.getClientRects().length);
+                let box = td.parentElement;
+                while (box && getComputedStyle(box).overflowX === 'visible') box = box.parentElement;
+                return {text: td.textContent, right: r.right, cut: td.scrollWidth > td.clientWidth + 1,
+                        parts, clip: box ? box.getBoundingClientRect().right : innerWidth};
+            })"""
+        )
+        assert len(cells) == 7, (width, scheme)
+        # every button of the view's toolbar is there to press, none cut off
+        live = page.locator(".tn-explorer-live .tnx-stage").first.bounding_box()
+        for button in page.locator(".tn-explorer-live .tnx-toolbar button").all():
+            b = button.bounding_box()
+            assert b is not None and b["x"] >= live["x"] - 1, (width, button.inner_text())
+            assert b["x"] + b["width"] <= live["x"] + live["width"] + 1, (
+                width,
+                button.inner_text(),
+            )
+        for cell in cells:
+            assert not cell["cut"] and cell["right"] <= min(width, cell["clip"]) + 1, (width, cell)
+            assert all(n == 1 for n in cell["parts"]), (width, cell)  # no component breaks
 
 
 def test_one_three_js_however_many_views_and_no_console_warnings(page, server, traffic):
