@@ -311,31 +311,41 @@ def test_the_views_order_button_flips_the_calculator(view):
     assert button.inner_text() == "⇄ A→B→C"
 
 
-@pytest.mark.parametrize("width", [360, 1280])
 def test_results_sit_beside_the_inputs_on_wide_screens_and_under_them_on_phones(
-    page, server, traffic, width
+    page, server, traffic
 ):
-    page.set_viewport_size({"width": width, "height": 800})
+    """Opened on a phone, then widened to a desktop (one visit, both widths)."""
+    page.set_viewport_size({"width": 360, "height": 800})
     open_view(page, server + "calculator/")
-    assert page.evaluate("document.documentElement.scrollWidth") <= width, "horizontal scroll"
+    for width in (360, 1280):
+        if width != 360:
+            resize(page, width, 800)
+            settle(page)
+        _results_beside_or_under_the_inputs(page, width)
+    assert not traffic.problems()
+
+
+def _results_beside_or_under_the_inputs(page, width: int) -> None:
+    assert page.evaluate("document.documentElement.scrollWidth") <= width, (
+        f"{width} px: horizontal scroll"
+    )
     form = page.locator(".tn-form").bounding_box()
     results = page.locator(".tn-calc-results").bounding_box()
     assert form is not None and results is not None
     if width >= 1280:
-        assert results["x"] >= form["x"] + form["width"] - 1  # to the right of the inputs
-        assert results["y"] < form["y"] + form["height"]  # level with them
+        assert results["x"] >= form["x"] + form["width"] - 1, width  # to the right of the inputs
+        assert results["y"] < form["y"] + form["height"], width  # level with them
     else:
-        assert results["y"] >= form["y"] + form["height"] - 1  # directly below
-        assert results["y"] - (form["y"] + form["height"]) < 80
+        assert results["y"] >= form["y"] + form["height"] - 1, width  # directly below
+        assert results["y"] - (form["y"] + form["height"]) < 80, width
     n_chart = page.locator("#chart").bounding_box()
     unit_chart = page.locator("#chart-unit").bounding_box()
     assert n_chart is not None and unit_chart is not None
     if width >= 1280:
-        assert abs(unit_chart["y"] - n_chart["y"]) < 2  # the unit normal's chart beside N's
+        assert abs(unit_chart["y"] - n_chart["y"]) < 2, width  # the unit normal's chart beside N's
     assert (
         page.locator("#chart-unit").get_attribute("aria-label")
     ) == "Bar chart of the unit normal components: x = 0.0000, y = 0.0000, z = 1.0000."
-    assert not traffic.problems()
 
 
 def test_without_javascript_the_explorer_page_shows_the_picture(browser, server):
