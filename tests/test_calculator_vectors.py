@@ -1,7 +1,8 @@
 """The calculator's shared vectors: current with the package, and covering the hard cases.
 
-The browser test (tests/browser/test_calculator.py) types every vector into the live
-calculator and compares its outputs with these strings; this test makes sure the
+The browser test (tests/browser/test_calculator.py) enters every vector into the live
+calculator's form (and types a few into its boxes) and compares its outputs with these
+strings; this test makes sure the
 strings are what the Python package says today, so the two can never drift apart.
 """
 
