@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import socket
 import subprocess
@@ -172,6 +173,20 @@ def kernel_ready(lab: Lab, name: str | None = None, timeout_s: float = 60) -> No
     raise TimeoutError(
         f"no idle, connected kernel for {name or 'any notebook'} after {timeout_s} s"
     )
+
+
+#: A coordinate the view wrote (a drag, an arrow key, a slider): a text on the 0.1 grid.
+GRID = re.compile(r"-?\d+(\.\d)?")
+
+
+def open_notebook(lab: Lab, page: Any, name: str, app: str = "lab") -> None:
+    """Open notebook ``name`` of the root in JupyterLab (``app="lab"``) or Notebook 7
+    (``"notebook"``) on a fresh kernel, and wait until that kernel is ready."""
+    lab.shutdown_kernels()  # a fresh kernel for this page
+    url = f"{lab.url}lab/tree/{name}?reset" if app == "lab" else lab.notebook7_url(name)
+    page.goto(url)
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
+    kernel_ready(lab, name)
 
 
 def restart_and_clear(page: Any) -> None:

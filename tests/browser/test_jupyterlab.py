@@ -21,9 +21,10 @@ from typing import Any
 
 import pytest
 from jupyterlab_support import (
+    GRID,
     Lab,
     execution_counts,
-    kernel_ready,
+    open_notebook,
     output_text,
     restart_and_clear,
     run_all,
@@ -109,14 +110,6 @@ def report(page: Any) -> dict[str, Any]:
     """The kernel's state, from the last output that holds the report."""
     text = page.locator(".jp-OutputArea-output", has_text="KERNEL {").last.inner_text()
     return dict(json.loads(text.split("KERNEL", 1)[1]))
-
-
-def open_notebook(lab: Lab, page: Any, name: str, app: str) -> None:
-    lab.shutdown_kernels()  # a fresh kernel for this page
-    url = f"{lab.url}lab/tree/{name}?reset" if app == "lab" else lab.notebook7_url(name)
-    page.goto(url)
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
-    kernel_ready(lab, name)
 
 
 @pytest.fixture(scope="module")
@@ -318,7 +311,6 @@ LOOP = [
 
 #: Keys of the nine coordinates, in the order of the boxes.
 KEYS = [p + q for p in "abc" for q in "xyz"]
-GRID = re.compile(r"-?\d+(\.\d)?")  # a value the view wrote: on the 0.1 grid
 
 
 def boxes_of(view: dict[str, Any]) -> dict[str, str]:

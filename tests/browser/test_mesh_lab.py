@@ -21,7 +21,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from jupyterlab_support import Lab, kernel_ready, output_text, run_all, run_cell, wait_idle
+from jupyterlab_support import Lab, open_notebook, output_text, run_all, run_cell, wait_idle
 
 from trinormal import mesh, triangle_normal
 
@@ -51,9 +51,8 @@ def test_the_mesh_view_renders_and_a_click_shows_the_exact_normal(lab: Lab, page
     )
     page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
     page.set_viewport_size({"width": 1280, "height": 720})
-    page.goto(lab.write_notebook("mesh_view.ipynb", CELLS))
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
-    kernel_ready(lab, "mesh_view.ipynb")
+    lab.write_notebook("mesh_view.ipynb", CELLS)
+    open_notebook(lab, page, "mesh_view.ipynb")
     run_all(page)
     root = page.locator('.tnm-root[data-faces="1263"]').first
     root.wait_for(timeout=90_000)

@@ -12,11 +12,10 @@ Uses the run's shared JupyterLab server (the ``lab`` fixture, conftest.py).
 from __future__ import annotations
 
 import json
-import re
 import time
 from typing import Any
 
-from jupyterlab_support import Lab, kernel_ready, output_text, run_all, run_cell
+from jupyterlab_support import GRID, Lab, open_notebook, output_text, run_all, run_cell
 
 CELLS = [
     "from trinormal.explorer import Explorer\nex = Explorer()\nex",
@@ -60,8 +59,6 @@ SHOWN = """() => [...document.querySelectorAll('.tnx-root')].map((root) => ({
   drawn: root.tnxProject().values,
 }))"""
 
-GRID = re.compile(r"-?\d+(\.\d)?")  # a value the view wrote: on the 0.1 grid
-
 
 def kernel(page: Any, run: int) -> dict[str, Any]:
     """The kernel's texts and exact values, from the ``run``-th run of the last cell."""
@@ -79,10 +76,8 @@ def kernel(page: Any, run: int) -> dict[str, Any]:
 
 def test_two_views_editing_one_vertex_at_once_keep_both_edits(lab: Lab, page: Any) -> None:
     page.set_viewport_size({"width": 1280, "height": 720})
-    url = lab.write_notebook("two_views.ipynb", CELLS)
-    page.goto(url)
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
-    kernel_ready(lab)
+    lab.write_notebook("two_views.ipynb", CELLS)
+    open_notebook(lab, page, "two_views.ipynb")
     run_all(page)
     page.wait_for_function("() => document.querySelectorAll('.tnx-root canvas').length === 2")
     assert kernel(page, 1)["texts"]["ax"] == "0"

@@ -13,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from jupyterlab_support import Lab, kernel_ready, run_all
+from jupyterlab_support import Lab, open_notebook, run_all
 
 from trinormal import triangle_normal
 
@@ -29,11 +29,10 @@ WHERE = "print(trinormal.__file__)"
 TYPED = ["0.1", "0.2", "0.3", "1/3", "0", "0", "0", "2.35", "0"]
 
 
-def _open_and_run(page: Any, lab: Lab, url: str, name: str) -> None:
+def _open_and_run(page: Any, lab: Lab, name: str, app: str) -> None:
     page.set_viewport_size({"width": 1280, "height": 720})
-    page.goto(url)
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=60_000)
-    kernel_ready(lab, name)
+    lab.write_notebook(name, [EXPLORER, WHERE])
+    open_notebook(lab, page, name, app)
     run_all(page)
     page.wait_for_selector(".jp-OutputArea-output canvas", timeout=90_000)
     # the last cell's output: the kernel has run every cell
@@ -77,16 +76,13 @@ def _check_the_explorer(page: Any, wheel_env: Path) -> None:
 def test_the_explorer_renders_from_the_wheel_in_jupyterlab(
     lab: Lab, page: Any, wheel_env: Path
 ) -> None:
-    _open_and_run(
-        page, lab, lab.write_notebook("wheel_lab.ipynb", [EXPLORER, WHERE]), "wheel_lab.ipynb"
-    )
+    _open_and_run(page, lab, "wheel_lab.ipynb", "lab")
     _check_the_explorer(page, wheel_env)
 
 
 def test_the_explorer_renders_from_the_wheel_in_notebook_7(
     lab: Lab, page: Any, wheel_env: Path
 ) -> None:
-    lab.write_notebook("wheel_nb7.ipynb", [EXPLORER, WHERE])
-    _open_and_run(page, lab, lab.notebook7_url("wheel_nb7.ipynb"), "wheel_nb7.ipynb")
+    _open_and_run(page, lab, "wheel_nb7.ipynb", "notebook")
     assert "/notebooks/" in page.url and "/lab" not in page.url
     _check_the_explorer(page, wheel_env)
