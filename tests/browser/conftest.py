@@ -138,7 +138,9 @@ def traffic(page: Any, server: str) -> Traffic:
         if msg.type == "error":
             t.console_errors.append(msg.text)
 
-    page.route("**/*", route)
+    # Only requests that leave the site are routed: a pattern (not a function) is matched by the
+    # browser's side, so the site's own requests are not each sent through Python and back.
+    page.route(re.compile(rf"^(?!{re.escape(t.origin)}|data:|blob:|about:)"), route)
     page.on("request", lambda req: t.requests.append(req.url))
     page.on("requestfailed", failed)
     page.on("response", response)

@@ -10,14 +10,14 @@ from __future__ import annotations
 
 import json
 
-from page_checks import AXE, AXE_OPTIONS, open_for_axe, serious
+from page_checks import open_for_axe, run_axe, serious
 
 
 def test_axe_does_see_a_contrast_failure(page, server, traffic):
     """The axe check can fail: grey text on a grey background is reported."""
     open_for_axe(page, server, "default")
     page.add_style_tag(content="article p { color: #aaa !important; background: #ccc; }")
-    assert "color-contrast" in [v["id"] for v in serious(AXE.run(page, options=AXE_OPTIONS))]
+    assert "color-contrast" in [v["id"] for v in serious(run_axe(page))]
 
 
 # Every control a reader can reach with Tab shows where the focus is. The page records the focused
