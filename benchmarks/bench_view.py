@@ -32,6 +32,15 @@ lowering the canvas's pixel ratio or dropping the HTML labels changed little. Wh
 dragging, each address update (history.replaceState) made Chromium fetch the page's icon
 again: the calculator now writes the address once the pointer rests.
 
+Measured again in December 2026 with per-thread CPU time: on SwiftShader most of a frame is
+SwiftShader's raster threads in the GPU process (about 28 ms of CPU per orbit frame, 33 per
+drag frame, on a page whose WebGL canvas, when hidden, saved nothing). Two causes were ours:
+the view's box had rounded corners, so the canvas was clipped through a mask every frame
+(about 5 ms), and the view re-applied every attribute, text and style of its toolbar, sliders
+and labels on every frame of a drag (a MutationObserver counted 30 writes per move), each one
+a style recalculation and a repaint. Square corners and writing only what changed (the
+view's dom.js) took a drag frame from about 48 to 42 ms of CPU.
+
 Measured in the same run too, the old matplotlib explorer's update: recompute and redraw the
 figure as a PNG (``ex.set(b=...)`` then ``ex.to_png()``), what each slider move cost.
 
@@ -65,8 +74,9 @@ sys.path.insert(0, str(ROOT / "tests" / "browser"))
 from browser_support import CHROMIUM, CHROMIUM_ARGS, built_site, serve_site  # noqa: E402
 from playwright.sync_api import sync_playwright  # noqa: E402
 
-#: The commit before the profile-guided changes: the previous design, measured beside this one.
-PREVIOUS = "cb3ad2c"
+#: The design before the last profile-guided change (square corners, writing only what changed),
+#: measured beside this one.
+PREVIOUS = "dd3fdc9"
 SETUPS = {
     "--disable-gpu": CHROMIUM_ARGS,
     "SwiftShader": [a for a in CHROMIUM_ARGS if a != "--disable-gpu"]

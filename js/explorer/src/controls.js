@@ -7,6 +7,7 @@
  * shown as set and is never rounded back to the grid.
  */
 import { gridIndex, gridText, parseCoordinate, readStep } from "./numbers.js";
+import { setAttr, setHidden, setStyle } from "./dom.js";
 
 function make(tag, className, text) {
   const e = document.createElement(tag);
@@ -90,20 +91,20 @@ export function createControls(parent, view) {
   parent.appendChild(panel);
 
   function update() {
-    panel.hidden = view.get("show_controls") === false;
+    setHidden(panel, view.get("show_controls") === false);
     const grid = readStep(view.get("step"));
     const [lo, hi] = (view.get("bounds") || [-5, 5]).map(Number);
     for (const p of "abc") {
-      rows[p].name.style.color = view.color(p.toUpperCase());
+      setStyle(rows[p].name, "color", view.color(p.toUpperCase()));
       const values = (view.get(p) || ["", "", ""]).map(String);
       rows[p].cells.forEach(({ slider, box }, i) => {
-        slider.min = String(lo);
-        slider.max = String(hi);
-        slider.step = String(grid.value);
+        setAttr(slider, "min", lo);
+        setAttr(slider, "max", hi);
+        setAttr(slider, "step", grid.value);
         const x = parseCoordinate(values[i]);
         // the thumb shows the value; the value itself stays the host's exact text
         if (Number.isFinite(x) && Number(slider.value) !== x) slider.value = String(x);
-        slider.setAttribute("aria-valuetext", values[i]);
+        setAttr(slider, "aria-valuetext", values[i]);
         if (!box.dataset.dirty && box.value !== values[i]) box.value = values[i];
       });
     }

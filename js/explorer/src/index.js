@@ -27,6 +27,7 @@ import { createReadout } from "./readout.js";
 import { createStage, DEFAULT_DIRECTION } from "./scene.js";
 import { injectStyle } from "./style.js";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
+import { setAttr, setHidden, setStyle, setText } from "./dom.js";
 
 const KEYS = [
   "a", "b", "c", "winding", "precision", "step", "bounds", "show_parallelogram", "show_unit_normal",
@@ -341,7 +342,7 @@ function render({ model, el }) {
     for (const a of "xyz") {
       const tip = new Vector3(a === "x" ? next.L : 0, a === "y" ? next.L : 0, a === "z" ? next.L : 0);
       labels.place("axis:" + a, tip, { away: new Vector3(), offset: 18, visible: next.includeOrigin });
-      labels.items.get("axis:" + a).el.style.color = colors(a);
+      setStyle(labels.items.get("axis:" + a).el, "color", colors(a));
     }
   }
 
@@ -359,25 +360,26 @@ function render({ model, el }) {
     const pts = dataPoints();
     const st = get("state") || {};
     const winding = get("winding") === "ACB" ? "ACB" : "ABC";
-    flip.textContent = `⇄ ${ORDER[winding]}`;
-    flip.setAttribute("aria-label", `Flip the order of the vertices, now ${ORDER[winding]}`);
-    flip.title = flip.getAttribute("aria-label");
-    para.setAttribute("aria-pressed", String(!!get("show_parallelogram")));
-    unit.setAttribute("aria-pressed", String(!!get("show_unit_normal")));
+    setText(flip, `⇄ ${ORDER[winding]}`);
+    setAttr(flip, "aria-label", `Flip the order of the vertices, now ${ORDER[winding]}`);
+    setAttr(flip, "title", flip.getAttribute("aria-label"));
+    setAttr(para, "aria-pressed", !!get("show_parallelogram"));
+    setAttr(unit, "aria-pressed", !!get("show_unit_normal"));
     readout.show(!!get("show_readout"));
     side.classList.toggle("tnx-no-readout", !get("show_readout"));
     if (get("show_readout")) readout.update(st);
     const problem = st.ok === false ? st.error || st.status : st.degenerate ? st.status : "";
-    message.hidden = !problem;
-    message.textContent = problem || "";
-    message.dataset.state = st.ok === false ? "error" : "degenerate";
+    setHidden(message, !problem);
+    setText(message, problem || "");
+    setAttr(message, "data-state", st.ok === false ? "error" : "degenerate");
     const refused = model.get("message") || "";
-    error.hidden = !refused;
-    error.textContent = refused;
+    setHidden(error, !refused);
+    setText(error, refused);
     controls.update();
     for (const name of "ABC") {
       const values = get(name.toLowerCase()) || [];
-      vertexEls[name].setAttribute(
+      setAttr(
+        vertexEls[name],
         "aria-label",
         `Point ${name} at (${values.join(", ")}). Arrow keys move x and y, Page Up and Page Down move z.`,
       );
@@ -441,7 +443,7 @@ function render({ model, el }) {
     // labels: vertices beyond their points (and the arrow heads there), arrows beside their shafts
     for (const name of "ABC") {
       labels.place("v:" + name, g[name], { away: centroid, offset: 30, angle: VERTEX_ANGLE[name] });
-      vertexEls[name].style.color = colors(name);
+      setStyle(vertexEls[name], "color", colors(name));
     }
     labels.place("arrow:U", A.clone().lerp(P, 0.5), { away: centroid, offset: 20, visible: U.length() > 0 });
     labels.place("arrow:V", A.clone().lerp(Q, 0.5), { away: centroid, offset: 20, visible: V.length() > 0 });
@@ -451,13 +453,13 @@ function render({ model, el }) {
       away: centroid, offset: 20, angle: Math.PI, visible: !!unitDraw,
     });
     for (const [id, role] of [["U", "U"], ["V", "V"], ["N", "N"], ["unit", "unit"]]) {
-      labels.items.get("arrow:" + id).el.style.color = colors(role);
+      setStyle(labels.items.get("arrow:" + id).el, "color", colors(role));
     }
     const magnitude = readoutValue("magnitude");
     const area = readoutValue("area");
     const showAreas = g.showParallelogram && !degenerate && magnitude !== null && area !== null;
-    legend.hidden = !showAreas;
-    if (showAreas) legend.textContent = `Parallelogram on U and V: area |N| = ${magnitude}. Triangle: area |N|/2 = ${area}.`;
+    setHidden(legend, !showAreas);
+    if (showAreas) setText(legend, `Parallelogram on U and V: area |N| = ${magnitude}. Triangle: area |N|/2 = ${area}.`);
     stage.requestRender();
   }
 
@@ -467,7 +469,7 @@ function render({ model, el }) {
     drawing.paint(colors);
     if (frame) {
       drawing.setGrid(frame.L, frame.t, surface(dark), frame.includeOrigin); // the grid's colours
-      for (const a of "xyz") labels.items.get("axis:" + a).el.style.color = colors(a);
+      for (const a of "xyz") setStyle(labels.items.get("axis:" + a).el, "color", colors(a));
     }
     sync();
   }

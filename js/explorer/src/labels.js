@@ -5,6 +5,7 @@
  * labels are pushed away from the triangle's centre so they sit beyond the arrow heads.
  */
 import { Vector3 } from "three";
+import { setHidden } from "./dom.js";
 
 const v = new Vector3();
 
@@ -63,12 +64,12 @@ export class LabelLayer {
     const placed = [];
     for (const item of this.items.values()) {
       if (!item.visible || !item.anchor) {
-        item.el.hidden = true;
+        setHidden(item.el, true);
         continue;
       }
       const p = project(item.anchor, camera, size);
       if (p.behind) {
-        item.el.hidden = true;
+        setHidden(item.el, true);
         continue;
       }
       let dx = 0;
@@ -110,7 +111,7 @@ export class LabelLayer {
         y = Math.min(Math.max(y, 20), size.height - 20);
         placed.push({ x, y });
       }
-      item.el.hidden = false;
+      setHidden(item.el, false);
       if (item.kind === "arrow") {
         // keep an arrow's label ("N/2", "N/|N|") wholly inside the view; measured once per text
         if (!item.half || !item.half.w) item.half = { w: item.el.offsetWidth / 2, h: item.el.offsetHeight / 2 };

@@ -3,6 +3,7 @@
  * sentence, and a polite live region with the one-line summary for screen readers.
  * Every string comes from `state`: the view prints nothing it computed itself.
  */
+import { setAttr, setHidden, setText } from "./dom.js";
 
 /**
  * A value as spans (a vector's components; a plane's terms), so a line can break only
@@ -55,12 +56,12 @@ export function createReadout(parent) {
         tr.append(th, document.createElement("td"));
         tr.cells[1].className = "tnx-value";
       }
-      tr.dataset.key = row.key;
-      tr.cells[0].textContent = row.label;
+      setAttr(tr, "data-key", row.key);
+      setText(tr.cells[0], row.label);
       setValue(tr.cells[1], state.ok === false ? "—" : row.value);
     });
-    status.textContent = (state?.ok === false ? state.error : state?.status) || "";
-    status.dataset.state = state?.ok === false ? "error" : state?.degenerate ? "degenerate" : "ok";
+    setText(status, (state?.ok === false ? state.error : state?.status) || "");
+    setAttr(status, "data-state", state?.ok === false ? "error" : state?.degenerate ? "degenerate" : "ok");
     // announce once the values settle (a drag changes them every frame)
     clearTimeout(timer);
     const text = state?.ok === false ? state.error || "" : state?.summary || state?.status || "";
@@ -73,7 +74,7 @@ export function createReadout(parent) {
     el: panel,
     update,
     show(on) {
-      panel.hidden = !on;
+      setHidden(panel, !on);
     },
     dispose() {
       clearTimeout(timer);
