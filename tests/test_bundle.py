@@ -77,6 +77,10 @@ def test_the_licence_names_the_bundled_three_version() -> None:
     bvh = lock["packages"]["node_modules/three-mesh-bvh"]["version"]
     assert f"three-mesh-bvh {bvh}" in text and "Copyright (c) 2018 Garrett Johnson" in text
     assert f"three-mesh-bvh {bvh}" in (STATIC / "mesh-view.js").read_text(encoding="utf-8")[:300]
+    # and meshoptimizer, the coarser copy of a big model while it turns
+    meshopt = lock["packages"]["node_modules/meshoptimizer"]["version"]
+    assert f"meshoptimizer {meshopt}" in text and "Arseny Kapoulkine" in text
+    assert f"meshoptimizer {meshopt}" in (STATIC / "mesh-view.js").read_text(encoding="utf-8")[:300]
 
 
 # Ways a script could load code or data from another origin at run time.

@@ -33,6 +33,7 @@ const cssAsText = {
 
 const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.json"), "utf8"));
 const bvh = JSON.parse(readFileSync(join(here, "node_modules/three-mesh-bvh/package.json"), "utf8"));
+const meshopt = JSON.parse(readFileSync(join(here, "node_modules/meshoptimizer/package.json"), "utf8"));
 
 // One three.js per page. A page can show the explorer and the mesh view together (two bundles,
 // or one bundle that anywidget imports once per widget), and three.js warns "Multiple instances
@@ -145,11 +146,11 @@ await build({
   metafile: false,
   logLevel: "warning",
   banner: {
-    js: `/* trinormal mesh view. Bundles three.js ${three.version} and three-mesh-bvh ${bvh.version} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
+    js: `/* trinormal mesh view. Bundles three.js ${three.version}, three-mesh-bvh ${bvh.version} and meshoptimizer ${meshopt.version} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
   },
 });
 
-const licenceOf = (pkg) => readFileSync(join(here, "node_modules", pkg, "LICENSE"), "utf8").replace(/\r\n/g, "\n").trimEnd();
+const licenceOf = (pkg, file = "LICENSE") => readFileSync(join(here, "node_modules", pkg, file), "utf8").replace(/\r\n/g, "\n").trimEnd();
 writeFileSync(
   join(out, "THIRD_PARTY_LICENSES.txt"),
   "explorer.js and mesh-view.js bundle the following third-party software.\n\n" +
@@ -158,6 +159,9 @@ writeFileSync(
     "\n\n" +
     `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", in mesh-view.js only), MIT licence:\n\n` +
     licenceOf("three-mesh-bvh") +
+    "\n\n" +
+    `meshoptimizer ${meshopt.version} (npm package "meshoptimizer", in mesh-view.js only: the coarser copy of a big model drawn while it turns), MIT licence:\n\n` +
+    licenceOf("meshoptimizer", "LICENSE.md") +
     "\n",
 );
 console.log(`built ${join(out, "explorer.js")} and mesh-view.js with three ${three.version}`);

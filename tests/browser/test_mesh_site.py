@@ -204,8 +204,14 @@ def test_a_bad_file_shows_pythons_message_not_a_crash(page, server, traffic, tmp
     assert not traffic.problems()
 
 
-def test_a_big_binary_stl_moves_the_progress_bar(page, server, traffic, tmp_path):
-    """The worker reports progress while it reads and checks; the bar shows each step."""
+def test_a_big_binary_stl_moves_the_progress_bar_and_turns_as_a_coarser_copy(
+    page, server, traffic, tmp_path
+):
+    """The worker reports progress while it reads and checks; the bar shows each step.
+
+    Then the view: while the camera turns, the 200 000-face model is drawn as a coarser copy
+    (about 30 000 faces), and in full again once the pointer is released.
+    """
     from trinormal.mesh import torus
 
     v, f = torus(n_major=400, n_minor=250)  # 200,000 triangles, 10 MB
@@ -227,6 +233,22 @@ def test_a_big_binary_stl_moves_the_progress_bar(page, server, traffic, tmp_path
     steps = [x for x in seen if 0 < x < 100]
     assert len(set(steps)) >= 5 and steps == sorted(steps), seen  # it moved, forward only
     assert page.locator("#tn-mesh-progress-box").is_hidden()  # and went away at the end
+
+    root = page.locator("#tn-mesh-view .tnm-root")
+    page.wait_for_function("(r) => r.dataset.coarseFaces", arg=root.element_handle())
+    coarse = int(root.get_attribute("data-coarse-faces"))
+    assert 10_000 <= coarse <= 40_000, coarse
+    canvas = page.locator("#tn-mesh-view canvas")
+    canvas.scroll_into_view_if_needed()
+    box = canvas.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    assert root.get_attribute("data-turning") != "true"  # a press alone (a pick) stays full
+    page.mouse.move(x + 60, y + 10, steps=4)
+    assert root.get_attribute("data-turning") == "true"
+    page.mouse.up()
+    assert root.get_attribute("data-turning") == "false"
     assert not traffic.problems()
 
 

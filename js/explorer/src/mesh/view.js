@@ -50,6 +50,7 @@ import { LineMaterial } from "three/addons/lines/LineMaterial.js";
 import { LineSegments2 } from "three/addons/lines/LineSegments2.js";
 import { LineSegmentsGeometry } from "three/addons/lines/LineSegmentsGeometry.js";
 import { MeshBVH } from "three-mesh-bvh";
+import { MeshoptSimplifier } from "meshoptimizer/simplifier";
 import { createStage, DEFAULT_DIRECTION } from "../scene.js";
 import { isDark, roleColor, surface, watchTheme } from "../theme.js";
 import CSS from "./style.css";
@@ -225,6 +226,29 @@ function twoSidedMaterial() {
   return { material, backColor: backColor.value };
 }
 
+/**
+ * While the camera turns, a model of more than COARSE_ABOVE faces is drawn as a coarser copy of
+ * about COARSE_FACES faces (meshoptimizer's simplifySloppy: vertices merged on a grid, every
+ * kept face wound as in the file), and in full again as soon as the pointer is released. On a
+ * software renderer the frame time grows with the faces drawn, not the pixels (a 200 000-face
+ * model: about 130 ms a frame in full, benchmarks/bench_mesh_view.py).
+ */
+const COARSE_ABOVE = 60000;
+const COARSE_FACES = 30000;
+
+/** The rows (3 floats) of `values` a compacted copy keeps: row i goes to row remap[i]. */
+function keptRows(values, remap, unique) {
+  const out = new Float32Array(3 * unique);
+  for (let i = 0; i < remap.length; i++) {
+    const j = remap[i];
+    if (j === 0xffffffff) continue; // not used by the copy
+    out[3 * j] = values[3 * i];
+    out[3 * j + 1] = values[3 * i + 1];
+    out[3 * j + 2] = values[3 * i + 2];
+  }
+  return out;
+}
+
 /** Most vertex-normal arrows drawn (a sample of the vertices on bigger models). */
 const MAX_VERTEX_ARROWS = 1500;
 
@@ -294,7 +318,14 @@ function render({ model, el }) {
   let meshes = [];
   let bvh = null; // the faces' bounding volume hierarchy, for picking: built once per model
   let bvhTimer = null; // cancels the BVH's scheduled build
+  let coarse = null; // the coarser copy drawn while the camera turns (big models only)
+  let turning = false; // the camera is turning: the coarser copy and thin outlines are drawn
   let lines = {};
+  // the same outlines as plain 1-pixel lines, drawn instead while the camera turns: SwiftShader
+  // draws an instanced wide line (LineSegments2) as one draw per segment, so 3 000 outlined
+  // sides cost about 65 ms a frame there, and these about nothing
+  const thinMaterials = { flipped: new LineBasicMaterial(), boundary: new LineBasicMaterial(), non_manifold: new LineBasicMaterial() };
+  let thinLines = {};
   const arrowMaterials = { face: new LineBasicMaterial(), vertex: new LineBasicMaterial() };
   let arrows = {};
   let pickLine = null;
@@ -324,6 +355,7 @@ function render({ model, el }) {
     surfaceMaterial.color = new Color(roleColor(palette(), "front", dark));
     backColor.set(roleColor(palette(), "back", dark));
     for (const [role, m] of Object.entries(lineMaterials)) m.color = new Color(roleColor(palette(), role, dark));
+    for (const [role, m] of Object.entries(thinMaterials)) m.color = new Color(roleColor(palette(), role, dark));
     arrowMaterials.face.color = new Color(roleColor(palette(), "N", dark));
     arrowMaterials.vertex.color = new Color(s.text);
     pickMaterial.color = new Color(s.line);
@@ -359,15 +391,23 @@ function render({ model, el }) {
 
   function clear() {
     for (const m of meshes) scene.remove(m);
-    for (const l of Object.values(lines)) {
+    for (const l of [...Object.values(lines), ...Object.values(thinLines)]) {
       scene.remove(l);
       l.geometry.dispose();
     }
+    thinLines = {};
+    turning = false;
+    root.dataset.turning = "false";
     for (const a of Object.values(arrows)) {
       scene.remove(a);
       a.geometry.dispose();
     }
     if (geometry) geometry.dispose();
+    if (coarse) {
+      scene.remove(coarse);
+      coarse.geometry.dispose();
+      coarse = null;
+    }
     if (bvhTimer) bvhTimer();
     bvh = bvhTimer = null;
     meshes = [];
@@ -488,12 +528,19 @@ function render({ model, el }) {
     for (const [role, sides] of Object.entries(sets)) {
       counts[role] = role === "flipped" ? sides.length / 3 : sides.length;
       if (!sides.length) continue;
+      const segments = sideSegments(pos, data.faces, sides, 1, zero);
       const g = new LineSegmentsGeometry();
-      g.setPositions(sideSegments(pos, data.faces, sides, 1, zero));
+      g.setPositions(segments);
       const l = new LineSegments2(g, lineMaterials[role]);
       l.renderOrder = 1;
       lines[role] = l;
-      scene.add(l);
+      const thin = new BufferGeometry();
+      thin.setAttribute("position", new BufferAttribute(segments, 3));
+      const t = new LineSegments(thin, thinMaterials[role]);
+      t.renderOrder = 1;
+      t.visible = false;
+      thinLines[role] = t;
+      scene.add(l, t);
     }
     // keep the corners of the model's box in view, looking from where the trouble is
     geometry.computeBoundingBox();
@@ -501,6 +548,7 @@ function render({ model, el }) {
     const corners = [];
     for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
     stage.framePoints(corners, true, startDirection(pos, data.faces, sets));
+    if (data.faces.length / 3 > COARSE_ABOVE) buildCoarse(geometry, data.faces, pos);
     drawArrows(data, pos);
     current = { data, pos, offset, scale };
     updateResolution();
@@ -508,6 +556,59 @@ function render({ model, el }) {
     root.dataset.faces = String(data.faces.length / 3);
     showPick();
   }
+
+  /** The coarser copy of a big model, drawn while the camera turns (see COARSE_ABOVE). */
+  function buildCoarse(full, faces, pos) {
+    MeshoptSimplifier.ready.then(() => {
+      if (geometry !== full || !MeshoptSimplifier.supported) return; // another model by now
+      const index = new Uint32Array(faces.buffer, faces.byteOffset, faces.length);
+      const [kept] = MeshoptSimplifier.simplifySloppy(index, pos, 3, null, 3 * COARSE_FACES, 1);
+      if (!kept.length) return;
+      // only the vertices the copy uses (fewer vertices to transform every frame)
+      const [remap, unique] = MeshoptSimplifier.compactMesh(kept);
+      const g = new BufferGeometry();
+      g.setAttribute("position", new BufferAttribute(keptRows(full.getAttribute("position").array, remap, unique), 3));
+      g.setIndex(new BufferAttribute(kept, 1));
+      g.boundingSphere = full.boundingSphere;
+      coarse = new Mesh(g, surfaceMaterial);
+      coarse.userData = { remap, unique, normal: null };
+      coarse.visible = false;
+      scene.add(coarse);
+      root.dataset.coarseFaces = String(kept.length / 3);
+    });
+  }
+
+  /** While the camera turns: the coarser copy (if any) and thin outlines; else the model itself. */
+  function showTurning(on) {
+    if (!geometry || turning === on) return;
+    turning = on;
+    for (const [role, l] of Object.entries(lines)) {
+      l.visible = !on;
+      thinLines[role].visible = on;
+    }
+    root.dataset.turning = String(on);
+    stage.requestRender();
+    if (!coarse) return;
+    const normal = geometry.getAttribute("normal"); // smooth shading: the model's own normals
+    const own = coarse.userData;
+    if (normal && own.normal !== normal) {
+      own.normal = normal;
+      coarse.geometry.setAttribute("normal", new BufferAttribute(keptRows(normal.array, own.remap, own.unique), 3));
+    }
+    coarse.visible = on;
+    for (const m of meshes) m.visible = !on;
+  }
+  let held = false; // the pointer is down on the view (OrbitControls' start .. end)
+  stage.controls.addEventListener("start", () => {
+    held = true;
+  });
+  stage.controls.addEventListener("change", () => {
+    if (held) showTurning(true); // only once the camera actually moves: a click to pick stays full
+  });
+  stage.controls.addEventListener("end", () => {
+    held = false;
+    showTurning(false);
+  });
 
   // ------------------------------------------------------------------ picking a face
   const raycaster = new Raycaster();
@@ -663,7 +764,7 @@ function render({ model, el }) {
     stopTheme();
     clear();
     surfaceMaterial.dispose();
-    for (const m of Object.values(lineMaterials)) m.dispose();
+    for (const m of [...Object.values(lineMaterials), ...Object.values(thinMaterials)]) m.dispose();
     for (const m of Object.values(arrowMaterials)) m.dispose();
     pickMaterial.dispose();
     stage.dispose();
