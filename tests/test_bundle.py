@@ -20,7 +20,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 JS = ROOT / "js" / "explorer"
 STATIC = ROOT / "trinormal" / "explorer" / "static"
-OUTPUTS = ("explorer.js", "mesh-view.js", "THIRD_PARTY_LICENSES.txt")
+OUTPUTS = ("explorer.js", "THIRD_PARTY_LICENSES.txt")
 REBUILD = "run `make js` and commit trinormal/explorer/static/"
 
 
@@ -73,14 +73,14 @@ def test_the_licence_names_the_bundled_three_version() -> None:
     assert f"three.js {version}" in text
     assert "Permission is hereby granted, free of charge" in text  # the MIT licence itself
     assert f"three.js {version}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
-    # the mesh view's picking (three-mesh-bvh) is bundled in mesh-view.js: its licence travels too
+    # the mesh view's picking (three-mesh-bvh) is bundled too: its licence travels with it
     bvh = lock["packages"]["node_modules/three-mesh-bvh"]["version"]
     assert f"three-mesh-bvh {bvh}" in text and "Copyright (c) 2018 Garrett Johnson" in text
-    assert f"three-mesh-bvh {bvh}" in (STATIC / "mesh-view.js").read_text(encoding="utf-8")[:300]
+    assert f"three-mesh-bvh {bvh}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
     # and meshoptimizer, the coarser copy of a big model while it turns
     meshopt = lock["packages"]["node_modules/meshoptimizer"]["version"]
     assert f"meshoptimizer {meshopt}" in text and "Arseny Kapoulkine" in text
-    assert f"meshoptimizer {meshopt}" in (STATIC / "mesh-view.js").read_text(encoding="utf-8")[:300]
+    assert f"meshoptimizer {meshopt}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
 
 
 # Ways a script could load code or data from another origin at run time.

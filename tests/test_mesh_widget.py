@@ -15,6 +15,7 @@ import pytest
 
 from trinormal import mesh
 from trinormal.display import format_number, format_vector
+from trinormal.explorer.view import BUNDLE
 from trinormal.mesh.widget import MAX_ARROWS, MESH_BUNDLE, MeshView, face_selection
 
 
@@ -38,7 +39,10 @@ def ball() -> mesh.MeshData:
 
 
 def test_the_module_is_the_sites_mesh_view_bundle() -> None:
-    assert MESH_BUNDLE.name == "mesh-view.js" and MESH_BUNDLE.is_file()
+    # one bundle for both views (one three.js): the widget says which view draws it
+    assert MESH_BUNDLE == BUNDLE and MESH_BUNDLE.is_file()
+    assert MeshView(mesh.read_mesh(mesh.sample_path())).get_state()["_view"] == "mesh"
+    assert sorted(p.name for p in BUNDLE.parent.glob("*.js")) == ["explorer.js"]
     assert str(MeshView._esm) == MESH_BUNDLE.read_text(encoding="utf-8")
 
 

@@ -1,15 +1,16 @@
-// Build the 3D view into one ES module for JupyterLab (anywidget) and the site:
+// Build trinormal's 3D views into one ES module for JupyterLab (anywidget) and the site:
 //   node build.mjs [OUTDIR]      (default: ../../trinormal/explorer/static)
-// Writes explorer.js and mesh-view.js (three.js bundled in, CSS as a string, minified, deterministic) and
-// THIRD_PARTY_LICENSES.txt (the licences of three.js and of three-mesh-bvh, the mesh view's picking,
-// copied from node_modules, with their versions).
+// Writes explorer.js, the explorer and the mesh view from src/main.js (three.js bundled in once,
+// CSS as a string, minified, deterministic), and THIRD_PARTY_LICENSES.txt (the licences of
+// three.js, three-mesh-bvh and meshoptimizer, copied from node_modules, with their versions).
 //
 // One three.js per page: anywidget imports the module afresh for every widget (and again
 // when a cell is re-run), and each import would evaluate three.js again (three warns about
 // "multiple instances"). So the bundle is an IIFE wrapped in a small ES module that keeps
 // the evaluated runtime on globalThis, keyed by a hash of the code: the first import runs
-// it, every later import of the same build reuses it. Inside both bundles three.js itself is
-// shared too (sharedThree below), so the explorer and the mesh view on one page run it once.
+// it, every later import of the same build reuses it. Inside the bundle three.js itself is
+// shared too (sharedThree below), so even two builds on one page (a notebook's old output
+// beside a new one) run one three.js of a version.
 import { createHash } from "node:crypto";
 import { mkdirSync, readdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
@@ -35,13 +36,13 @@ const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.jso
 const bvh = JSON.parse(readFileSync(join(here, "node_modules/three-mesh-bvh/package.json"), "utf8"));
 const meshopt = JSON.parse(readFileSync(join(here, "node_modules/meshoptimizer/package.json"), "utf8"));
 
-// One three.js per page. A page can show the explorer and the mesh view together (two bundles,
-// or one bundle that anywidget imports once per widget), and three.js warns "Multiple instances
-// of Three.js being imported" when its module runs twice. So our sources never run three.js
-// themselves: every `import ... from "three"` (or a three.js addon) in src/ is served by a small
-// module that takes three.js from globalThis, where the first bundle to run puts it. The runtime
-// (three.js and the addons below, the same list in every bundle) sits in each bundle, wrapped
-// by esbuild so it runs only when no runtime is on the page yet.
+// One three.js per page. Two builds of the bundle can meet on one page (a notebook saved with an
+// older version's output), and three.js warns "Multiple instances of Three.js being imported"
+// when its module runs twice. So our sources never run three.js themselves: every
+// `import ... from "three"` (or a three.js addon) in src/ is served by a small module that takes
+// three.js from globalThis, where the first build to run puts it, keyed by three's version and
+// the names used. The runtime (three.js and the addons below) sits in the bundle, wrapped by
+// esbuild so it runs only when no runtime of that key is on the page yet.
 const ADDONS = [
   "three/addons/controls/OrbitControls.js",
   "three/addons/lines/LineMaterial.js",
@@ -104,7 +105,7 @@ const sharedThree = {
 
 const result = await build({
   absWorkingDir: here,
-  entryPoints: ["src/index.js"],
+  entryPoints: ["src/main.js"], // both views: the explorer and the mesh view
   outfile: join(out, "explorer.js"),
   write: false,
   bundle: true,
@@ -112,7 +113,7 @@ const result = await build({
   globalName: "tnxModule",
   target: "es2020",
   minify: true,
-  legalComments: "none", // the licence travels in THIRD_PARTY_LICENSES.txt next to the bundle
+  legalComments: "none", // the licences travel in THIRD_PARTY_LICENSES.txt next to the bundle
   charset: "utf8",
   plugins: [cssAsText, sharedThree],
   sourcemap: false,
@@ -123,45 +124,24 @@ const inner = result.outputFiles[0].text.trim();
 const key = createHash("sha256").update(inner).digest("hex").slice(0, 16);
 writeFileSync(
   join(out, "explorer.js"),
-  `/* trinormal 3D view. Bundles three.js ${three.version} (MIT licence, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */\n` +
+  `/* trinormal 3D views (the explorer and the mesh view). Bundles three.js ${three.version}, three-mesh-bvh ${bvh.version} and meshoptimizer ${meshopt.version} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */\n` +
     `const G=globalThis.__trinormalExplorer||(globalThis.__trinormalExplorer={});\n` +
-    `const R=G["${key}"]||(G["${key}"]=(()=>{${inner}\nreturn tnxModule.default})());\n` +
-    `export default R;\n`,
+    `const R=G["${key}"]||(G["${key}"]=(()=>{${inner}\nreturn tnxModule})());\n` +
+    `export default R.default;\nexport const explorer=R.explorer,mesh=R.mesh;\n`,
 );
-
-// The mesh view (src/mesh/view.js) of the site's "Check a mesh" page: a file of its own, built
-// from the same three.js, so each page loads one copy of three.js (this one or explorer.js).
-await build({
-  absWorkingDir: here,
-  entryPoints: ["src/mesh/view.js"],
-  outfile: join(out, "mesh-view.js"),
-  bundle: true,
-  format: "esm",
-  target: "es2020",
-  minify: true,
-  legalComments: "none",
-  charset: "utf8",
-  plugins: [cssAsText, sharedThree],
-  sourcemap: false,
-  metafile: false,
-  logLevel: "warning",
-  banner: {
-    js: `/* trinormal mesh view. Bundles three.js ${three.version}, three-mesh-bvh ${bvh.version} and meshoptimizer ${meshopt.version} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */`,
-  },
-});
 
 const licenceOf = (pkg, file = "LICENSE") => readFileSync(join(here, "node_modules", pkg, file), "utf8").replace(/\r\n/g, "\n").trimEnd();
 writeFileSync(
   join(out, "THIRD_PARTY_LICENSES.txt"),
-  "explorer.js and mesh-view.js bundle the following third-party software.\n\n" +
+  "explorer.js (the explorer and the mesh view) bundles the following third-party software.\n\n" +
     `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
     licenceOf("three") +
     "\n\n" +
-    `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", in mesh-view.js only), MIT licence:\n\n` +
+    `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", the mesh view's picking), MIT licence:\n\n` +
     licenceOf("three-mesh-bvh") +
     "\n\n" +
-    `meshoptimizer ${meshopt.version} (npm package "meshoptimizer", in mesh-view.js only: the coarser copy of a big model drawn while it turns), MIT licence:\n\n` +
+    `meshoptimizer ${meshopt.version} (npm package "meshoptimizer", the mesh view's coarser copy of a big model while it turns), MIT licence:\n\n` +
     licenceOf("meshoptimizer", "LICENSE.md") +
     "\n",
 );
-console.log(`built ${join(out, "explorer.js")} and mesh-view.js with three ${three.version}`);
+console.log(`built ${join(out, "explorer.js")} (the explorer and the mesh view) with three ${three.version}`);

@@ -1,8 +1,9 @@
 """The 3D view of a whole mesh in Jupyter: an anywidget on the site's mesh view.
 
 [`MeshView`][trinormal.mesh.widget.MeshView] draws a mesh with the same ES module as the
-site's "Check a mesh" page (``trinormal/explorer/static/mesh-view.js``, built from
-``js/explorer/src/mesh/view.js`` with three.js) and the same colour code: the front of each
+site's "Check a mesh" page (the mesh view in ``trinormal/explorer/static/explorer.js``, the
+one bundle of both 3D views, built from ``js/explorer/src/`` with three.js) and the same
+colour code: the front of each
 face in the ``front`` colour, its back in the ``back`` colour, faces to flip outlined, the
 rims of holes and non-manifold edges drawn thick, face normals as short arrows (a sample of
 at most ``max_arrows`` faces on big models), vertex normals on request, flat or smooth
@@ -42,8 +43,9 @@ from trinormal.validation import check_precision
 
 __all__ = ["MAX_ARROWS", "MESH_BUNDLE", "MeshView", "face_selection", "selection_text"]
 
-#: The bundled ES module of the mesh view (three.js included), built by ``make js``.
-MESH_BUNDLE = BUNDLE.with_name("mesh-view.js")
+#: The bundled ES module of the mesh view: the explorer's own (both views and one three.js in
+#: one file, built by ``make js``); the ``_view`` trait tells it which view to draw.
+MESH_BUNDLE = BUNDLE
 
 #: Most face-normal arrows drawn by default: every face up to this many, a sample above.
 MAX_ARROWS = 2000
@@ -127,6 +129,8 @@ class MeshView(anywidget.AnyWidget):
     """
 
     _esm = MESH_BUNDLE
+    #: Which view of the bundle draws this widget (the explorer's widgets have no ``_view``).
+    _view = traitlets.Unicode("mesh").tag(sync=True)
 
     positions = traitlets.Bytes(b"").tag(sync=True)
     faces = traitlets.Bytes(b"").tag(sync=True)

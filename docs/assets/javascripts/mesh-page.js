@@ -2,14 +2,14 @@
  * The "Check a mesh" page: choose or drop an OBJ, STL or PLY file, or an example; a Web Worker
  * (mesh-worker.js, running trinormal-mesh.js) reads it, checks it and fixes its winding, with a
  * progress bar; the page shows the report (rows and sentences from the package, through
- * TRINORMAL_CONSTANTS.mesh), the model in 3D (assets/explorer/mesh-view.js) and offers the
+ * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view of assets/explorer/explorer.js) and offers the
  * repaired file for download. A face picked in the view (a click, or its number typed) is
  * answered here as the kernel answers it in Jupyter: its three vertices, its exact normal and
  * its area from the calculator's core (TrinormalCore), with the package's wording
  * (TRINORMAL_CONSTANTS.mesh.selection, trinormal.mesh.selection). Nothing leaves the browser.
  */
 const WORKER = new URL("mesh-worker.js", import.meta.url).href;
-const VIEW = new URL("../explorer/mesh-view.js", import.meta.url).href;
+const VIEW = new URL("../explorer/explorer.js", import.meta.url).href; // both 3D views, one three.js
 const SHOWN = 12; // list at most this many indices in a row of the report
 
 const $ = (id) => document.getElementById(id);
@@ -270,7 +270,7 @@ function mount(root) {
     if (!view) {
       const module = await import(VIEW);
       host.textContent = "";
-      view = module.default.render({ model, el: host });
+      view = module.mesh.render({ model, el: host });
     }
     host.dataset.ready = "true";
   }
