@@ -252,6 +252,42 @@ def test_a_big_binary_stl_moves_the_progress_bar_and_turns_as_a_coarser_copy(
     assert not traffic.problems()
 
 
+def test_many_faces_to_flip_are_outlined_by_the_rim_of_their_patch(page, server, traffic, tmp_path):
+    """Above 2 000 faces to flip, only the sides on the rim of their patch are outlined.
+
+    The rim is counted here independently: the sides of the faces to flip whose edge no other
+    face to flip shares. The legend says what the outline is and how many faces it holds.
+    """
+    from trinormal.mesh import check, torus
+
+    v, f = torus(n_major=120, n_minor=60)  # 14 400 faces
+    f = f.copy()
+    centres = v[f].mean(axis=1)
+    patch = np.flatnonzero(centres[:, 0] > 0.6)  # a cap of the torus, wound backwards
+    f[patch] = f[patch][:, [0, 2, 1]]
+    flip = np.asarray(check(v, f).faces_to_flip)
+    assert 2_000 < len(flip) < len(f) / 2
+    edges: dict[tuple[int, int], int] = {}
+    for face in f[flip]:
+        for k in range(3):
+            a, b = int(face[k]), int(face[(k + 1) % 3])
+            edges[min(a, b), max(a, b)] = edges.get((min(a, b), max(a, b)), 0) + 1
+    rim = sum(1 for n in edges.values() if n == 1)
+    assert 0 < rim < len(flip)
+
+    path = tmp_path / "patch.stl"
+    path.write_bytes(binary_stl(v, f))
+    open_page(page, server)
+    page.set_input_files("#tn-mesh-file", str(path))
+    assert reported(page)["n_faces"] == len(f)
+    root = page.locator("#tn-mesh-view .tnm-root")
+    page.wait_for_function("(r) => r.dataset.flippedSides !== undefined", arg=root.element_handle())
+    assert int(root.get_attribute("data-flipped-sides")) == rim
+    legend = page.locator("#tn-mesh-view .tnm-legend").inner_text()
+    assert f"outline: the rim of each patch of faces to flip ({len(flip)} faces)" in legend
+    assert not traffic.problems()
+
+
 def test_a_dropped_file_is_reported(page, server, traffic):
     """Dropping a file on the box reads it like the file input does."""
     name = "inside-out-torus.stl"

@@ -94,6 +94,38 @@ function allSides(list) {
   return out;
 }
 
+/**
+ * Up to this many faces to flip, each is outlined; above, only the rims of their patches (the
+ * sides no other face to flip shares). An inside-out model has every face to flip: outlining
+ * each of 200 000 faces drew 600 000 wide-line segments, seconds a frame on a software renderer,
+ * and a picture all outline; its back colour already shows every face.
+ */
+const OUTLINE_EACH_UP_TO = 2000;
+
+/**
+ * Outlines of up to this many sides are drawn as wide lines at rest; more (the rims of a mesh
+ * wound at random, say) as thin lines always: a software renderer draws each wide-line segment
+ * as a draw of its own.
+ */
+const WIDE_SIDES_UP_TO = 6000;
+/** While the camera turns, outlines of more sides than this are not drawn at all. */
+const TURNING_SIDES_UP_TO = 30000;
+
+/** The sides (3 * face + k) of the listed faces that no other listed face shares. */
+function rimSides(faces, list, nVertices) {
+  const first = new Map(); // an edge (either direction) -> the first side met on it, -1 once shared
+  for (let i = 0; i < list.length; i++) {
+    for (let k = 0; k < 3; k++) {
+      const side = 3 * list[i] + k;
+      const a = faces[side];
+      const b = faces[3 * list[i] + ((k + 1) % 3)];
+      const key = a < b ? a * nVertices + b : b * nVertices + a;
+      first.set(key, first.has(key) ? -1 : side);
+    }
+  }
+  return Int32Array.from([...first.values()].filter((side) => side >= 0)).sort();
+}
+
 /** Centre and radius of the bounding box; a scale that brings the model to radius ~2. */
 function framing(positions) {
   const lo = [Infinity, Infinity, Infinity];
@@ -383,8 +415,9 @@ function render({ model, el }) {
       const color = role === "face_arrows" ? roleColor(palette(), "N", dark) : role === "vertex_arrows" ? surface(dark).text : roleColor(palette(), role, dark);
       swatch.style.setProperty("--tnm-swatch", color);
       swatch.setAttribute("aria-hidden", "true");
-      const count = kind === "line" ? ` (${counts[role]})` : kind === "arrow" ? ` (${counts[role]} drawn)` : "";
-      item.append(swatch, doc.createTextNode(text + count));
+      const rim = role === "flipped" && counts.flipped > OUTLINE_EACH_UP_TO;
+      const count = rim ? ` (${counts[role]} faces)` : kind === "line" ? ` (${counts[role]})` : kind === "arrow" ? ` (${counts[role]} drawn)` : "";
+      item.append(swatch, doc.createTextNode((rim ? "outline: the rim of each patch of faces to flip" : text) + count));
       legend.appendChild(item);
     }
   }
@@ -520,27 +553,35 @@ function render({ model, el }) {
     }, { timeout: 3000 });
     bvhTimer = () => cancelIdle(id);
     const sets = {
-      flipped: data.flipped ? allSides(data.flipped) : new Int32Array(0),
+      flipped: !data.flipped
+        ? new Int32Array(0)
+        : data.flipped.length > OUTLINE_EACH_UP_TO
+          ? rimSides(data.faces, data.flipped, pos.length / 3)
+          : allSides(data.flipped),
       boundary: data.boundary || new Int32Array(0),
       non_manifold: data.non_manifold || new Int32Array(0),
     };
+    root.dataset.flippedSides = String(sets.flipped.length); // the sides outlined
     const zero = [0, 0, 0];
     for (const [role, sides] of Object.entries(sets)) {
-      counts[role] = role === "flipped" ? sides.length / 3 : sides.length;
+      counts[role] = role === "flipped" ? (data.flipped ? data.flipped.length : 0) : sides.length;
       if (!sides.length) continue;
       const segments = sideSegments(pos, data.faces, sides, 1, zero);
+      const thin = new BufferGeometry();
+      thin.setAttribute("position", new BufferAttribute(segments, 3));
+      const t = new LineSegments(thin, thinMaterials[role]);
+      t.renderOrder = 1;
+      t.userData.sides = sides.length;
+      thinLines[role] = t;
+      scene.add(t);
+      if (sides.length > WIDE_SIDES_UP_TO) continue; // thin lines only, also at rest
       const g = new LineSegmentsGeometry();
       g.setPositions(segments);
       const l = new LineSegments2(g, lineMaterials[role]);
       l.renderOrder = 1;
       lines[role] = l;
-      const thin = new BufferGeometry();
-      thin.setAttribute("position", new BufferAttribute(segments, 3));
-      const t = new LineSegments(thin, thinMaterials[role]);
-      t.renderOrder = 1;
-      t.visible = false;
-      thinLines[role] = t;
-      scene.add(l, t);
+      t.visible = false; // the wide lines at rest, the thin ones while turning
+      scene.add(l);
     }
     // keep the corners of the model's box in view, looking from where the trouble is
     geometry.computeBoundingBox();
@@ -582,9 +623,10 @@ function render({ model, el }) {
   function showTurning(on) {
     if (!geometry || turning === on) return;
     turning = on;
-    for (const [role, l] of Object.entries(lines)) {
-      l.visible = !on;
-      thinLines[role].visible = on;
+    for (const [role, t] of Object.entries(thinLines)) {
+      if (lines[role]) lines[role].visible = !on;
+      // while turning: thin lines, and none at all if there are very many
+      t.visible = on ? t.userData.sides <= TURNING_SIDES_UP_TO : !lines[role];
     }
     root.dataset.turning = String(on);
     stage.requestRender();
