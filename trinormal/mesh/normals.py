@@ -37,10 +37,14 @@ __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vert
 #: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 
-#: Faces per block: small enough that the block's temporaries stay in cache.
-_BLOCK = 8192
+#: Faces per block on one thread: small enough that the block's temporaries stay in cache.
+_BLOCK = 16384
+#: Faces per block when threads share a mesh: larger, so the threads hand the interpreter lock
+#: to each other less often (between two numpy operations); measured by
+#: benchmarks/bench_mesh.py, where 8192 for both made two threads slower than one.
+_THREADED_BLOCK = 32768
 
-#: Meshes of at least this many blocks are shared among threads, at most this many.
+#: Meshes of at least this many blocks of `_BLOCK` are shared among threads, at most this many.
 _THREADED_BLOCKS = 8
 _MAX_THREADS = 4
 
@@ -161,8 +165,10 @@ def _normalize_rows(s: FloatArray) -> FloatArray:
     return out
 
 
-def _blocks(n: int) -> range:
-    return range(0, n, _BLOCK)
+def _plan(n: int) -> tuple[int, int]:
+    """Return the block size and the number of threads for ``n`` faces."""
+    workers = _workers(len(range(0, n, _BLOCK)))
+    return (_THREADED_BLOCK if workers > 1 else _BLOCK), workers
 
 
 def _workers(n_blocks: int) -> int:
@@ -293,20 +299,20 @@ def _face_rows(
     exps: IntArray | None = None
     columns = np.ascontiguousarray(vertices.T)  # x, y and z, each one contiguous array
     out = _Outputs(unit_out, deg_out, mag_out, angles_out)
-    starts = list(_blocks(nf))
+    block, workers = _plan(nf)
+    starts = list(range(0, nf, block))
 
     def run(share: list[int]) -> list[IntArray]:
-        full = _Block(min(_BLOCK, max(nf, 1)))
+        full = _Block(min(block, max(nf, 1)))
         found = []
         for s in share:
-            e = min(s + _BLOCK, nf)
-            w = full if e - s == _BLOCK else full.view(e - s)
+            e = min(s + block, nf)
+            w = full if e - s == block else full.view(e - s)
             rows = _face_block(w, columns, f, s, e, tol2, out)
             if rows is not None:
                 found.append(rows)
         return found
 
-    workers = _workers(len(starts))
     if workers == 1:
         found = run(starts)
     else:  # each thread a run of neighbouring blocks (neighbouring faces share vertices)
