@@ -260,8 +260,9 @@ function twoSidedMaterial() {
 
 /**
  * While the camera turns, a model of more than COARSE_ABOVE faces is drawn as a coarser copy of
- * about COARSE_FACES faces (meshoptimizer's simplifySloppy: vertices merged on a grid, every
- * kept face wound as in the file), and in full again as soon as the pointer is released. On a
+ * about COARSE_FACES faces (meshoptimizer's simplify: edges collapsed where that changes the
+ * shape least and turns no face over, so each side keeps its colour), and in full again as soon
+ * as the pointer is released. On a
  * software renderer the frame time grows with the faces drawn, not the pixels (a 200 000-face
  * model: about 130 ms a frame in full, benchmarks/bench_mesh_view.py).
  */
@@ -603,7 +604,9 @@ function render({ model, el }) {
     MeshoptSimplifier.ready.then(() => {
       if (geometry !== full || !MeshoptSimplifier.supported) return; // another model by now
       const index = new Uint32Array(faces.buffer, faces.byteOffset, faces.length);
-      const [kept] = MeshoptSimplifier.simplifySloppy(index, pos, 3, null, 3 * COARSE_FACES, 1);
+      // simplify, not simplifySloppy: sloppy's grid merging turned some faces over, specks of
+      // the wrong colour; this one refuses a collapse that flips a face (120 ms for 200 000 faces)
+      const [kept] = MeshoptSimplifier.simplify(index, pos, 3, 3 * COARSE_FACES, 1);
       if (!kept.length) return;
       // only the vertices the copy uses (fewer vertices to transform every frame)
       const [remap, unique] = MeshoptSimplifier.compactMesh(kept);
