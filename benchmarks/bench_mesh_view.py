@@ -20,10 +20,11 @@ these are floors.
 Where the time went (December 2026, per-thread CPU time and one change at a time): a frame's
 cost grows with the faces and outlined sides drawn, not the pixels (a canvas 5 times smaller
 saved an eighth), and SwiftShader draws each instanced wide-line segment of the outlines as a
-draw of its own (a torus with 1 000 faces outlined: 133 ms a frame, 17 ms without them). So
-while the camera turns the view draws thin outlines and, above 60 000 faces, a coarser copy of
-about 30 000 faces: 200 000 faces turned at 133 ms a frame before that change and 33 ms after,
-on both renderers, in runs an hour apart on the same machine (at rest it draws everything).
+draw of its own (with the coarser copy below drawn, the torus's 1 000 outlined faces still took
+a frame from 17 to 83 ms). So while the camera turns the view draws thin outlines and, above
+60 000 faces, a coarser copy of about 30 000 faces: 200 000 faces turned at 133 ms a frame
+before that change and 33 ms after, on both renderers, in runs an hour apart on the same
+machine (at rest it draws everything).
 
 Nothing is asserted. Run: ``python benchmarks/bench_mesh_view.py [--faces N ...] [--peer-site
 DIR]`` (default 200000 20000; uses ``TRINORMAL_SITE_DIR``, else an up-to-date ``site/``, else

@@ -3,13 +3,13 @@
 [`MeshView`][trinormal.mesh.widget.MeshView] draws a mesh with the same ES module as the
 site's "Check a mesh" page (the mesh view in ``trinormal/explorer/static/explorer.js``, the
 one bundle of both 3D views, built from ``js/explorer/src/`` with three.js) and the same
-colour code: the front of each
-face in the ``front`` colour, its back in the ``back`` colour, faces to flip outlined, the
-rims of holes and non-manifold edges drawn thick, face normals as short arrows (a sample of
-at most ``max_arrows`` faces on big models), vertex normals on request, flat or smooth
-shading, back-face culling. Click a face and the kernel answers with its three vertices, its
-exact normal and its area from [`trinormal.triangle_normal`][trinormal.core.triangle_normal],
-printed by the package's formatter.
+colour code: the front of each face in the ``front`` colour, its back in the ``back`` colour,
+faces to flip outlined, the rims of holes and non-manifold edges drawn thick, face normals
+as short arrows (a sample of at most ``max_arrows`` faces on big models), vertex normals on
+request, flat or smooth shading, back-face culling. Click a face and the kernel answers with
+its three vertices, its exact normal and its area from
+[`trinormal.triangle_normal`][trinormal.core.triangle_normal], printed by the package's
+formatter.
 
 Geometry travels as binary buffers (float64 positions, uint32 faces), not JSON lists, so a
 model of 200 000 faces reaches the browser in a few megabytes. The view centres and scales

@@ -262,9 +262,9 @@ function twoSidedMaterial() {
  * While the camera turns, a model of more than COARSE_ABOVE faces is drawn as a coarser copy of
  * about COARSE_FACES faces (meshoptimizer's simplify: edges collapsed where that changes the
  * shape least and turns no face over, so each side keeps its colour), and in full again as soon
- * as the pointer is released. On a
- * software renderer the frame time grows with the faces drawn, not the pixels (a 200 000-face
- * model: about 130 ms a frame in full, benchmarks/bench_mesh_view.py).
+ * as the pointer is released. On a software renderer the frame time grows with the faces
+ * drawn, not the pixels (a 200 000-face model: about 130 ms a frame in full,
+ * benchmarks/bench_mesh_view.py).
  */
 const COARSE_ABOVE = 60000;
 const COARSE_FACES = 30000;
@@ -581,9 +581,9 @@ function render({ model, el }) {
       const l = new LineSegments2(g, lineMaterials[role]);
       l.renderOrder = 1;
       lines[role] = l;
-      t.visible = false; // the wide lines at rest, the thin ones while turning
       scene.add(l);
     }
+    showOutlines();
     // keep the corners of the model's box in view, looking from where the trouble is
     geometry.computeBoundingBox();
     const { min, max } = geometry.boundingBox;
@@ -622,15 +622,19 @@ function render({ model, el }) {
     });
   }
 
+  /** At rest the wide outlines (thin where there are none); while turning thin ones, if not too many. */
+  function showOutlines() {
+    for (const [role, t] of Object.entries(thinLines)) {
+      if (lines[role]) lines[role].visible = !turning;
+      t.visible = turning ? t.userData.sides <= TURNING_SIDES_UP_TO : !lines[role];
+    }
+  }
+
   /** While the camera turns: the coarser copy (if any) and thin outlines; else the model itself. */
   function showTurning(on) {
     if (!geometry || turning === on) return;
     turning = on;
-    for (const [role, t] of Object.entries(thinLines)) {
-      if (lines[role]) lines[role].visible = !on;
-      // while turning: thin lines, and none at all if there are very many
-      t.visible = on ? t.userData.sides <= TURNING_SIDES_UP_TO : !lines[role];
-    }
+    showOutlines();
     root.dataset.turning = String(on);
     stage.requestRender();
     if (!coarse) return;
