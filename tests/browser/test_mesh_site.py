@@ -252,6 +252,30 @@ def test_a_big_binary_stl_moves_the_progress_bar_and_turns_as_a_coarser_copy(
     assert not traffic.problems()
 
 
+def test_a_model_wound_every_which_way_still_turns_as_a_coarser_copy(
+    page, server, traffic, tmp_path
+):
+    """Every other face reversed: the copy made while turning is still about 30 000 faces.
+
+    (Simplifying without turning a face over keeps nearly every face of such a model; the view
+    then takes the grid-merging copy, whose colours are as speckled as the model's.)
+    """
+    from trinormal.mesh import torus
+
+    v, f = torus(n_major=200, n_minor=180)  # 72 000 faces, above the 60 000 of the copy
+    f = f.copy()
+    f[::2] = f[::2][:, [0, 2, 1]]
+    path = tmp_path / "mixed.stl"
+    path.write_bytes(binary_stl(v, f))
+    open_page(page, server)
+    page.set_input_files("#tn-mesh-file", str(path))
+    assert reported(page)["n_faces"] == len(f)
+    root = page.locator("#tn-mesh-view .tnm-root")
+    page.wait_for_function("(r) => r.dataset.coarseFaces", arg=root.element_handle())
+    assert 10_000 <= int(root.get_attribute("data-coarse-faces")) <= 40_000
+    assert not traffic.problems()
+
+
 def test_many_faces_to_flip_are_outlined_by_the_rim_of_their_patch(page, server, traffic, tmp_path):
     """Above 2 000 faces to flip, only the sides on the rim of their patch are outlined.
 

@@ -604,9 +604,13 @@ function render({ model, el }) {
     MeshoptSimplifier.ready.then(() => {
       if (geometry !== full || !MeshoptSimplifier.supported) return; // another model by now
       const index = new Uint32Array(faces.buffer, faces.byteOffset, faces.length);
-      // simplify, not simplifySloppy: sloppy's grid merging turned some faces over, specks of
-      // the wrong colour; this one refuses a collapse that flips a face (120 ms for 200 000 faces)
-      const [kept] = MeshoptSimplifier.simplify(index, pos, 3, 3 * COARSE_FACES, 1);
+      // simplify first: it refuses a collapse that turns a face over, so each side keeps its
+      // colour (simplifySloppy's grid merging left specks of the wrong colour); 120 ms for
+      // 200 000 faces. On a model wound every which way nearly every collapse turns a face over
+      // (a torus with every other face reversed kept 160 000 of 200 000): there the colours are
+      // speckled anyway, and the sloppy copy is taken
+      let [kept] = MeshoptSimplifier.simplify(index, pos, 3, 3 * COARSE_FACES, 1);
+      if (kept.length > 6 * COARSE_FACES) [kept] = MeshoptSimplifier.simplifySloppy(index, pos, 3, null, 3 * COARSE_FACES, 1);
       if (!kept.length) return;
       // only the vertices the copy uses (fewer vertices to transform every frame)
       const [remap, unique] = MeshoptSimplifier.compactMesh(kept);
