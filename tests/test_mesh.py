@@ -73,6 +73,29 @@ def test_many_faces_across_blocks_match_the_core_row_by_row():
             np.testing.assert_allclose(got[i], r.unit_normal, atol=64 * EPS / r.sine, rtol=0)
 
 
+@pytest.mark.parametrize("where", [0, 9_000, 39_999])
+@pytest.mark.parametrize("ratio", [0.5, 1.5, 4.0])
+def test_a_thin_face_among_many_gets_the_cores_verdict(where, ratio):
+    # A block of ordinary faces is decided all at once (no face's sine can be near tol);
+    # one thin face, with sine ratio * tol, must still be judged as the core judges it.
+    tol = 1e-9
+    v, f = mesh.terrain(150, 150)  # 44 402 faces: three blocks
+    f = f[:40_000]
+    v = np.vstack([v, [[0, 0, 0], [1, 0, 0], [1, ratio * tol, 0]]])
+    n = v.shape[0]
+    f = f.copy()
+    f[where] = [n - 3, n - 2, n - 1]
+    r = triangle_normal(*v[f[where]].tolist(), tol=tol)
+    deg = mesh.degenerate_faces(v, f, tol=tol)
+    assert bool(deg[where]) == r.degenerate == (ratio < 1)
+    assert np.flatnonzero(deg).tolist() == ([where] if ratio < 1 else [])
+    unit = mesh.face_normals(v, f, tol=tol)
+    if ratio < 1:
+        assert unit[where].tolist() == [0.0, 0.0, 0.0]
+    else:
+        np.testing.assert_allclose(unit[where], [0, 0, 1], rtol=0, atol=2 * EPS)
+
+
 def test_face_order_does_not_change_any_row():
     v, f = mesh.terrain(40, 50)
     perm = np.random.default_rng(2).permutation(f.shape[0])

@@ -65,9 +65,12 @@ class _Block:
 
     Attributes
     ----------
+    offsets : ndarray of int (3 n,)
+        Where each corner's x is in the flattened vertices: 3 × its index, face
+        by face (A, B, C of the first face, then of the second, …).
     gathered : ndarray (3 n,)
-        One coordinate of the block's corners, face by face (A, B, C of the
-        first face, then of the second, …): a take with the faces' own indices.
+        One coordinate of the block's corners, in the same order: a take at
+        ``offsets`` from the flattened vertices, shifted by the coordinate.
     edges : ndarray (2, 3, n)
         ``edges[0, k]``, ``edges[1, k]``: coordinate k of U = B − A and V = C − A.
     normal : ndarray (3, n)
@@ -89,6 +92,7 @@ class _Block:
 
     def __init__(self, n: int) -> None:
         e = np.empty
+        self.offsets = e(3 * n, dtype=np.intp)
         self.gathered = e(3 * n)
         self.edges = e((2, 3, n))
         self.normal = e((3, n))
@@ -98,6 +102,7 @@ class _Block:
     def view(self, n: int) -> _Block:
         """Return the first ``n`` faces of every scratch array (for the last, shorter block)."""
         out = object.__new__(_Block)
+        out.offsets = self.offsets[: 3 * n]
         out.gathered = self.gathered[: 3 * n]
         out.edges = self.edges[:, :, :n]
         for name in self._LAST:
@@ -200,11 +205,29 @@ def _dot(x: FloatArray, y: FloatArray, out: FloatArray, temp: FloatArray) -> Non
         np.add(out, temp, out=out)
 
 
+def _clear_block(edges: FloatArray, ss: FloatArray, tol2: float) -> bool:
+    """Whether no face of a block can be degenerate or out of the fast path's range.
+
+    Every |U|²|V|² of the block is at most ``bound``, the product of the sums
+    of squares of the edges' largest components (times 1 + 2**-20, far more
+    than the rounding of any |N|² + (U·V)² computed from them). So when the
+    smallest |N|² exceeds tol² times ``bound``, each face passes the sine test
+    ``|N|² > tol² |U|²|V|²`` that `_face_block` would apply row by row (the
+    same verdict, without U·V), and every row is within [_LO, _HI].
+    """
+    with np.errstate(all="ignore"):
+        top = np.maximum(edges.max(axis=2), -edges.min(axis=2))  # (2, 3): largest |U_k|, |V_k|
+        su, sv = (top * top).sum(axis=1)
+        bound = su * sv * (1.0 + 2.0**-20)
+        low = ss.min()
+    return bool(min(su, sv) > _LO and bound < _HI and low > _LO and low > tol2 * bound)
+
+
 def _face_block(
-    w: _Block, columns: FloatArray, f: IntArray, s: int, e: int, tol2: float, out: _Outputs
+    w: _Block, flat: FloatArray, f: IntArray, s: int, e: int, tol2: float, out: _Outputs
 ) -> IntArray | None:
     """Compute faces ``s`` to ``e`` into ``out``; return the rows the careful path must redo."""
-    nv = columns.shape[1]
+    nv = flat.size // 3
     mul, sub, add = np.multiply, np.subtract, np.add
     unit_out, deg_out, mag_out, angles_out = out.unit, out.degenerate, out.magnitude, out.angles
     with np.errstate(all="ignore"):
@@ -217,8 +240,11 @@ def _face_block(
         d, q, t = w.dot, w.bound, w.temp
         u, v = w.edges
         corner = g.reshape(-1, 3)  # corner[i, c]: this coordinate of corner c of face i
+        # a corner's x, y and z share a cache line: each take after the first finds them there
+        offsets = w.offsets
+        mul(index, 3, out=offsets)
         for k in range(3):  # gather one coordinate of every corner, then its two edges
-            np.take(columns[k], index, out=g, mode="clip")
+            np.take(flat[k:], offsets, out=g, mode="clip")
             sub(corner[:, 1], corner[:, 0], out=u[k])  # U = B - A
             sub(corner[:, 2], corner[:, 0], out=v[k])  # V = C - A
         ux, uy, uz = u
@@ -234,21 +260,28 @@ def _face_block(
         mul(uy, vx, out=t)
         sub(n[2], t, out=n[2])
         _dot(n, n, ss, t)  # |N|²
-        _dot(u, v, d, t)  # U·V
-        # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
-        mul(d, d, out=q)
-        add(q, ss, out=q)
-        # (NaN fails every comparison, so it goes to the careful path too)
-        careful = not (q.max() < _HI and ss.min() > _LO)
-        if careful:
-            np.less(q, _HI, out=w.in_range)
-            np.greater(ss, _LO, out=w.degenerate)
-            np.logical_and(w.in_range, w.degenerate, out=w.in_range)
-        # degenerate: |N|² <= tol² |U|²|V|²
-        mul(q, tol2, out=q)
-        np.less_equal(ss, q, out=w.degenerate)
-        if deg_out is not None:
-            deg_out[s:e] = w.degenerate
+        clear = _clear_block(w.edges, ss, tol2)
+        careful = False
+        if not clear or angles_out is not None:
+            _dot(u, v, d, t)  # U·V
+        if clear:  # no face of the block is degenerate or out of range
+            if deg_out is not None:
+                deg_out[s:e] = False
+        else:
+            # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
+            mul(d, d, out=q)
+            add(q, ss, out=q)
+            # (NaN fails every comparison, so it goes to the careful path too)
+            careful = not (q.max() < _HI and ss.min() > _LO)
+            if careful:
+                np.less(q, _HI, out=w.in_range)
+                np.greater(ss, _LO, out=w.degenerate)
+                np.logical_and(w.in_range, w.degenerate, out=w.in_range)
+            # degenerate: |N|² <= tol² |U|²|V|²
+            mul(q, tol2, out=q)
+            np.less_equal(ss, q, out=w.degenerate)
+            if deg_out is not None:
+                deg_out[s:e] = w.degenerate
         np.sqrt(ss, out=ss)  # |N|
         if mag_out is not None:
             mag_out[s:e] = ss
@@ -263,7 +296,7 @@ def _face_block(
             sub(math.pi, t, out=ang[:, 2])
         if unit_out is not None:
             np.divide(1.0, ss, out=t)
-            if w.degenerate.any():
+            if not clear and w.degenerate.any():
                 t[w.degenerate] = 0.0
             rows_out = unit_out[s:e]
             for k in range(3):  # column by column: a broadcast over rows of 3 is slow
@@ -297,7 +330,7 @@ def _face_rows(
     nf = f.shape[0]
     tol2 = tol * tol
     exps: IntArray | None = None
-    columns = np.ascontiguousarray(vertices.T)  # x, y and z, each one contiguous array
+    flat = vertices.reshape(-1)  # x, y, z of vertex 0, then of vertex 1, … (no copy)
     out = _Outputs(unit_out, deg_out, mag_out, angles_out)
     block, workers = _plan(nf)
     starts = list(range(0, nf, block))
@@ -308,7 +341,7 @@ def _face_rows(
         for s in share:
             e = min(s + block, nf)
             w = full if e - s == block else full.view(e - s)
-            rows = _face_block(w, columns, f, s, e, tol2, out)
+            rows = _face_block(w, flat, f, s, e, tol2, out)
             if rows is not None:
                 found.append(rows)
         return found
@@ -325,7 +358,7 @@ def _face_rows(
     if not found:
         return None
     at = np.concatenate(found)
-    x, y, z = columns
+    x, y, z = vertices.T
     with np.errstate(all="ignore"):
         uc, vc, nn, ns, mag, exp, deg = _careful(x, y, z, f[at], tol2)
     if deg_out is not None:
