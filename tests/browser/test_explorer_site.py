@@ -346,6 +346,26 @@ def _results_beside_or_under_the_inputs(page, width: int) -> None:
     assert (
         page.locator("#chart-unit").get_attribute("aria-label")
     ) == "Bar chart of the unit normal components: x = 0.0000, y = 0.0000, z = 1.0000."
+    # the view's sliders stand in columns: one per axis on a desktop; on a phone y and z wrap
+    # under x, so all nine share one left edge
+    lefts = page.evaluate(
+        "() => [...document.querySelectorAll('#tn-view .tnx-slider')]"
+        ".map(s => Math.round(s.getBoundingClientRect().left))"
+    )
+    assert len(lefts) == 9
+    assert len(set(lefts)) == (3 if width >= 1280 else 1), (width, lefts)
+    # the vertex order's whole text fits in its box (a select cannot wrap, it cuts)
+    room = page.evaluate(
+        """() => {
+          const s = document.getElementById('winding'), st = getComputedStyle(s);
+          const ctx = document.createElement('canvas').getContext('2d');
+          ctx.font = st.font;
+          const text = ctx.measureText(s.options[s.selectedIndex].text).width;
+          const inner = s.clientWidth - parseFloat(st.paddingLeft) - parseFloat(st.paddingRight);
+          return inner - text;
+        }"""
+    )
+    assert room > 16, (width, room)  # what the drop-down arrow needs
 
 
 def test_without_javascript_the_explorer_page_shows_the_picture(browser, server):

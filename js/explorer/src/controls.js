@@ -29,7 +29,9 @@ export function createControls(parent, view) {
   for (const p of "abc") {
     const row = make("div", "tnx-vertex-row");
     const name = make("span", "tnx-vertex-name", p.toUpperCase());
-    row.appendChild(name);
+    // the three coordinates wrap inside their own box, so on a narrow screen y and z line up under x
+    const coords = make("span", "tnx-coords");
+    row.append(name, coords);
     rows[p] = { name, cells: [] };
     ["x", "y", "z"].forEach((q, i) => {
       const cell = make("span", "tnx-coord");
@@ -43,7 +45,7 @@ export function createControls(parent, view) {
       box.setAttribute("aria-label", `${p.toUpperCase()}.${q}, exact value: type a number such as 0.1, -2 or 1/3 and press Enter`);
       box.title = `${p.toUpperCase()}.${q}: type a number such as 0.1, -2 or 1/3 and press Enter`;
       cell.append(make("span", "tnx-axis-name", q), slider, box);
-      row.appendChild(cell);
+      coords.appendChild(cell);
       rows[p].cells.push({ slider, box });
 
       let frame = 0;
