@@ -32,6 +32,7 @@ __all__ = [
     "SUMMARY",
     "example_file",
     "example_mesh",
+    "file_size",
     "site_constants",
 ]
 
@@ -39,10 +40,29 @@ __all__ = [
 #: the most faces it draws in 3D without being asked (a bigger model is drawn on a click: its
 #: first frame can take seconds on a computer without a graphics card).
 LIMITS: dict[str, int] = {
-    "max_bytes": 300 * 1024 * 1024,
+    "max_bytes": 300_000_000,
     "max_faces": 5_000_000,
     "max_view_faces": 300_000,
 }
+
+
+def file_size(n: int) -> str:
+    """Write a file's size as the page does: megabytes (10**6 bytes), rounded up to a tenth.
+
+    Rounded up, so a file over the limit never reads as the limit itself. The page's
+    JavaScript (``fileSize`` in ``trinormal-mesh.js``) follows the same rule; the browser
+    tests compare the two.
+
+    Examples
+    --------
+    >>> file_size(LIMITS["max_bytes"])
+    '300 MB'
+    >>> file_size(300_000_001), file_size(50_000_084), file_size(684)
+    ('300.1 MB', '50.1 MB', '0.1 MB')
+    """
+    tenths = -(-n // 100_000)
+    return f"{tenths // 10} MB" if tenths % 10 == 0 else f"{tenths // 10}.{tenths % 10} MB"
+
 
 #: What the page says. The reasons a file cannot be read (``at_line`` to ``ply_binary_row``) are
 #: `trinormal.mesh.io.READ_ERRORS` itself, the templates `trinormal.mesh.MeshFileError` fills
@@ -54,7 +74,7 @@ MESSAGES: dict[str, str] = {
     **READ_ERRORS,
     # the page's own
     "too_large": (
-        "{name} is {size} bytes; this page reads files of up to {max} bytes. "
+        "{name} is {size}; this page reads files of up to {max}. "
         "The Python package (trinormal mesh FILE) has no such limit."
     ),
     "too_many_faces": (

@@ -907,10 +907,12 @@ def _mesh_examples(args: list[str], page: Page, config: MkDocsConfig) -> str:
 
 
 def _mesh_limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    """``mesh_limit NAME``: one of the mesh page's limits, with thousands separated."""
-    from trinormal.mesh_page import LIMITS
+    """``mesh_limit NAME``: one of the mesh page's limits: a size in MB, a count grouped."""
+    from trinormal.mesh_page import LIMITS, file_size
 
     (name,) = args
+    if name == "max_bytes":
+        return file_size(LIMITS[name])
     return f"{LIMITS[name]:,}".replace(",", "\u202f")
 
 

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 from browser_support import ROOT
 
-from trinormal.mesh_page import EXAMPLES, example_file
+from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, example_file, file_size
 
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
@@ -330,6 +330,35 @@ def test_a_dropped_file_is_reported(page, server, traffic):
     )
     assert reported(page) == python_report(name, data)[0]
     assert page.locator("#tn-mesh-format").inner_text() == "STL (binary)"
+    assert not traffic.problems()
+
+
+def test_a_file_over_the_limit_is_refused_on_its_size_in_megabytes(page, server, traffic):
+    """A 512 MiB file (a blob made of references, so nothing is copied) is refused unread."""
+    open_page(page, server)
+    size = page.evaluate(
+        """() => {
+          let blob = new Blob([new Uint8Array(1 << 20)]);
+          for (let i = 0; i < 9; i++) blob = new Blob([blob, blob]);
+          const transfer = new DataTransfer();
+          transfer.items.add(new File([blob], 'scan.stl'));
+          document.getElementById('tn-mesh')
+            .dispatchEvent(new DragEvent('drop', {dataTransfer: transfer, bubbles: true}));
+          return blob.size;
+        }"""
+    )
+    assert size == 512 * 2**20
+    page.wait_for_function("() => document.getElementById('tn-mesh').dataset.state === 'error'")
+    status = page.locator("#tn-mesh-status").inner_text()
+    assert status == MESSAGES["too_large"].format(
+        name="scan.stl", size="536.9 MB", max=file_size(LIMITS["max_bytes"])
+    )
+    assert status.startswith("scan.stl is 536.9 MB; this page reads files of up to 300 MB.")
+    assert page.locator("#tn-mesh-result").is_hidden()
+    # the same rounding as Python's (up, to a tenth of a MB) on the page's own function
+    sizes = [0, 1, 99_999, 100_000, 100_001, 50_000_084, 300_000_000, 300_000_001, 10**12 + 1]
+    got = page.evaluate("(sizes) => sizes.map((n) => TrinormalMesh.fileSize(n))", sizes)
+    assert got == [file_size(n) for n in sizes]
     assert not traffic.problems()
 
 

@@ -349,10 +349,22 @@ function mount(root) {
     setTimeout(() => URL.revokeObjectURL(url), 10_000);
   }
 
-  input.addEventListener("change", async () => {
-    const file = input.files && input.files[0];
-    if (file) open(file.name, await file.arrayBuffer());
-  });
+  // A file beyond the page's limit is refused on its size alone, before any of it is read.
+  async function openFile(file) {
+    if (!file || busy) return;
+    const tooLarge = window.TrinormalMesh.sizeProblem(file.name, file.size);
+    if (tooLarge) {
+      fixedFile = null;
+      current = null;
+      result.hidden = true;
+      root.dataset.state = "error";
+      setStatus(tooLarge, "error");
+      return;
+    }
+    open(file.name, await file.arrayBuffer());
+  }
+
+  input.addEventListener("change", () => openFile(input.files && input.files[0]));
   fixButton.addEventListener("click", fix);
   download.addEventListener("click", save);
   for (const b of root.querySelectorAll("button[data-example]")) {
@@ -375,11 +387,10 @@ function mount(root) {
   root.addEventListener("dragleave", () => {
     drop.dataset.over = "false";
   });
-  root.addEventListener("drop", async (e) => {
+  root.addEventListener("drop", (e) => {
     e.preventDefault();
     drop.dataset.over = "false";
-    const file = e.dataTransfer && e.dataTransfer.files[0];
-    if (file) open(file.name, await file.arrayBuffer());
+    openFile(e.dataTransfer && e.dataTransfer.files[0]);
   });
   setBusy(false);
   root.dataset.ready = "true";

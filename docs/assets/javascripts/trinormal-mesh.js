@@ -51,6 +51,18 @@
     });
   }
 
+  /** A file size as the page writes it: MB (10^6 bytes) rounded up to a tenth (Python's file_size). */
+  function fileSize(n) {
+    var tenths = Math.ceil(n / 1e5);
+    return Math.floor(tenths / 10) + (tenths % 10 === 0 ? "" : "." + (tenths % 10)) + " MB";
+  }
+
+  /** The page's own limit on a file's size: its message, or null when the file is within it. */
+  function sizeProblem(name, size) {
+    if (size <= LIMITS.max_bytes) return null;
+    return message("too_large", { name: name, size: fileSize(size), max: fileSize(LIMITS.max_bytes) });
+  }
+
   function fail(key, values) {
     throw new MeshError(message(key, values));
   }
@@ -684,7 +696,8 @@
     var progress = onProgress || function () {};
     var ext = extension(name);
     if (FORMATS.indexOf(ext) < 0) fileError(name, null, "unknown_format", { ext: ext ? "." + ext : message("no_extension", {}) });
-    if (bytes.length > LIMITS.max_bytes) fail("too_large", { name: name, size: bytes.length, max: LIMITS.max_bytes });
+    var tooLarge = sizeProblem(name, bytes.length);
+    if (tooLarge) throw new MeshError(tooLarge);
     var mesh = ext === "obj" ? readObj(bytes, name, progress) : ext === "stl" ? readStl(bytes, name, progress) : readPly(bytes, name, progress);
     mesh.format = ext;
     mesh.name = name;
@@ -1415,6 +1428,8 @@
     FORMATS: FORMATS,
     LIMITS: LIMITS,
     message: message,
+    fileSize: fileSize,
+    sizeProblem: sizeProblem,
     read: read,
     check: check,
     toDict: toDict,
