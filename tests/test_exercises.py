@@ -160,6 +160,8 @@ def forms_of(value: object, tol: float | None = None) -> list[object]:
         ]
         if len(value) == 3:  # three points A, B, C (not the four faces of 11-repair-tetra)
             forms.append(dict(zip("ABC", value, strict=True)))
+        else:  # the four faces of 11-repair-tetra, whose order does not matter
+            forms += [set(map(tuple, value)), frozenset(map(tuple, value)), list(reversed(value))]
         return forms
     if isinstance(value, tuple | list):
         return vector_forms(tuple(value), tol)
@@ -654,8 +656,8 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         ((0, 6, 0), "Multiply it out: MU = (2, 0, 0) and MV = (0, 3, 0)."),
     ],
     "11-flipped-face": [
-        (0, "Face 0 is wound like its neighbours: its normal points out of the ball. The faces to flip are the ones the view outlines (blue from outside)."),
-        ("17", "Face 17 is wound like its neighbours: its normal points out of the ball. The faces to flip are the ones the view outlines (blue from outside)."),
+        (0, "Face 0 is wound like its neighbours: its normal points out of the ball. The faces to flip are the ones the view outlines (a face you see blue through the hole is the inside of a face wound correctly); report.faces_to_flip lists them."),
+        ("17", "Face 17 is wound like its neighbours: its normal points out of the ball. The faces to flip are the ones the view outlines (a face you see blue through the hole is the inside of a face wound correctly); report.faces_to_flip lists them."),
         (1263, "The ball has faces 0 to 1262; there is no face 1263. Click a face with an outline in the view to see its number."),
         (-1, "The ball has faces 0 to 1262; there is no face -1. Click a face with an outline in the view to see its number."),
         (1.5, "Your answer could not be read: a face or vertex number is a whole number such as 17."),
@@ -666,8 +668,11 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 2, 3)], "Your faces are not wound consistently: across every shared edge the two faces must walk the edge in opposite directions (mesh.check says to turn 3 faces over)."),
         ([(0, 1, 2), (0, 3, 1), (0, 2, 3), (1, 3, 2)], "Every face is wound the same way now, but the normals point into the tetrahedron (its signed volume is negative): turn every face over."),
         ([(0, 2, 1)] * 4, "Keep the same four triangles: each face must use the same three corners as one of the faces given. Only the order of the corners in one face changes."),
-        ([(0, 2, 1), (0, 1, 3), (0, 3, 2)], "Your answer could not be read: give 4 points (x, y, z), got 3."),
-        ("faces", "Your answer could not be read: give 4 points (x, y, z), each in brackets: (x, y, z)."),
+        ([(0, 2, 1), (0, 1, 3), (0, 3, 2)], "Your answer could not be read: give 4 faces of 3 vertex numbers, got 3."),
+        (list(range(12)), "Your answer could not be read: give 4 faces of 3 vertex numbers, got more than 4."),
+        ([(0, 2, 1), (0, 1), (0, 3, 2), (1, 2, 3)], "Your answer could not be read: face 2: expected 3 numbers (its corners' vertex numbers), got 2."),
+        ([(0, 2, 1), (0, 1.5, 3), (0, 3, 2), (1, 2, 3)], "Your answer could not be read: face 2: a face or vertex number is a whole number such as 17."),
+        ("faces", "Your answer could not be read: give 4 faces of 3 vertex numbers, each in brackets: (a, b, c)."),
     ],
 }  # fmt: skip
 

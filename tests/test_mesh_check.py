@@ -202,7 +202,7 @@ def test_every_fault_is_found_once_in_the_faults_file():
         "1 vertex is not used",
         "16 edges belong",
         "4 edges are shared by three faces",
-        "1 vertex joins",
+        "1 vertex is a pinch point",
     ):
         assert words in " ".join(text.split()), words
 

@@ -96,6 +96,20 @@ MESSAGES: dict[str, str] = {
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",
     "fixed": "Fixed: {faces} turned over. The report below is the repaired mesh's.",
+    # beside "Fix winding": what it repairs, and what it leaves to a modelling program
+    "fix_nothing": (
+        "Every face is wound the right way round already: there is nothing to turn over."
+    ),
+    "fix_only_winding": (
+        "Fix winding only turns faces over. Holes, fins, duplicate and degenerate faces stay "
+        "as they are: a slicer needs a closed surface to tell inside from outside, so fill or "
+        "remove them in a modelling program such as Blender or MeshLab."
+    ),
+    # under the table of pieces
+    "pieces_dash": (
+        "— : no answer for that piece. Facing outward means something only for a closed "
+        "piece wound consistently."
+    ),
 }
 
 #: The report's rows on the page: the key of ``check(...).to_dict()`` and its label.
@@ -113,7 +127,7 @@ REPORT_ROWS: tuple[tuple[str, str], ...] = (
     ("non_manifold_vertices", "Non-manifold vertices"),
     ("inconsistent_edges", "Edges two faces walk the same way"),
     ("n_components", "Connected pieces"),
-    ("closed", "Closed (no hole, no fin)"),
+    ("closed", "Closed (no hole, no edge of three faces)"),
     ("consistent_winding", "Wound consistently"),
     ("outward", "Every closed piece faces outward"),
     ("faces_to_flip", "Faces to flip"),

@@ -64,6 +64,9 @@ SURFACE = "#A0988A"
 
 #: Figure background: opaque white, never transparent.
 FACECOLOR = "white"
+#: Behind the meshes of `winding_figure`: a culled gap shows as this slate colour, which no
+#: shade of the (warm grey) surface takes, rather than as white, which the lit surface reaches.
+BACKDROP = "#7f93a8"
 
 #: Pixels per inch of figure at the size a figure is shown.
 DISPLAY_DPI = 100
@@ -487,6 +490,9 @@ def shaded_mesh_figure(
     v = np.asarray(vertices, dtype=float)
     f = np.asarray(faces)
     cmap = LinearSegmentedColormap.from_list("lit", ["#101010", SURFACE, "#ffffff"])
+    from trinormal import mesh
+
+    facing = mesh.face_normals(v, f) @ camera_direction(elev, azim) > 0
     n = len(panels)
     fig = plt.figure(figsize=(4 * n, 4.2), facecolor=FACECOLOR)
     lo, hi = v.min(axis=0), v.max(axis=0)
@@ -498,7 +504,11 @@ def shaded_mesh_figure(
         b = np.asarray(values, dtype=float)
         keep = ~np.isnan(b)
         colors = cmap(np.clip(b[keep], 0, 1))
-        poly = Poly3DCollection(v[f[keep]], facecolors=colors, edgecolors=colors, linewidths=0.4)
+        # each face's edge is stroked in its own colour to close the seams between faces; not
+        # for faces turned away from the camera, which (drawn first) would line the seams
+        edges = colors.copy()
+        edges[~facing[keep]] = 0.0
+        poly = Poly3DCollection(v[f[keep]], facecolors=colors, edgecolors=edges, linewidths=0.4)
         ax.add_collection3d(poly)
         for setlim, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid, strict=True):
             setlim(m - half, m + half)
@@ -773,7 +783,8 @@ def winding_figure(
     ``max(0, n · l)`` from each face's unit normal ``n`` as stored: a face whose
     normal points away from the light is black. Right, back-face culling: only the
     faces whose normal points towards the camera are drawn, so a face wound the
-    wrong way (or seen through a hole) disappears and the background shows through.
+    wrong way (or seen through a hole) disappears and the slate backdrop behind
+    both panels shows through.
 
     Parameters
     ----------
@@ -801,15 +812,18 @@ def winding_figure(
     light = camera_direction(elev + 15.0, azim + 10.0)
     towards = n @ eye
     lit = np.maximum(0.0, n @ light)
-    culled = np.where(towards > 0, 0.25 + 0.75 * lit, np.nan)
+    shade = 0.08 + 0.92 * lit  # one scale for both panels: a face looks the same in each
+    culled = np.where(towards > 0, shade, np.nan)
     fig = shaded_mesh_figure(
         v,
         f,
-        {"lit from the camera's side": 0.08 + 0.92 * lit, "back faces culled": culled},
+        {"lit from the camera's side": shade, "back faces culled": culled},
         elev=elev,
         azim=azim,
         title=title,
     )
+    for ax in fig.axes:  # the backdrop: what shows through where no face is drawn
+        ax.set_facecolor(BACKDROP)
     # faces well inside the camera's half of the model (not at the outline) whose normals
     # point away from it: seen from outside they are the wrong way round
     centre = v[f].mean(axis=1) - v.mean(axis=0)
@@ -822,7 +836,7 @@ def winding_figure(
         f"camera's side: {faces_text} on the near side, away from the outline, "
         f"{'has its normal' if dark == 1 else 'have normals'} pointing away from the camera "
         "and show black. Right, with back faces culled: such faces are not drawn and the "
-        f"background shows through; {int((towards > 0).sum())} faces are drawn."
+        f"slate backdrop shows through; {int((towards > 0).sum())} faces are drawn."
     )
     return fig
 

@@ -13,6 +13,7 @@ from functools import cache
 from typing import Any
 
 from trinormal.exercises import AnswerError, Exercise, read_number, read_points
+from trinormal.exercises.reading import FACES
 
 #: The tetrahedron of exercise 11-repair-tetra: its corners ...
 TETRA_VERTICES: tuple[tuple[int, int, int], ...] = ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1))
@@ -56,18 +57,19 @@ def _check_flipped_face(answer: Any) -> tuple[bool, str]:
         return True, ""
     return False, (
         f"Face {face} is wound like its neighbours: its normal points out of the ball. The "
-        "faces to flip are the ones the view outlines (blue from outside)."
+        "faces to flip are the ones the view outlines (a face you see blue through the hole "
+        "is the inside of a face wound correctly); report.faces_to_flip lists them."
     )
 
 
 def _read_faces(answer: Any) -> list[tuple[int, int, int]]:
     """Read four faces of three vertex numbers each (the shared reader), or raise AnswerError."""
     faces = []
-    for k, row in enumerate(read_points(answer, 4)):
+    for k, row in enumerate(read_points(answer, 4, items=FACES)):
         try:
             corners = [_whole(x) for x in row]
         except AnswerError as error:
-            raise AnswerError(f"face {k}: {error}") from None
+            raise AnswerError(f"face {k + 1}: {error}") from None
         faces.append((corners[0], corners[1], corners[2]))
     return faces
 
@@ -127,6 +129,10 @@ EXERCISES = (
         "turned over, so that mesh.check(TETRA_VERTICES, faces).ok is True.",
         checker=_check_repair_tetra,
         example=lambda: (TETRA_FACES[0], TETRA_FACES[1], TETRA_FACES[2], (1, 2, 3)),
-        hint="Find the face whose normal points inward, and swap two of its corners.",
+        hint=(
+            "Find the face whose normal points inward, and swap two of its corners. The "
+            "tetrahedron's centre is (1/4, 1/4, 1/4): at a face with centre c the way out is "
+            "c - (1/4, 1/4, 1/4). Or read mesh.check(TETRA_VERTICES, TETRA_FACES).faces_to_flip."
+        ),
     ),
 )

@@ -44,13 +44,17 @@ import itertools
 import math
 import re
 from collections.abc import Iterable
+from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 from trinormal.validation import check_coordinate
 
 __all__ = [
+    "FACES",
+    "POINTS",
     "AnswerError",
+    "Items",
     "Number",
     "VectorGiven",
     "describe",
@@ -565,8 +569,34 @@ def _length(x: Any) -> int:
         return -1
 
 
-def read_points(answer: Any, count: int) -> list[tuple[Number, Number, Number]]:
-    """Read ``count`` points (x, y, z).
+@dataclass(frozen=True)
+class Items:
+    """What the triples of an answer are, as `read_points` names them in its messages."""
+
+    one: str
+    many: str
+    #: after the count: "4 points (x, y, z)"
+    parts: str
+    #: one of them in brackets, as text answers write them
+    bracketed: str
+    #: what the three numbers of one are: "(x, y, z)"
+    inner: str
+    #: whether their order matters (a set of them is an answer only when it does not)
+    ordered: bool = True
+
+
+#: Points (x, y, z): `read_points`'s default.
+POINTS = Items("point", "points", "(x, y, z)", "(x, y, z)", "(x, y, z)")
+#: Faces of a mesh, three vertex numbers each, in any order (a set of them is read too).
+FACES = Items(
+    "face", "faces", "of 3 vertex numbers", "(a, b, c)", "(its corners' vertex numbers)", False
+)
+
+
+def read_points(
+    answer: Any, count: int, *, items: Items = POINTS
+) -> list[tuple[Number, Number, Number]]:
+    """Read ``count`` points (x, y, z), or other triples ``items`` names.
 
     Parameters
     ----------
@@ -575,6 +605,9 @@ def read_points(answer: Any, count: int) -> list[tuple[Number, Number, Number]]:
         keyed ``"A"``, ``"B"``, ``"C"``, or text such as ``"(0,0,1), (1,0,1), (0,1,1)"``.
     count : int
         How many points.
+    items : Items, default POINTS
+        What the triples are, for the messages: points (x, y, z), or `FACES`
+        (three vertex numbers each).
 
     Returns
     -------
@@ -591,26 +624,32 @@ def read_points(answer: Any, count: int) -> list[tuple[Number, Number, Number]]:
     (Fraction(3, 4), Fraction(0, 1), Fraction(2, 1))
     >>> read_points({"A": (0, 0, 0), "B": (1, 0, 0), "C": (0, 5, 0)}, 3)[2]
     (Fraction(0, 1), Fraction(5, 1), Fraction(0, 1))
+    >>> read_points([(0, 1, 2)], 2, items=FACES)
+    Traceback (most recent call last):
+    ...
+    trinormal.exercises.reading.AnswerError: give 2 faces of 3 vertex numbers, got 1
     """
-    labels = "ABC" if count == 3 else [str(i + 1) for i in range(count)]
-    want = f"{count} point{'s' if count > 1 else ''} (x, y, z)"
+    kind = items
+    labels = "ABC" if count == 3 and kind is POINTS else [str(i + 1) for i in range(count)]
+    want = f"{count} {kind.one if count == 1 else kind.many} {kind.parts}"
     try:
-        items = _point_items(answer, count, want, labels)
+        items_read = _point_items(answer, count, want, labels, kind)
     except AnswerError:
         raise
     except RecursionError:
         raise AnswerError("this answer is nested too deeply to read") from None
     except Exception as exc:
         raise AnswerError(f"{describe(answer)} could not be read as {want} ({_why(exc)})") from None
-    if len(items) != count:
-        got = f"more than {count}" if len(items) > count else str(len(items))
+    if len(items_read) != count:
+        got = f"more than {count}" if len(items_read) > count else str(len(items_read))
         raise AnswerError(f"give {want}, got {got}")
     points = []
-    for label, p in zip(labels, items, strict=True):
+    for label, p in zip(labels, items_read, strict=True):
         try:
             x, y, z = read_vector(p)
         except AnswerError as exc:
-            raise AnswerError(f"point {label}: {exc}") from None
+            told = str(exc).replace("(x, y, z)", kind.inner)
+            raise AnswerError(f"{kind.one} {label}: {told}") from None
         points.append((x, y, z))
     return points
 
@@ -618,23 +657,27 @@ def read_points(answer: Any, count: int) -> list[tuple[Number, Number, Number]]:
 _GROUP = re.compile(r"[(\[]([^()\[\]]*)[)\]]")
 
 
-def _point_items(answer: Any, count: int, want: str, labels: Any) -> list[Any]:
+def _point_items(answer: Any, count: int, want: str, labels: Any, kind: Items) -> list[Any]:
     if answer is None or answer is Ellipsis:
         raise AnswerError(f"give {want}")
     if isinstance(answer, str):
         groups = _GROUP.findall(answer)
         if not groups:
-            raise AnswerError(f"give {want}, each in brackets: (x, y, z)")
+            raise AnswerError(f"give {want}, each in brackets: {kind.bracketed}")
         return groups
     if isinstance(answer, dict):
         keys = {str(k).strip().upper(): v for k, v in answer.items()}
         if set(keys) == set(labels):
             return [keys[k] for k in labels]
-        raise AnswerError(f"a dict of points needs the keys {', '.join(labels)}")
+        raise AnswerError(f"a dict of {kind.many} needs the keys {', '.join(labels)}")
+    if isinstance(answer, set | frozenset) and not kind.ordered:
+        return list(itertools.islice(iter(answer), count + 1))
     if isinstance(answer, set | frozenset):
-        raise AnswerError(f"a set has no order, and the order of the points matters: give {want}")
+        raise AnswerError(
+            f"a set has no order, and the order of the {kind.many} matters: give {want}"
+        )
     if isinstance(answer, bytes | bytearray | memoryview):
-        raise AnswerError(f"bytes are not points: give {want}")
+        raise AnswerError(f"bytes are not {kind.many}: give {want}")
     module = _module(answer)
     if module.startswith("numpy"):
         import numpy as np

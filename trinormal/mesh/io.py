@@ -125,8 +125,9 @@ READ_ERRORS: dict[str, str] = {
     "obj_index_range": "face {face} refers to vertex {index}, but the file has {count} {vertices}",
     "stl_not_finite": "triangle {triangle} has a coordinate that is not finite",
     "stl_not_stl": (
-        "not an STL file: it is not text starting with 'solid', and a binary STL of {count} "
-        "triangles would have {expected} bytes, not {size}"
+        "not an STL file: a text STL starts with 'solid', and a binary STL's size follows from "
+        "the triangle count in its header ({count} triangles would take {expected} bytes; this "
+        "file has {size} bytes)"
     ),
     "stl_short": "not an STL file: too short, and it does not start with 'solid'",
     "stl_vertex_outside": "'vertex' outside 'outer loop' … 'endloop'",
@@ -527,7 +528,11 @@ def _read_stl(data: bytes, name: str) -> MeshData:
         if len(data) >= 84:
             (n,) = struct.unpack_from("<I", data, 80)
             raise MeshFileError.of(
-                name, "stl_not_stl", count=n, expected=84 + 50 * n, size=len(data)
+                name,
+                "stl_not_stl",
+                count=f"{n:,}",
+                expected=f"{84 + 50 * n:,}",
+                size=f"{len(data):,}",
             )
         raise MeshFileError.of(name, "stl_short")
     return _read_stl_ascii(data, name)

@@ -231,6 +231,7 @@ NOUNS: dict[str, tuple[str, str]] = {
     "triangle": ("triangle", "triangles"),
     "piece": ("piece", "pieces"),
     "face": ("face", "faces"),
+    "edge": ("edge", "edges"),
 }
 
 #: The summary's sentences: a template, or a (one, many) pair chosen by its count ``{n}``.
@@ -271,8 +272,10 @@ SUMMARY: dict[str, str | tuple[str, str]] = {
         "surface does that.",
     ),
     "non_manifold_vertices": (
-        "{n} vertex joins pieces of surface that touch only at that point.",
-        "{n} vertices join pieces of surface that touch only at that point.",
+        "{n} vertex is a pinch point: the faces around it make two fans or more that meet "
+        "only there, like two cones tip to tip.",
+        "{n} vertices are pinch points: the faces around each make two fans or more that meet "
+        "only there, like two cones tip to tip.",
     ),
     "piece": "Piece {i} ({faces})",
     "whole": "The mesh",
@@ -289,8 +292,8 @@ SUMMARY: dict[str, str | tuple[str, str]] = {
     ),
     "no_volume": "{name} is closed but encloses no volume, so it has no outside.",
     "flip": (
-        "fix_winding turns {n} face over to wind every piece consistently{end}",
-        "fix_winding turns {n} faces over to wind every piece consistently{end}",
+        "Fixing the winding turns {n} face over, so that every piece is wound consistently{end}",
+        "Fixing the winding turns {n} faces over, so that every piece is wound consistently{end}",
     ),
     "flip_end_closed": " and outward.",
     "flip_end_open": ".",
@@ -399,7 +402,7 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
     The mesh is wound inconsistently: some faces are turned the other way round from their
       neighbours, so their normals point the wrong way. Lighting makes such faces dark, and
       back-face culling makes them vanish.
-    fix_winding turns 2 faces over to wind every piece consistently.
+    Fixing the winding turns 2 faces over, so that every piece is wound consistently.
     """
     t = _check_tol(tol)
     v, _ = _check_vertices(vertices)

@@ -146,8 +146,13 @@ function cell(tag, text, attrs = {}) {
   return e;
 }
 
-/** How one value of the report reads in its row. */
-function show(value) {
+/** What a row's list holds, by the row's key: faces, edges or vertices. */
+function noun(key) {
+  return key.endsWith("_edges") ? "edge" : key.endsWith("_vertices") ? "vertex" : "face";
+}
+
+/** How one value of the report reads in its row: a list as "2: faces 5, 9" (`key` names it). */
+function show(value, key = "") {
   if (value === true) return message("yes");
   if (value === false) return message("no");
   if (value === null || value === undefined) return "—";
@@ -156,7 +161,8 @@ function show(value) {
     const items = value.slice(0, SHOWN).map((x) => (Array.isArray(x) ? `${x[0]}–${x[1]}` : String(x)));
     const more = value.length - SHOWN;
     const list = items.join(", ") + (more > 0 ? ", " + message("more", { count: more }) : "");
-    return `${value.length} (${list})`;
+    const forms = ((constants().mesh || {}).nouns || {})[noun(key)] || ["", ""];
+    return `${value.length}: ${value.length === 1 ? forms[0] : forms[1]} ${list}`;
   }
   return String(value);
 }
@@ -213,25 +219,35 @@ function mount(root) {
     const rows = (constants().mesh || {}).rows || [];
     for (const [key, label] of rows) {
       const tr = document.createElement("tr");
-      tr.append(cell("th", label, { scope: "row" }), cell("td", show(r[key])));
+      tr.append(cell("th", label, { scope: "row" }), cell("td", show(r[key], key)));
       tr.dataset.key = key;
       tbody.appendChild(tr);
     }
     const pieces = $("tn-mesh-pieces");
     pieces.textContent = "";
+    // each cell carries its column's heading: on a phone the table is a list of cards
+    const heads = [...pieces.closest("table").querySelectorAll("thead th")].map((th) => th.textContent);
+    let dash = false;
     r.components.forEach((c, i) => {
       const tr = document.createElement("tr");
+      const values = [c.faces, c.closed, c.consistent, c.orientable, c.outward, c.faces_to_flip];
+      dash = dash || values.some((v) => v === null || v === undefined);
       tr.append(
-        cell("th", String(i + 1), { scope: "row" }),
-        cell("td", String(c.faces)),
-        cell("td", show(c.closed)),
-        cell("td", show(c.consistent)),
-        cell("td", show(c.orientable)),
-        cell("td", show(c.outward)),
-        cell("td", String(c.faces_to_flip)),
+        cell("th", String(i + 1), { scope: "row", "data-label": heads[0] }),
+        ...values.map((v, k) => cell("td", typeof v === "number" ? String(v) : show(v), { "data-label": heads[k + 1] })),
       );
       pieces.appendChild(tr);
     });
+    const dashNote = $("tn-mesh-pieces-note");
+    dashNote.textContent = dash ? message("pieces_dash") : "";
+    dashNote.hidden = !dash;
+    // beside "Fix winding": what it mends and what it leaves
+    const others = ["degenerate_faces", "duplicate_faces", "reversed_duplicate_faces", "boundary_edges", "non_manifold_edges"];
+    const fixNote = $("tn-mesh-fix-note");
+    fixNote.textContent = others.some((k) => (r[k] || []).length)
+      ? message("fix_only_winding")
+      : r.faces_to_flip.length ? "" : message("fix_nothing");
+    fixNote.hidden = !fixNote.textContent;
     const summary = $("tn-mesh-summary");
     summary.textContent = "";
     for (const line of window.TrinormalMesh.summary(r)) summary.appendChild(cell("li", line));
@@ -321,9 +337,11 @@ function mount(root) {
       const count = current.report.faces_to_flip.length;
       const res = await worker.run("fix", {}, [], progress);
       fixedFile = { bytes: res.file, name: fixedName(name) };
+      res.name = fixedFile.name; // the report below is the repaired file's
       const shown = showResult(res, message("fixed", { faces: window.TrinormalMesh.counted(count, "face") }));
       setBusy(false);
       root.dataset.state = "fixed";
+      download.focus(); // the next step; the status above is read out (aria-live)
       await shown;
     } catch (err) {
       setBusy(false);

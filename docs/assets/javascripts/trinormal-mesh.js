@@ -51,6 +51,11 @@
     });
   }
 
+  /** A whole number with its thousands set apart by commas, as Python's "{:,}" writes it. */
+  function grouped(n) {
+    return String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ",");
+  }
+
   /** A file size as the page writes it: MB (10^6 bytes) rounded up to a tenth (Python's file_size). */
   function fileSize(n) {
     var tenths = Math.ceil(n / 1e5);
@@ -366,7 +371,7 @@
       var n = view.getUint32(80, true);
       if (bytes.length === 84 + 50 * n) {
         // a binary STL, even when its header starts with "solid"
-        if (n > LIMITS.max_faces) fail("too_many_faces", { name: name, count: n, max: LIMITS.max_faces });
+        if (n > LIMITS.max_faces) fail("too_many_faces", { name: name, count: grouped(n), max: grouped(LIMITS.max_faces) });
         var corners = new Float64Array(9 * n);
         for (var i = 0; i < n; i++) {
           if ((i & 0xffff) === 0) progress(0.4 * (i / n));
@@ -388,7 +393,7 @@
     if (head.toLowerCase() !== "solid" || bytes.indexOf(0) >= 0) {
       if (bytes.length >= 84) {
         var m = view.getUint32(80, true);
-        fileError(name, null, "stl_not_stl", { count: m, expected: 84 + 50 * m, size: bytes.length });
+        fileError(name, null, "stl_not_stl", { count: grouped(m), expected: grouped(84 + 50 * m), size: grouped(bytes.length) });
       }
       fileError(name, null, "stl_short", {});
     }
@@ -500,7 +505,7 @@
     elements.forEach(function (e) {
       if (!face && e.name === "face") face = e;
     });
-    if (face && face.count > LIMITS.max_faces) fail("too_many_faces", { name: name, count: face.count, max: LIMITS.max_faces });
+    if (face && face.count > LIMITS.max_faces) fail("too_many_faces", { name: name, count: grouped(face.count), max: grouped(LIMITS.max_faces) });
     var values =
       fmt === "ascii"
         ? plyAscii(bytes, bodyStart, header.length + 2, elements, name, progress)
@@ -702,7 +707,7 @@
     mesh.format = ext;
     mesh.name = name;
     if (mesh.faces.length === 0) fail("no_faces", { name: name });
-    if (mesh.faces.length / 3 > LIMITS.max_faces) fail("too_many_faces", { name: name, count: mesh.faces.length / 3, max: LIMITS.max_faces });
+    if (mesh.faces.length / 3 > LIMITS.max_faces) fail("too_many_faces", { name: name, count: grouped(mesh.faces.length / 3), max: grouped(LIMITS.max_faces) });
     return mesh;
   }
 

@@ -17,7 +17,7 @@
  * coordinate (so a drag follows the pointer); a new `version` from the host ends a drag in
  * progress and drops whatever the view had not yet had answered.
  */
-import { TOUCH, Vector3 } from "three";
+import { Vector3 } from "three";
 import { Drawing } from "./geometry.js";
 import { setupInteraction } from "./interaction.js";
 import { LabelLayer } from "./labels.js";
@@ -28,6 +28,7 @@ import { createStage, DEFAULT_DIRECTION } from "./scene.js";
 import { injectStyle } from "./style.js";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
 import { setAttr, setHidden, setStyle, setText } from "./dom.js";
+import { touchGate } from "./touch.js";
 
 const KEYS = [
   "a", "b", "c", "winding", "precision", "step", "bounds", "show_parallelogram", "show_unit_normal",
@@ -474,36 +475,11 @@ function render({ model, el }) {
     sync();
   }
 
-  // touch: a finger scrolls the page over the view until a tap activates it (as maps do);
-  // two fingers always zoom and turn it
-  let touchActive = false;
-  function setTouchActive(on) {
-    touchActive = on;
-    root.classList.toggle("tnx-touch-active", on);
-    stage.controls.touches.ONE = on ? TOUCH.ROTATE : null;
-    stage.canvas.style.touchAction = on ? "none" : "pan-y";
-  }
-  setTouchActive(false);
-  let tap = null;
-  const onTapStart = (event) => {
-    tap = event.pointerType === "touch" ? { x: event.clientX, y: event.clientY, t: performance.now(), id: event.pointerId } : null;
-  };
-  const onTapEnd = (event) => {
-    if (!tap || event.pointerId !== tap.id) return;
-    const still = Math.hypot(event.clientX - tap.x, event.clientY - tap.y) < 10 && performance.now() - tap.t < 600;
-    tap = null;
-    if (still && !touchActive) setTouchActive(true);
-  };
-  const onOutside = (event) => {
-    if (touchActive && !root.contains(event.target)) setTouchActive(false);
-  };
-  stageEl.addEventListener("pointerdown", onTapStart, { capture: true });
-  stageEl.addEventListener("pointerup", onTapEnd);
-  const doc = el.ownerDocument || document;
-  doc.addEventListener("pointerdown", onOutside, { capture: true });
+  // touch: a finger scrolls the page over the view until a tap turns it on (touch.js)
+  const touch = touchGate({ root, stageEl, controls: stage.controls, canvas: stage.canvas, activeClass: "tnx-touch-active" });
 
   const interaction = setupInteraction({
-    touchActive: () => touchActive,
+    touchActive: touch.active,
     container: stageEl,
     canvas: stage.canvas,
     camera: stage.camera,
@@ -593,7 +569,7 @@ function render({ model, el }) {
     for (const key of KEYS) model.off("change:" + key, handlers[key]);
     model.off("change:last_edit", handlers.last_edit);
     model.off("change:version", handlers.version);
-    doc.removeEventListener("pointerdown", onOutside, { capture: true });
+    touch.dispose();
     stopTheme();
     interaction();
     labels.dispose();

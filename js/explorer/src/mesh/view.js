@@ -53,6 +53,7 @@ import { MeshBVH } from "three-mesh-bvh";
 import { MeshoptSimplifier } from "meshoptimizer/simplifier";
 import { createStage, DEFAULT_DIRECTION } from "../scene.js";
 import { isDark, roleColor, surface, watchTheme } from "../theme.js";
+import { touchGate } from "../touch.js";
 import CSS from "./style.css";
 
 const STYLE_ID = "trinormal-mesh-style";
@@ -300,9 +301,10 @@ function render({ model, el }) {
   const hint = element(
     "p",
     "tnm-hint",
-    "Drag to turn the model, scroll or pinch to zoom. The side a face's normal points out of is " +
-      "drawn in the front colour; a face you see in the back colour from outside is wound the " +
-      "other way." + (canPick ? " Click a face, or type its number below, to see its vertices, its exact normal and its area." : ""),
+    "Drag to turn the model, scroll or pinch to zoom; on a touch screen, tap the view first, then drag. " +
+      "The side a face's normal points out of is drawn in the front colour; a face you see in the " +
+      "back colour from outside is wound the other way." +
+      (canPick ? " Click or tap a face, or type its number in the Face number box, to see its vertices, its exact normal and its area." : ""),
   );
   // the keyboard's way to pick a face: its number, or the faces to flip one after another
   const keys = element("form", "tnm-keys");
@@ -703,6 +705,8 @@ function render({ model, el }) {
   }
   stage.canvas.addEventListener("pointerdown", onDown);
   stage.canvas.addEventListener("pointerup", onUp);
+  // a finger scrolls the page over the view until a tap turns it on (a tap also picks)
+  const touch = touchGate({ root, stageEl, controls: stage.controls, canvas: stage.canvas, activeClass: "tnm-touch-active" });
   function pickTyped() {
     const text = faceInput.value.trim();
     if (!text || !faceInput.checkValidity()) {
@@ -813,6 +817,7 @@ function render({ model, el }) {
     for (const [event, cb] of events) model.off(event, cb);
     stage.canvas.removeEventListener("pointerdown", onDown);
     stage.canvas.removeEventListener("pointerup", onUp);
+    touch.dispose();
     observer.disconnect();
     stopTheme();
     clear();
