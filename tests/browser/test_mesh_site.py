@@ -21,8 +21,9 @@ import sys
 import numpy as np
 import pytest
 from browser_support import ROOT
+from page_checks import resize
 
-from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, example_file, file_size
+from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example_file, file_size
 
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
@@ -171,10 +172,22 @@ def test_choose_fix_and_download(page, server, traffic, tmp_path):
     assert page.locator("#tn-mesh-summary li").all_inner_texts() == sentences
     page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
     assert page.locator("#tn-mesh-download").is_disabled()
+    # a list says what it counts, and the page says what the fix leaves (the hole)
+    row = page.locator("#tn-mesh-rows tr[data-key='faces_to_flip'] td").inner_text()
+    assert row == "5: faces " + ", ".join(map(str, want["faces_to_flip"]))
+    assert (
+        page.locator("#tn-mesh-rows tr[data-key='boundary_edges'] td")
+        .inner_text()
+        .startswith("6: edges ")
+    )
+    assert page.locator("#tn-mesh-fix-note").inner_text() == MESSAGES["fix_only_winding"]
 
     page.click("#tn-mesh-fix")
     page.wait_for_function("() => document.getElementById('tn-mesh').dataset.state === 'fixed'")
     after = reported(page)
+    # the report is now the repaired file's, and the next step has the focus
+    assert page.locator("#tn-mesh-name").inner_text() == "sphere-hole-flipped-patch-fixed.ply"
+    assert page.evaluate("document.activeElement.id") == "tn-mesh-download"
     with page.expect_download() as info:
         page.click("#tn-mesh-download")
     download = info.value
@@ -360,6 +373,88 @@ def test_a_file_over_the_limit_is_refused_on_its_size_in_megabytes(page, server,
     got = page.evaluate("(sizes) => sizes.map((n) => TrinormalMesh.fileSize(n))", sizes)
     assert got == [file_size(n) for n in sizes]
     assert not traffic.problems()
+
+
+def test_each_piece_is_a_card_of_labels_on_a_phone_and_a_row_on_a_desktop(page, server, traffic):
+    open_page(page, server)
+    page.locator("button[data-example]").nth(1).click()  # the sphere: a piece with no answer
+    reported(page)
+    heads = page.locator(".tn-mesh-pieces thead th").all_inner_texts()
+    assert heads[0] == "Piece" and len(heads) == 7
+    labels = """() => [...document.querySelectorAll('#tn-mesh-pieces th, #tn-mesh-pieces td')]
+      .map((c) => getComputedStyle(c, '::before').content)"""
+    for width in (1280, 360):
+        resize(page, width, 800)
+        page.wait_for_timeout(100)
+        shown = page.evaluate(labels)
+        if width == 360:  # every value beside its column's heading
+            assert shown == [f'"{h}"' for h in heads], shown
+            assert page.locator(".tn-mesh-pieces thead").bounding_box()["height"] <= 1
+        else:  # a table: headings in their columns, none run into the next
+            assert set(shown) <= {"none", "normal"}, shown
+            fits = page.evaluate(
+                """() => [...document.querySelectorAll('.tn-mesh-pieces thead th')]
+                  .every((th) => th.scrollWidth <= th.clientWidth)"""
+            )
+            assert fits
+        assert page.evaluate("document.documentElement.scrollWidth") <= width
+    # the sphere is open: its "faces outward" has no answer, and the note says what — means
+    assert page.locator("#tn-mesh-pieces td").nth(4).inner_text() == "—"
+    assert page.locator("#tn-mesh-pieces-note").inner_text() == MESSAGES["pieces_dash"]
+    row_labels = page.locator("#tn-mesh-rows th").all_inner_texts()
+    assert row_labels == [label for _, label in REPORT_ROWS]
+    assert not traffic.problems()
+
+
+def test_a_finger_scrolls_the_page_over_the_view_until_a_tap(browser, server):
+    context = browser.new_context(
+        viewport={"width": 360, "height": 640}, has_touch=True, is_mobile=True
+    )
+    try:
+        page = context.new_page()
+        open_page(page, server)
+        page.locator("button[data-example]").nth(0).click()
+        reported(page)
+        page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+        canvas = page.locator("#tn-mesh-view canvas")
+        cdp = context.new_cdp_session(page)
+
+        def centre():
+            canvas.evaluate("c => c.scrollIntoView({block: 'center'})")
+            page.wait_for_timeout(200)
+            box = canvas.bounding_box()
+            return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+        def swipe(x, y, dx, dy):
+            cdp.send(
+                "Input.dispatchTouchEvent",
+                {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]},
+            )
+            for i in range(1, 9):
+                point = {"x": x + dx * i / 8, "y": y + dy * i / 8}
+                cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [point]})
+            cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+            page.wait_for_timeout(300)
+
+        x, y = centre()
+        start = page.evaluate("window.scrollY")
+        swipe(x, y, 0, 120)  # one finger down over the view: the page scrolls up
+        assert page.evaluate("window.scrollY") < start - 50
+        assert page.locator(".tnm-touch-active").count() == 0
+        x, y = centre()
+        for kind, points in (("touchStart", [{"x": x, "y": y}]), ("touchEnd", [])):
+            cdp.send("Input.dispatchTouchEvent", {"type": kind, "touchPoints": points})
+        page.wait_for_timeout(200)
+        assert page.locator(".tnm-touch-active").count() == 1  # a tap turned the view on
+        before = canvas.screenshot()
+        scroll = page.evaluate("window.scrollY")
+        swipe(x, y, 90, 40)  # now one finger turns the model, and the page stays
+        assert page.evaluate("window.scrollY") == scroll
+        assert canvas.screenshot() != before
+        page.locator("h1").tap()  # a touch outside turns it off again
+        assert page.locator(".tnm-touch-active").count() == 0
+    finally:
+        context.close()
 
 
 def test_examples_are_one_click_away(page, server, traffic):
