@@ -406,6 +406,30 @@ def test_each_piece_is_a_card_of_labels_on_a_phone_and_a_row_on_a_desktop(page, 
     assert not traffic.problems()
 
 
+def test_the_view_frames_the_model_not_its_box(page, server, traffic):
+    """A round model fills the view's height (framed on its box's corners it filled half)."""
+    import io
+
+    from PIL import Image
+
+    page.set_viewport_size({"width": 1280, "height": 800})
+    open_page(page, server)
+    page.locator("button[data-example]").nth(1).click()  # the sphere
+    reported(page)
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    canvas = page.locator("#tn-mesh-view canvas")
+    canvas.evaluate("c => c.scrollIntoView({block: 'center'})")  # clear of the page's header
+    page.wait_for_timeout(300)
+    shot = Image.open(io.BytesIO(canvas.screenshot())).convert("RGB")
+    px = np.asarray(shot).astype(int)
+    # the ball's front, in its yellow (shaded): the rows it covers
+    r, g, b = px[..., 0], px[..., 1], px[..., 2]
+    rows = np.flatnonzero(((r > 150) & (g > 150) & (b < 110)).any(axis=1))
+    drawn = (rows.max() - rows.min() + 1) / px.shape[0]
+    assert 0.75 <= drawn <= 0.97, drawn
+    assert not traffic.problems()
+
+
 def test_a_finger_scrolls_the_page_over_the_view_until_a_tap(browser, server):
     context = browser.new_context(
         viewport={"width": 360, "height": 640}, has_touch=True, is_mobile=True

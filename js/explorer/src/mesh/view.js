@@ -148,6 +148,32 @@ function framing(positions) {
  * Where the camera first looks from: towards what is wrong (the faces to flip, else the holes'
  * rims, else the fins), tilted a little so the view stays oblique; the usual view otherwise.
  */
+/** At most this many vertices, spread over the model, frame the view (besides its extremes). */
+const FRAMING_SAMPLE = 4096;
+
+/**
+ * The points the view keeps in sight: the vertices furthest along each axis and each diagonal
+ * of the box, both ways, and an even sample of the rest (positions: x, y, z per vertex).
+ */
+function framingPoints(pos) {
+  const n = pos.length / 3;
+  const dirs = [];
+  for (const sx of [-1, 0, 1]) for (const sy of [-1, 0, 1]) for (const sz of [-1, 0, 1]) if (sx || sy || sz) dirs.push([sx, sy, sz]);
+  const best = dirs.map(() => [-Infinity, 0]);
+  for (let i = 0; i < n; i++) {
+    const x = pos[3 * i], y = pos[3 * i + 1], z = pos[3 * i + 2];
+    for (let k = 0; k < dirs.length; k++) {
+      const d = dirs[k];
+      const along = d[0] * x + d[1] * y + d[2] * z;
+      if (along > best[k][0]) best[k] = [along, i];
+    }
+  }
+  const chosen = new Set(best.map((b) => b[1]));
+  const step = Math.max(1, Math.ceil(n / FRAMING_SAMPLE));
+  for (let i = 0; i < n; i += step) chosen.add(i);
+  return [...chosen].map((i) => new Vector3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]));
+}
+
 function startDirection(pos, faces, sets) {
   const sides = sets.flipped.length ? sets.flipped : sets.boundary.length ? sets.boundary : sets.non_manifold;
   if (!sides.length) return DEFAULT_DIRECTION.clone();
@@ -586,12 +612,9 @@ function render({ model, el }) {
       scene.add(l);
     }
     showOutlines();
-    // keep the corners of the model's box in view, looking from where the trouble is
-    geometry.computeBoundingBox();
-    const { min, max } = geometry.boundingBox;
-    const corners = [];
-    for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
-    stage.framePoints(corners, true, startDirection(pos, data.faces, sets));
+    // keep the model in view, looking from where the trouble is: framed on its own vertices
+    // (a sample and the extremes), not on its box, whose corners lie far outside a round model
+    stage.framePoints(framingPoints(pos), true, startDirection(pos, data.faces, sets));
     if (data.faces.length / 3 > COARSE_ABOVE) buildCoarse(geometry, data.faces, pos);
     drawArrows(data, pos);
     current = { data, pos, offset, scale };
