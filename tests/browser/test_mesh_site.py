@@ -430,6 +430,31 @@ def test_the_view_frames_the_model_not_its_box(page, server, traffic):
     assert not traffic.problems()
 
 
+def test_the_keyboard_turns_zooms_and_resets_the_view(page, server, traffic):
+    open_page(page, server)
+    page.locator("button[data-example]").nth(0).click()
+    reported(page)
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    stage = page.locator("#tn-mesh-view .tnm-stage")
+    assert "Arrow keys turn it" in stage.get_attribute("aria-label")
+    canvas = page.locator("#tn-mesh-view canvas")
+    canvas.evaluate("c => c.scrollIntoView({block: 'center'})")
+    page.wait_for_timeout(200)
+    home = canvas.screenshot()
+    stage.focus()
+    scroll = page.evaluate("window.scrollY")
+    for key in ("ArrowRight", "ArrowUp", "+"):
+        before = canvas.screenshot()
+        page.keyboard.press(key)
+        page.wait_for_timeout(150)
+        assert canvas.screenshot() != before, key
+    assert page.evaluate("window.scrollY") == scroll  # the keys went to the view, not the page
+    page.keyboard.press("Home")
+    page.wait_for_timeout(150)
+    assert canvas.screenshot() == home
+    assert not traffic.problems()
+
+
 def test_a_finger_scrolls_the_page_over_the_view_until_a_tap(browser, server):
     context = browser.new_context(
         viewport={"width": 360, "height": 640}, has_touch=True, is_mobile=True

@@ -154,6 +154,31 @@ export function createStage(container, { onRender }) {
     else if (go) look(home.start);
   }
 
+  /**
+   * Turn the camera about the target, as a drag does: `around` radians about the up axis (z),
+   * `over` radians towards it (stopping short of straight above or below). For the keyboard.
+   */
+  function turn(around, over) {
+    const offset = camera.position.clone().sub(controls.target);
+    const r = offset.length();
+    const azimuth = Math.atan2(offset.y, offset.x) + around;
+    const limit = Math.PI / 2 - 0.01;
+    const elevation = Math.max(-limit, Math.min(limit, Math.asin(Math.max(-1, Math.min(1, offset.z / r))) + over));
+    offset.set(Math.cos(elevation) * Math.cos(azimuth), Math.cos(elevation) * Math.sin(azimuth), Math.sin(elevation)).multiplyScalar(r);
+    camera.position.copy(controls.target).add(offset);
+    atHome = false;
+    controls.update();
+  }
+
+  /** Move the camera `factor` times its distance from the target (below 1: closer). */
+  function zoom(factor) {
+    const offset = camera.position.clone().sub(controls.target).multiplyScalar(factor);
+    const r = Math.min(Math.max(offset.length(), camera.near * 2), camera.far / 2);
+    camera.position.copy(controls.target).addScaledVector(offset.normalize(), r);
+    atHome = false;
+    controls.update();
+  }
+
   /** True when every point (display units) projects inside the view, with a margin. */
   function inView(points, margin = 0.92) {
     camera.updateMatrixWorld();
@@ -193,6 +218,8 @@ export function createStage(container, { onRender }) {
     framePoints,
     inView,
     reset: () => look(home.start),
+    turn,
+    zoom,
     atHome: () => atHome,
     // along x: y to the right; along y: x to the right; along z: from above, x right, y up
     along: (axis) => look(new Vector3(axis === "x" ? 1 : 0, axis === "y" ? -1 : 0, axis === "z" ? 1 : 0)),

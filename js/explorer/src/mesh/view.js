@@ -327,7 +327,8 @@ function render({ model, el }) {
   const hint = element(
     "p",
     "tnm-hint",
-    "Drag to turn the model, scroll or pinch to zoom; on a touch screen, tap the view first, then drag. " +
+    "Drag to turn the model, scroll or pinch to zoom; on a touch screen, tap the view first, then drag; " +
+      "from the keyboard, Tab to the view and use the arrow keys, + and −. " +
       "The side a face's normal points out of is drawn in the front colour; a face you see in the " +
       "back colour from outside is wound the other way." +
       (canPick ? " Click or tap a face, or type its number in the Face number box, to see its vertices, its exact normal and its area." : ""),
@@ -728,6 +729,27 @@ function render({ model, el }) {
   }
   stage.canvas.addEventListener("pointerdown", onDown);
   stage.canvas.addEventListener("pointerup", onUp);
+  // the keyboard turns the model too: arrow keys turn it, + and − zoom, Home resets
+  stageEl.tabIndex = 0;
+  stageEl.setAttribute("role", "img");
+  stageEl.setAttribute("aria-label", "The model in 3D. Arrow keys turn it, + and − zoom, Home resets the view.");
+  stageEl.addEventListener("keydown", (event) => {
+    const step = (event.shiftKey ? 45 : 15) * (Math.PI / 180);
+    const keys = {
+      ArrowLeft: () => stage.turn(-step, 0),
+      ArrowRight: () => stage.turn(step, 0),
+      ArrowUp: () => stage.turn(0, step),
+      ArrowDown: () => stage.turn(0, -step),
+      "+": () => stage.zoom(0.8),
+      "=": () => stage.zoom(0.8),
+      "-": () => stage.zoom(1.25),
+      Home: () => stage.reset(),
+    };
+    const act = keys[event.key];
+    if (!act || event.altKey || event.ctrlKey || event.metaKey) return;
+    event.preventDefault(); // the page does not scroll
+    act();
+  });
   // a finger scrolls the page over the view until a tap turns it on (a tap also picks)
   const touch = touchGate({ root, stageEl, controls: stage.controls, canvas: stage.canvas, activeClass: "tnm-touch-active" });
   function pickTyped() {
