@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -322,10 +323,11 @@ def _face_rows(
     (F,) degeneracy, ``mag_out`` (F,) |N| as a mantissa (times ``2**exp``),
     ``angles_out`` (F, 3) the interior angle at each corner.
 
-    Blocks of faces are independent: on a big mesh, a few threads take a
-    share of them each (every face is computed the same way whichever thread
-    does it, so the result never depends on the threads). Rows at extreme
-    scales are redone afterwards by `_careful`.
+    Blocks of faces are independent: on a big mesh, a few threads (this one
+    among them) each take the next block as they finish one (every face is
+    computed the same way whichever thread does it, so the result never
+    depends on the threads). Rows at extreme scales are redone afterwards by
+    `_careful`.
     """
     nf = f.shape[0]
     tol2 = tol * tol
@@ -335,7 +337,7 @@ def _face_rows(
     block, workers = _plan(nf)
     starts = list(range(0, nf, block))
 
-    def run(share: list[int]) -> list[IntArray]:
+    def run(share: Iterator[int]) -> list[IntArray]:
         full = _Block(min(block, max(nf, 1)))
         found = []
         for s in share:
@@ -347,14 +349,16 @@ def _face_rows(
         return found
 
     if workers == 1:
-        found = run(starts)
-    else:  # each thread a run of neighbouring blocks (neighbouring faces share vertices)
-        shares = [
-            starts[i * len(starts) // workers : (i + 1) * len(starts) // workers]
-            for i in range(workers)
-        ]
-        with ThreadPoolExecutor(workers) as pool:
-            found = [rows for part in pool.map(run, shares) for rows in part]
+        found = run(iter(starts))
+    else:
+        # the threads, this one among them, take the next block as each finishes one (one
+        # shared iterator: taking from it is atomic), so none waits on a slower one at the end
+        queue = iter(starts)
+        with ThreadPoolExecutor(workers - 1) as pool:
+            helpers = [pool.submit(run, queue) for _ in range(workers - 1)]
+            found = run(queue)
+            for h in helpers:
+                found += h.result()
     if not found:
         return None
     at = np.concatenate(found)
