@@ -296,12 +296,13 @@ def _face_block(
             add(ang[:, 0], ang[:, 1], out=t)
             sub(math.pi, t, out=ang[:, 2])
         if unit_out is not None:
-            np.divide(1.0, ss, out=t)
-            if not clear and w.degenerate.any():
-                t[w.degenerate] = 0.0
             rows_out = unit_out[s:e]
-            for k in range(3):  # column by column: a broadcast over rows of 3 is slow
-                mul(n[k], t, out=rows_out[:, k])
+            # N / |N|, correctly rounded (a product with 1/|N| rounds twice), column by column:
+            # a broadcast over rows of 3 is slow
+            for k in range(3):
+                np.divide(n[k], ss, out=rows_out[:, k])
+            if not clear and w.degenerate.any():
+                rows_out[w.degenerate] = 0.0
         if careful:
             rows: IntArray = s + np.flatnonzero(~w.in_range)
             return rows
