@@ -156,6 +156,24 @@ def reported(page) -> dict:
     return json.loads(page.locator("#tn-mesh").get_attribute("data-report"))
 
 
+def open_example(page, server: str, k: int) -> dict:
+    """Open the page, click example ``k``, wait for its report and its drawn view; the report."""
+    open_page(page, server)
+    page.locator("button[data-example]").nth(k).click()
+    report = reported(page)
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    return report
+
+
+def open_stl(page, server: str, path, v, f):
+    """Open the page on ``(v, f)`` written as a binary STL at ``path``; the mesh view's root."""
+    path.write_bytes(binary_stl(v, f))
+    open_page(page, server)
+    page.set_input_files("#tn-mesh-file", str(path))
+    assert reported(page)["n_faces"] == len(f)
+    return page.locator("#tn-mesh-view .tnm-root")
+
+
 def test_choose_fix_and_download(page, server, traffic, tmp_path):
     """The file chooser, the report, Fix winding, and a download Python reads back repaired."""
     from trinormal.mesh import check, fix_winding, parse_mesh
@@ -278,12 +296,7 @@ def test_a_model_wound_every_which_way_still_turns_as_a_coarser_copy(
     v, f = torus(n_major=200, n_minor=180)  # 72 000 faces, above the 60 000 of the copy
     f = f.copy()
     f[::2] = f[::2][:, [0, 2, 1]]
-    path = tmp_path / "mixed.stl"
-    path.write_bytes(binary_stl(v, f))
-    open_page(page, server)
-    page.set_input_files("#tn-mesh-file", str(path))
-    assert reported(page)["n_faces"] == len(f)
-    root = page.locator("#tn-mesh-view .tnm-root")
+    root = open_stl(page, server, tmp_path / "mixed.stl", v, f)
     page.wait_for_function("(r) => r.dataset.coarseFaces", arg=root.element_handle())
     assert 10_000 <= int(root.get_attribute("data-coarse-faces")) <= 40_000
     assert not traffic.problems()
@@ -312,12 +325,7 @@ def test_many_faces_to_flip_are_outlined_by_the_rim_of_their_patch(page, server,
     rim = sum(1 for n in edges.values() if n == 1)
     assert 0 < rim < len(flip)
 
-    path = tmp_path / "patch.stl"
-    path.write_bytes(binary_stl(v, f))
-    open_page(page, server)
-    page.set_input_files("#tn-mesh-file", str(path))
-    assert reported(page)["n_faces"] == len(f)
-    root = page.locator("#tn-mesh-view .tnm-root")
+    root = open_stl(page, server, tmp_path / "patch.stl", v, f)
     page.wait_for_function("(r) => r.dataset.flippedSides !== undefined", arg=root.element_handle())
     assert int(root.get_attribute("data-flipped-sides")) == rim
     legend = page.locator("#tn-mesh-view .tnm-legend").inner_text()
@@ -376,9 +384,7 @@ def test_a_file_over_the_limit_is_refused_on_its_size_in_megabytes(page, server,
 
 
 def test_each_piece_is_a_card_of_labels_on_a_phone_and_a_row_on_a_desktop(page, server, traffic):
-    open_page(page, server)
-    page.locator("button[data-example]").nth(1).click()  # the sphere: a piece with no answer
-    reported(page)
+    open_example(page, server, 1)  # the sphere: a piece with no answer
     heads = page.locator(".tn-mesh-pieces thead th").all_inner_texts()
     assert heads[0] == "Piece" and len(heads) == 7
     labels = """() => [...document.querySelectorAll('#tn-mesh-pieces th, #tn-mesh-pieces td')]
@@ -413,10 +419,7 @@ def test_the_view_frames_the_model_not_its_box(page, server, traffic):
     from PIL import Image
 
     page.set_viewport_size({"width": 1280, "height": 800})
-    open_page(page, server)
-    page.locator("button[data-example]").nth(1).click()  # the sphere
-    reported(page)
-    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    open_example(page, server, 1)  # the sphere
     canvas = page.locator("#tn-mesh-view canvas")
     canvas.evaluate("c => c.scrollIntoView({block: 'center'})")  # clear of the page's header
     page.wait_for_timeout(300)
@@ -431,10 +434,7 @@ def test_the_view_frames_the_model_not_its_box(page, server, traffic):
 
 
 def test_the_keyboard_turns_zooms_and_resets_the_view(page, server, traffic):
-    open_page(page, server)
-    page.locator("button[data-example]").nth(0).click()
-    reported(page)
-    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    open_example(page, server, 0)
     stage = page.locator("#tn-mesh-view .tnm-stage")
     assert "Arrow keys turn it" in stage.get_attribute("aria-label")
     canvas = page.locator("#tn-mesh-view canvas")
@@ -461,10 +461,7 @@ def test_a_finger_scrolls_the_page_over_the_view_until_a_tap(browser, server):
     )
     try:
         page = context.new_page()
-        open_page(page, server)
-        page.locator("button[data-example]").nth(0).click()
-        reported(page)
-        page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+        open_example(page, server, 0)
         canvas = page.locator("#tn-mesh-view canvas")
         cdp = context.new_cdp_session(page)
 
@@ -531,10 +528,7 @@ def test_a_report_reads_well_on_a_phone_in_both_schemes(page, server, traffic):
     from test_site import _LAYOUT_PROBLEMS
 
     page.set_viewport_size({"width": 360, "height": 740})
-    open_page(page, server)
-    page.locator("button[data-example]").nth(1).click()
-    reported(page)
-    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    open_example(page, server, 1)
     page.wait_for_timeout(250)  # scrollboxes.js re-checks 100 ms after a change
     for scheme in ("default", "slate"):
         page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", scheme)
@@ -573,10 +567,7 @@ def test_a_click_shows_the_faces_exact_readout_as_python_writes_it(page, server,
     from trinormal.mesh import parse_mesh
 
     name = EXAMPLES[1][0]
-    open_page(page, server)
-    page.locator("button[data-example]").nth(1).click()
-    assert reported(page)["n_faces"]
-    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    assert open_example(page, server, 1)["n_faces"]
     canvas = page.locator("#tn-mesh-view canvas")
     canvas.scroll_into_view_if_needed()
     box = canvas.bounding_box()
@@ -605,10 +596,7 @@ def test_the_keyboard_picks_a_face_by_number_or_the_next_to_flip(page, server, t
     name = EXAMPLES[1][0]
     m = parse_mesh(example_file(name), name.rsplit(".", 1)[-1], name)
     to_flip = check(m.vertices, m.faces).faces_to_flip.tolist()
-    open_page(page, server)
-    page.locator("button[data-example]").nth(1).click()
-    reported(page)
-    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
+    open_example(page, server, 1)
     box = page.get_by_label(f"Face number (0 to {len(m.faces) - 1})")
     box.focus()
     page.keyboard.type("7")
