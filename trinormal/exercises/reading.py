@@ -629,11 +629,10 @@ def read_points(
     ...
     trinormal.exercises.reading.AnswerError: give 2 faces of 3 vertex numbers, got 1
     """
-    kind = items
-    labels = "ABC" if count == 3 and kind is POINTS else [str(i + 1) for i in range(count)]
-    want = f"{count} {kind.one if count == 1 else kind.many} {kind.parts}"
+    labels = "ABC" if count == 3 and items is POINTS else [str(i + 1) for i in range(count)]
+    want = f"{count} {items.one if count == 1 else items.many} {items.parts}"
     try:
-        items_read = _point_items(answer, count, want, labels, kind)
+        items_read = _point_items(answer, count, want, labels, items)
     except AnswerError:
         raise
     except RecursionError:
@@ -648,8 +647,8 @@ def read_points(
         try:
             x, y, z = read_vector(p)
         except AnswerError as exc:
-            told = str(exc).replace("(x, y, z)", kind.inner)
-            raise AnswerError(f"{kind.one} {label}: {told}") from None
+            told = str(exc).replace("(x, y, z)", items.inner)
+            raise AnswerError(f"{items.one} {label}: {told}") from None
         points.append((x, y, z))
     return points
 

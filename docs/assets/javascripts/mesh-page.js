@@ -265,7 +265,7 @@ function mount(root) {
       }
       host.textContent = "";
       host.dataset.ready = "false";
-      const note = cell("p", message("view_big", { count: nf.toLocaleString("en") }), { class: "tn-mesh-view-note" });
+      const note = cell("p", message("view_big", { count: window.TrinormalMesh.grouped(nf) }), { class: "tn-mesh-view-note" });
       const draw = cell("button", message("view_draw"), { type: "button", class: "md-button", id: "tn-mesh-draw" });
       draw.addEventListener("click", () => {
         host.dataset.asked = "true";

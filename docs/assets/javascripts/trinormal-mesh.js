@@ -1433,6 +1433,7 @@
     FORMATS: FORMATS,
     LIMITS: LIMITS,
     message: message,
+    grouped: grouped,
     fileSize: fileSize,
     sizeProblem: sizeProblem,
     read: read,
