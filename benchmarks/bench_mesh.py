@@ -155,10 +155,7 @@ def main() -> None:
         f"numpy {np.__version__}, trimesh {trimesh.__version__}, libigl (PyPI wheel), "
         f"Python {platform.python_version()}"
     )
-    print(
-        f"machine: {platform.machine()}, blocks of {mesh.normals._BLOCK} faces "
-        f"({mesh.normals._THREADED_BLOCK} when threads share a mesh)"
-    )
+    print(f"machine: {platform.machine()}, blocks of {mesh.normals._BLOCK} faces")
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     print(f"load average at the start (1, 5, 15 min): {load}")
     bandwidth = copy_bandwidth()

@@ -96,6 +96,37 @@ def test_a_thin_face_among_many_gets_the_cores_verdict(where, ratio):
         np.testing.assert_allclose(unit[where], [0, 0, 1], rtol=0, atol=2 * EPS)
 
 
+@pytest.mark.parametrize("far", [1e3, 1e9, 1e150])
+def test_a_far_vertex_changes_no_row(far):
+    # A mesh is cleared all at once from its bounding box, block by block from the edges, or
+    # row by row; an unused vertex far away widens the box until the first test fails, and
+    # the rows must not change by a bit: every path gives the same verdicts and numbers.
+    v, f = mesh.terrain(150, 150)
+    wide = np.vstack([v, [[far, -far, far]]])
+    for unit in (True, False):
+        assert (
+            mesh.face_normals(wide, f, unit=unit).tobytes()
+            == mesh.face_normals(v, f, unit=unit).tobytes()
+        )
+    assert (mesh.degenerate_faces(wide, f) == mesh.degenerate_faces(v, f)).all()
+
+
+@pytest.mark.parametrize("rows", [0, 1, 511, 512, 513, 1025, 5000])
+def test_the_bounding_box_is_the_smallest_and_largest_coordinates(rows):
+    from trinormal.mesh._arrays import _box
+
+    v = np.random.default_rng(rows).normal(size=(rows, 3)) * [1, 10, 100]
+    expected = np.array([v.min(axis=0), v.max(axis=0)]) if rows else np.zeros((2, 3))
+    assert _box(v).tolist() == expected.tolist()
+
+
+def test_a_mesh_wider_than_the_float_range_still_gets_its_normals():
+    # the box spans 2e308 along x, beyond float64: the box test cannot apply, the rows can
+    v = [[-1e308, 0, 0], [1e308, 0, 0], [0, 1e308, 0], [0, 0, 1e308]]
+    got = mesh.face_normals(v, [[0, 1, 2], [0, 3, 1]])
+    np.testing.assert_allclose(got, [[0, 0, 1], [0, 1, 0]], atol=2 * EPS, rtol=0)
+
+
 def test_face_order_does_not_change_any_row():
     v, f = mesh.terrain(40, 50)
     perm = np.random.default_rng(2).permutation(f.shape[0])

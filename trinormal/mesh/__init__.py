@@ -41,10 +41,10 @@ The promises, for every normal computed here:
   input is computed and returned in float64.
 * Bad input raises a `ValueError` that names the first bad row.
 
-Speed comes from plain numpy: the coordinates are gathered block by block, a
-few thousand faces at a time, so that every temporary stays in the CPU cache,
-and every operation writes in place. There is no Python loop over faces (only
-over blocks of them).
+Speed comes from plain numpy: the corners are gathered block by block,
+16 384 faces at a time, so that every temporary stays in the CPU cache, and
+every operation writes in place. There is no Python loop over faces (only over
+blocks of them), and on a big mesh the cores share the blocks.
 
 Examples
 --------

@@ -38,16 +38,18 @@ __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vert
 #: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 
-#: Faces per block on one thread: small enough that the block's temporaries stay in cache.
+#: Faces per block: small enough that a block's scratch (18 numbers a face, 2.4 MB) stays in a
+#: core's cache, large enough that threads seldom wait for the interpreter lock between two numpy
+#: operations. Measured with benchmarks/bench_mesh.py: 8192 made two threads hardly faster than
+#: one, and 32 768 spilled out of the cache.
 _BLOCK = 16384
-#: Faces per block when threads share a mesh: larger, so the threads hand the interpreter lock
-#: to each other less often (between two numpy operations); measured by
-#: benchmarks/bench_mesh.py, where 8192 for both made two threads slower than one.
-_THREADED_BLOCK = 32768
 
 #: Meshes of at least this many blocks of `_BLOCK` are shared among threads, at most this many.
 _THREADED_BLOCKS = 8
 _MAX_THREADS = 4
+
+#: One vertex (or corner) as a single 24-byte record: x, y and z gathered by one take.
+_RECORD = np.dtype((np.void, 24))
 
 # A row goes to the careful path unless |U|²|V|² < 2**900 (no product can
 # overflow) and |N|² > 2**-900 (|N| and the unit normal are full precision).
@@ -58,58 +60,69 @@ _LO = 2.0**-900
 
 
 class _Block:
-    """Scratch arrays for one block of ``n`` faces, reused block after block.
+    """Scratch arrays for one block of up to ``n`` faces, reused block after block.
 
-    The edges and the normal are laid out coordinate by coordinate (one
-    contiguous row of ``n`` numbers per coordinate), so the arithmetic runs on
-    contiguous memory.
+    Everything lives in one float buffer of 18 ``n`` numbers (and one bool
+    buffer), cut into the views below; `view` cuts the same memory for a
+    shorter last block. The edges and the normal are laid out coordinate by
+    coordinate (one contiguous row of ``n`` numbers per coordinate), so the
+    arithmetic runs on contiguous memory.
 
     Attributes
     ----------
-    offsets : ndarray of int (3 n,)
-        Where each corner's x is in the flattened vertices: 3 × its index, face
-        by face (A, B, C of the first face, then of the second, …).
-    gathered : ndarray (3 n,)
-        One coordinate of the block's corners, in the same order: a take at
-        ``offsets`` from the flattened vertices, shifted by the coordinate.
+    records : ndarray (n, 3) of 24-byte records
+        The block's corners, one record (x, y, z) per corner, face by face
+        (A, B, C of the first face, then of the second, …): one take from the
+        vertices seen as records, instead of one take per coordinate.
+    corners : ndarray (n, 3, 3)
+        The same memory as numbers: ``corners[i, c, k]``, coordinate k of
+        corner c of face i.
     edges : ndarray (2, 3, n)
         ``edges[0, k]``, ``edges[1, k]``: coordinate k of U = B − A and V = C − A.
     normal : ndarray (3, n)
-        N = U × V.
+        N = U × V, in the corners' memory (free once the edges are taken).
+    rows3 : ndarray (3, n)
+        Scratch for three products at once, also in the corners' memory;
+        ``temp`` is its first row.
     norm : ndarray (n,)
         |N|², then |N|.
     dot : ndarray (n,)
         U · V.
     bound : ndarray (n,)
         |U|²|V|², then tol²|U|²|V|² (the degeneracy bound), then |U|² − U·V.
-    temp : ndarray (n,)
-        One product at a time (sums of products are added one term at a time).
     in_range, degenerate : ndarray of bool (n,)
         Rows the fast arithmetic handles; rows whose sine is at most tol.
     """
 
-    _LAST = ("normal",)  # 2-D: cut along the last axis
-    _ROWS = ("norm", "dot", "bound", "temp", "in_range", "degenerate")
-
     def __init__(self, n: int) -> None:
-        e = np.empty
-        self.offsets = e(3 * n, dtype=np.intp)
-        self.gathered = e(3 * n)
-        self.edges = e((2, 3, n))
-        self.normal = e((3, n))
-        self.norm, self.dot, self.bound, self.temp = e(n), e(n), e(n), e(n)
-        self.in_range, self.degenerate = e(n, dtype=bool), e(n, dtype=bool)
+        self._numbers = np.empty(18 * n)
+        self._flags = np.empty(2 * n, dtype=bool)
+        self._cut(n)
+
+    def _cut(self, n: int) -> None:
+        x = self._numbers
+        self.records = x[: 9 * n].view(_RECORD).reshape(n, 3)
+        self.corners = x[: 9 * n].reshape(n, 3, 3)
+        self.normal = x[: 3 * n].reshape(3, n)
+        self.rows3 = x[3 * n : 6 * n].reshape(3, n)
+        self.temp = self.rows3[0]
+        self.edges = x[9 * n : 15 * n].reshape(2, 3, n)
+        self.norm, self.dot, self.bound = x[15 * n : 16 * n], x[16 * n : 17 * n], x[17 * n : 18 * n]
+        self.in_range, self.degenerate = self._flags[:n], self._flags[n : 2 * n]
+        # the views the kernel takes every block, made once (they hold the interpreter lock)
+        self.first = self.corners[:, 0, :].T  # (3, n): A
+        self.others = self.corners[:, 1:3, :].transpose(1, 2, 0)  # (2, 3, n): B and C
+        self.u, self.v = self.edges
+        self.ux, self.uy, self.uz = self.u
+        self.vx, self.vy, self.vz = self.v
+        self.nx, self.ny, self.nz = self.normal
+        self.t0, self.t1, self.t2 = self.rows3
 
     def view(self, n: int) -> _Block:
-        """Return the first ``n`` faces of every scratch array (for the last, shorter block)."""
+        """Return the scratch arrays for ``n`` faces, fewer than this block's, in its memory."""
         out = object.__new__(_Block)
-        out.offsets = self.offsets[: 3 * n]
-        out.gathered = self.gathered[: 3 * n]
-        out.edges = self.edges[:, :, :n]
-        for name in self._LAST:
-            setattr(out, name, getattr(self, name)[:, :n])
-        for name in self._ROWS:
-            setattr(out, name, getattr(self, name)[:n])
+        out._numbers, out._flags = self._numbers, self._flags
+        out._cut(n)
         return out
 
 
@@ -171,12 +184,6 @@ def _normalize_rows(s: FloatArray) -> FloatArray:
     return out
 
 
-def _plan(n: int) -> tuple[int, int]:
-    """Return the block size and the number of threads for ``n`` faces."""
-    workers = _workers(len(range(0, n, _BLOCK)))
-    return (_THREADED_BLOCK if workers > 1 else _BLOCK), workers
-
-
 def _workers(n_blocks: int) -> int:
     """How many threads share the blocks: numpy releases the GIL inside each operation."""
     if n_blocks < _THREADED_BLOCKS:
@@ -198,120 +205,144 @@ class _Outputs:
     angles: FloatArray | None
 
 
-def _dot(x: FloatArray, y: FloatArray, out: FloatArray, temp: FloatArray) -> None:
-    """Write x · y of (3, n) rows into ``out``, summed x, y, z in turn (``temp``: scratch)."""
-    np.multiply(x[0], y[0], out=out)
-    for k in (1, 2):
-        np.multiply(x[k], y[k], out=temp)
-        np.add(out, temp, out=out)
+def _dot(x: FloatArray, y: FloatArray, out: FloatArray, rows3: FloatArray) -> None:
+    """Write x · y of (3, n) rows into ``out``: three products at once, then x + y + z in turn."""
+    np.multiply(x, y, out=rows3)
+    np.add(rows3[0], rows3[1], out=out)
+    np.add(out, rows3[2], out=out)
 
 
-def _clear_block(edges: FloatArray, ss: FloatArray, tol2: float) -> bool:
+def _box_bound(box: FloatArray, tol2: float) -> float:
+    """Return the |N|² above which a face in ``box`` is neither degenerate nor out of range.
+
+    Each edge's components are at most the box's extents, so |U|² and |V|² are
+    at most ``s``, the sum of the extents' squares, and |U|²|V|² at most ``s²``
+    (times 1 + 2**-20, far more than the rounding of any |N|² + (U·V)²
+    computed from them). A face with |N|² above ``tol² s²`` passes the sine
+    test ``|N|² > tol² |U|²|V|²`` that `_face_block` would apply row by row:
+    the same verdict, without U·V. Infinite when the box is too large or too
+    small for that argument (then each block is bounded by its own edges).
+    """
+    with np.errstate(all="ignore"):
+        span = box[1] - box[0]
+        s = float((span * span).sum())
+        bound = s * s * (1.0 + 2.0**-20)
+    if not (s > _LO and bound < _HI):
+        return math.inf
+    return max(_LO, tol2 * bound)
+
+
+def _clear_block(edges: FloatArray, low: float, tol2: float) -> bool:
     """Whether no face of a block can be degenerate or out of the fast path's range.
 
-    Every |U|²|V|² of the block is at most ``bound``, the product of the sums
-    of squares of the edges' largest components (times 1 + 2**-20, far more
-    than the rounding of any |N|² + (U·V)² computed from them). So when the
-    smallest |N|² exceeds tol² times ``bound``, each face passes the sine test
-    ``|N|² > tol² |U|²|V|²`` that `_face_block` would apply row by row (the
-    same verdict, without U·V), and every row is within [_LO, _HI].
+    `_box_bound` for a block: here the bound on every |U|²|V|² is the product
+    of the sums of squares of the block's own largest edge components, so it
+    holds where the mesh's box is far larger than its faces. ``low`` is the
+    block's smallest |N|².
     """
     with np.errstate(all="ignore"):
         top = np.maximum(edges.max(axis=2), -edges.min(axis=2))  # (2, 3): largest |U_k|, |V_k|
         su, sv = (top * top).sum(axis=1)
         bound = su * sv * (1.0 + 2.0**-20)
-        low = ss.min()
     return bool(min(su, sv) > _LO and bound < _HI and low > _LO and low > tol2 * bound)
 
 
 def _face_block(
-    w: _Block, flat: FloatArray, f: IntArray, s: int, e: int, tol2: float, out: _Outputs
+    w: _Block,
+    records: npt.NDArray[np.void],
+    f: IntArray,
+    s: int,
+    e: int,
+    tol2: float,
+    clear_above: float,
+    out: _Outputs,
 ) -> IntArray | None:
-    """Compute faces ``s`` to ``e`` into ``out``; return the rows the careful path must redo."""
-    nv = flat.size // 3
+    """Compute faces ``s`` to ``e`` into ``out``; return the rows the careful path must redo.
+
+    ``records``: the vertices as 24-byte records. ``clear_above``: `_box_bound`.
+    Floating-point warnings are the caller's to silence (once per thread, not per block).
+    """
+    nv = records.size
     mul, sub, add = np.multiply, np.subtract, np.add
     unit_out, deg_out, mag_out, angles_out = out.unit, out.degenerate, out.magnitude, out.angles
-    with np.errstate(all="ignore"):
-        index = f[s:e].reshape(-1)  # the faces' own memory: A, B, C of each face in turn
-        # one test for both ends: a negative index, read as unsigned, is beyond any count
-        if index.view(np.uintp).max() >= nv:
-            _raise_range_error(f, nv)
-        # short local names for the block's arrays (see _Block): the kernel reads as formulas
-        g, n, ss = w.gathered, w.normal, w.norm
-        d, q, t = w.dot, w.bound, w.temp
-        u, v = w.edges
-        corner = g.reshape(-1, 3)  # corner[i, c]: this coordinate of corner c of face i
-        # a corner's x, y and z share a cache line: each take after the first finds them there
-        offsets = w.offsets
-        mul(index, 3, out=offsets)
-        for k in range(3):  # gather one coordinate of every corner, then its two edges
-            np.take(flat[k:], offsets, out=g, mode="clip")
-            sub(corner[:, 1], corner[:, 0], out=u[k])  # U = B - A
-            sub(corner[:, 2], corner[:, 0], out=v[k])  # V = C - A
-        ux, uy, uz = u
-        vx, vy, vz = v
-        # N = U × V
-        mul(uy, vz, out=n[0])
-        mul(uz, vy, out=t)
-        sub(n[0], t, out=n[0])
-        mul(uz, vx, out=n[1])
-        mul(ux, vz, out=t)
-        sub(n[1], t, out=n[1])
-        mul(ux, vy, out=n[2])
-        mul(uy, vx, out=t)
-        sub(n[2], t, out=n[2])
-        _dot(n, n, ss, t)  # |N|²
-        clear = _clear_block(w.edges, ss, tol2)
-        careful = False
-        if not clear or angles_out is not None:
-            _dot(u, v, d, t)  # U·V
-        if clear:  # no face of the block is degenerate or out of range
-            if deg_out is not None:
-                deg_out[s:e] = False
-        else:
-            # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
-            mul(d, d, out=q)
-            add(q, ss, out=q)
-            # (NaN fails every comparison, so it goes to the careful path too)
-            careful = not (q.max() < _HI and ss.min() > _LO)
-            if careful:
-                np.less(q, _HI, out=w.in_range)
-                np.greater(ss, _LO, out=w.degenerate)
-                np.logical_and(w.in_range, w.degenerate, out=w.in_range)
-            # degenerate: |N|² <= tol² |U|²|V|²
-            mul(q, tol2, out=q)
-            np.less_equal(ss, q, out=w.degenerate)
-            if deg_out is not None:
-                deg_out[s:e] = w.degenerate
-        np.sqrt(ss, out=ss)  # |N|
-        if mag_out is not None:
-            mag_out[s:e] = ss
-        if angles_out is not None:
-            # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
-            ang = angles_out[s:e]
-            np.arctan2(ss, d, out=ang[:, 0])
-            _dot(u, u, q, t)  # |U|²
-            sub(q, d, out=q)
-            np.arctan2(ss, q, out=ang[:, 1])
-            add(ang[:, 0], ang[:, 1], out=t)
-            sub(math.pi, t, out=ang[:, 2])
-        if unit_out is not None:
-            rows_out = unit_out[s:e]
-            # N / |N|, correctly rounded (a product with 1/|N| rounds twice), column by column:
-            # a broadcast over rows of 3 is slow
-            for k in range(3):
-                np.divide(n[k], ss, out=rows_out[:, k])
-            if not clear and w.degenerate.any():
-                rows_out[w.degenerate] = 0.0
+    index = f[s:e]
+    # one test for both ends: a negative index, read as unsigned, is beyond any count
+    if index.view(np.uintp).max() >= nv:
+        _raise_range_error(f, nv)
+    # short local names for the block's arrays (see _Block): the kernel reads as formulas.
+    # Outputs are passed by position: numpy parses that faster than out=, and every
+    # microsecond here holds the interpreter lock that the other threads wait for.
+    n, ss, d, q, t, t3 = w.normal, w.norm, w.dot, w.bound, w.temp, w.rows3
+    u, v, ux, uy, uz, vx, vy, vz = w.u, w.v, w.ux, w.uy, w.uz, w.vx, w.vy, w.vz
+    nx, ny, nz, t0, t1, t2 = w.nx, w.ny, w.nz, w.t0, w.t1, w.t2
+    np.take(records, index, None, w.records, "clip")  # x, y, z of every corner
+    sub(w.others, w.first, w.edges)  # U = B - A, V = C - A
+    # N = U × V (into the corners' memory, free now)
+    mul(uy, vz, nx)
+    mul(uz, vy, t)
+    sub(nx, t, nx)
+    mul(uz, vx, ny)
+    mul(ux, vz, t)
+    sub(ny, t, ny)
+    mul(ux, vy, nz)
+    mul(uy, vx, t)
+    sub(nz, t, nz)
+    # |N|² = x² + y² + z², summed in that order (as _dot does)
+    mul(n, n, t3)
+    add(t0, t1, ss)
+    add(ss, t2, ss)
+    low = ss.min()
+    clear = bool(low > clear_above) or _clear_block(w.edges, low, tol2)
+    careful = False
+    if not clear or angles_out is not None:
+        _dot(u, v, d, t3)  # U·V
+    if clear:  # no face of the block is degenerate or out of range
+        if deg_out is not None:
+            deg_out[s:e] = False
+    else:
+        # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
+        mul(d, d, out=q)
+        add(q, ss, out=q)
+        # (NaN fails every comparison, so it goes to the careful path too)
+        careful = not (q.max() < _HI and ss.min() > _LO)
         if careful:
-            rows: IntArray = s + np.flatnonzero(~w.in_range)
-            return rows
+            np.less(q, _HI, out=w.in_range)
+            np.greater(ss, _LO, out=w.degenerate)
+            np.logical_and(w.in_range, w.degenerate, out=w.in_range)
+        # degenerate: |N|² <= tol² |U|²|V|²
+        mul(q, tol2, out=q)
+        np.less_equal(ss, q, out=w.degenerate)
+        if deg_out is not None:
+            deg_out[s:e] = w.degenerate
+    np.sqrt(ss, ss)  # |N|
+    if mag_out is not None:
+        mag_out[s:e] = ss
+    if angles_out is not None:
+        # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
+        ang = angles_out[s:e]
+        np.arctan2(ss, d, out=ang[:, 0])
+        _dot(u, u, q, t3)  # |U|²
+        sub(q, d, out=q)
+        np.arctan2(ss, q, out=ang[:, 1])
+        add(ang[:, 0], ang[:, 1], out=t)
+        sub(math.pi, t, out=ang[:, 2])
+    if unit_out is not None:
+        rows_out = unit_out[s:e]
+        # N / |N|, correctly rounded (a product with 1/|N| rounds twice), written
+        # straight into the (faces, 3) rows
+        np.divide(n, ss, rows_out.T)
+        if not clear and w.degenerate.any():
+            rows_out[w.degenerate] = 0.0
+    if careful:
+        rows: IntArray = s + np.flatnonzero(~w.in_range)
+        return rows
     return None
 
 
 def _face_rows(
     vertices: FloatArray,
     f: IntArray,
+    box: FloatArray,
     tol: float,
     unit_out: FloatArray | None = None,
     deg_out: BoolArray | None = None,
@@ -322,7 +353,8 @@ def _face_rows(
 
     ``unit_out`` (F, 3) unit normals (zero rows where degenerate), ``deg_out``
     (F,) degeneracy, ``mag_out`` (F,) |N| as a mantissa (times ``2**exp``),
-    ``angles_out`` (F, 3) the interior angle at each corner.
+    ``angles_out`` (F, 3) the interior angle at each corner. ``box``: the
+    vertices' bounding box (`_arrays._box`).
 
     Blocks of faces are independent: on a big mesh, a few threads (this one
     among them) each take the next block as they finish one (every face is
@@ -333,20 +365,22 @@ def _face_rows(
     nf = f.shape[0]
     tol2 = tol * tol
     exps: IntArray | None = None
-    flat = vertices.reshape(-1)  # x, y, z of vertex 0, then of vertex 1, … (no copy)
+    records = vertices.reshape(-1).view(_RECORD)  # vertex i: one record (x, y, z), no copy
+    clear_above = _box_bound(box, tol2)
     out = _Outputs(unit_out, deg_out, mag_out, angles_out)
-    block, workers = _plan(nf)
+    block, workers = _BLOCK, _workers(len(range(0, nf, _BLOCK)))
     starts = list(range(0, nf, block))
 
     def run(share: Iterator[int]) -> list[IntArray]:
         full = _Block(min(block, max(nf, 1)))
         found = []
-        for s in share:
-            e = min(s + block, nf)
-            w = full if e - s == block else full.view(e - s)
-            rows = _face_block(w, flat, f, s, e, tol2, out)
-            if rows is not None:
-                found.append(rows)
+        with np.errstate(all="ignore"):  # per thread: numpy keeps it in a context variable
+            for s in share:
+                e = min(s + block, nf)
+                w = full if e - s == block else full.view(e - s)
+                rows = _face_block(w, records, f, s, e, tol2, clear_above, out)
+                if rows is not None:
+                    found.append(rows)
         return found
 
     if workers == 1:
@@ -448,15 +482,15 @@ def face_normals(
     array([[0., 0., 1.]])
     """
     t = _check_tol(tol)
-    v, f, dtype = _prepare(vertices, faces)
+    v, f, dtype, box = _prepare(vertices, faces)
     nf = f.shape[0]
     if unit:
         out = np.empty((nf, 3), dtype=dtype)
-        _face_rows(v, f, t, unit_out=out)
+        _face_rows(v, f, box, t, unit_out=out)
         return out
     unit_n = np.empty((nf, 3))
     mag = np.empty(nf)
-    exps = _face_rows(v, f, t, unit_out=unit_n, mag_out=mag)
+    exps = _face_rows(v, f, box, t, unit_out=unit_n, mag_out=mag)
     raw = unit_n * mag[:, None]
     if exps is not None:  # rows from the careful path: |N| = mag * 2**exp, maybe out of range
         with np.errstate(over="ignore", under="ignore"):
@@ -499,9 +533,9 @@ def degenerate_faces(
     array([False,  True])
     """
     t = _check_tol(tol)
-    v, f, _ = _prepare(vertices, faces)
+    v, f, _, box = _prepare(vertices, faces)
     out = np.empty(f.shape[0], dtype=bool)
-    _face_rows(v, f, t, deg_out=out)
+    _face_rows(v, f, box, t, deg_out=out)
     return out
 
 
@@ -530,9 +564,9 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
     >>> float(face_areas(v, f).sum())  # a cube of side 2
     24.0
     """
-    v, f, dtype = _prepare(vertices, faces)
+    v, f, dtype, box = _prepare(vertices, faces)
     mag = np.empty(f.shape[0])
-    exps = _face_rows(v, f, DEFAULT_TOL, mag_out=mag)
+    exps = _face_rows(v, f, box, DEFAULT_TOL, mag_out=mag)
     with np.errstate(over="ignore", under="ignore"):
         area = np.ldexp(mag, (exps if exps is not None else 0) - 1)
     return _cast(area, dtype)
@@ -590,22 +624,22 @@ def vertex_normals(
     if weighting not in WEIGHTINGS:
         raise ValueError(f"weighting must be one of {', '.join(WEIGHTINGS)}; got {weighting!r}")
     t = _check_tol(tol)
-    v, f, dtype = _prepare(vertices, faces)
+    v, f, dtype, box = _prepare(vertices, faces)
     nv, nf = v.shape[0], f.shape[0]
     unit = np.empty((nf, 3))
     w: FloatArray
     if weighting == "angle":
         w = np.empty((nf, 3))
-        _face_rows(v, f, t, unit_out=unit, angles_out=w)
+        _face_rows(v, f, box, t, unit_out=unit, angles_out=w)
     elif weighting == "area":
         mag = np.empty(nf)
-        exps = _face_rows(v, f, t, unit_out=unit, mag_out=mag)
+        exps = _face_rows(v, f, box, t, unit_out=unit, mag_out=mag)
         if exps is None:  # every |N| is a normal float of moderate size: weigh as it is
             w = np.repeat(mag[:, None], 3, axis=1)
         else:
             w = _area_weights_per_vertex(mag, exps, f, nv)
     else:
-        _face_rows(v, f, t, unit_out=unit)
+        _face_rows(v, f, box, t, unit_out=unit)
         w = np.ones((nf, 3))
     idx = f.T.ravel()  # corner by corner: all first corners, then all second, then third
     acc = np.empty((nv, 3))
