@@ -529,6 +529,74 @@ def test_threads_give_the_same_bits_as_one_thread(monkeypatch):
     assert np.isfinite(results[4][0]).all()
 
 
+def test_scratch_kept_between_calls_changes_no_result(monkeypatch):
+    # full blocks' scratch is kept for the next call: nothing of one mesh may leak into another
+    from trinormal.mesh import normals
+
+    monkeypatch.setattr(normals, "_spare", [])
+    monkeypatch.setattr(normals, "_THREADED_BLOCKS", 2)
+    first, f1 = mesh.terrain(200, 200)
+    second, f2 = mesh.terrain(170, 230)  # another size: another last, shorter block
+    second = second.copy()
+    second[:400] *= 1e-200  # faces this tiny go to the careful path
+    f2 = f2.copy()
+    f2[::1000, 2] = f2[::1000, 1]  # and these are degenerate
+    fresh = [
+        mesh.face_normals(second, f2),
+        mesh.degenerate_faces(second, f2),
+        mesh.vertex_normals(second, f2),
+    ]
+    assert 1 <= len(normals._spare) <= normals._MAX_THREADS
+    mesh.face_normals(first, f1)
+    bad = f1.copy()
+    bad[-1, 0] = -1
+    with pytest.raises(ValueError, match="refers to vertex -1"):
+        mesh.face_normals(first, bad)  # a block fails: its scratch is still given back
+    assert 1 <= len(normals._spare) <= normals._MAX_THREADS
+    again = [
+        mesh.face_normals(second, f2),
+        mesh.degenerate_faces(second, f2),
+        mesh.vertex_normals(second, f2),
+    ]
+    for a, b in zip(fresh, again, strict=True):
+        assert a.tobytes() == b.tobytes()
+
+
+def test_threads_shorten_the_switch_interval_only_while_they_run(monkeypatch):
+    import sys
+    from concurrent.futures import ThreadPoolExecutor
+
+    from trinormal.mesh import normals
+
+    v, f = mesh.terrain(200, 200)  # ten blocks: shared among threads
+    monkeypatch.setattr(normals, "_THREADED_BLOCKS", 2)
+    monkeypatch.setattr(normals, "_workers", lambda n_blocks: 2)
+    seen: list[float] = []
+    block = normals._face_block
+
+    def watched(*args, **kwargs):
+        seen.append(sys.getswitchinterval())
+        return block(*args, **kwargs)
+
+    monkeypatch.setattr(normals, "_face_block", watched)
+    before = sys.getswitchinterval()
+    try:
+        # three calls at once from three threads: the interval comes back as it was
+        with ThreadPoolExecutor(3) as pool:
+            results = list(pool.map(lambda _: mesh.face_normals(v, f), range(3)))
+        assert sys.getswitchinterval() == before
+        assert seen and max(seen) <= normals._SWITCH_INTERVAL
+        assert all(r.tobytes() == results[0].tobytes() for r in results)
+        # an interval the program set shorter is kept, during the call and after it
+        sys.setswitchinterval(1e-5)
+        seen.clear()
+        mesh.face_normals(v, f)
+        assert sys.getswitchinterval() == pytest.approx(1e-5)
+        assert max(seen) == pytest.approx(1e-5)
+    finally:
+        sys.setswitchinterval(before)
+
+
 @settings(max_examples=50, deadline=None)
 @given(messy_meshes())
 def test_huge_vertex_numbers_take_the_unpacked_sorts(vf):
