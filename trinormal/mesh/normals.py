@@ -120,8 +120,12 @@ class _Block:
         self.u, self.v = self.edges
         self.ux, self.uy, self.uz = self.u
         self.vx, self.vy, self.vz = self.v
-        self.nx, self.ny, self.nz = self.normal
-        self.t0, self.t1, self.t2 = self.rows3
+        # N = U × V row by row: (N_k, U_i, V_j, U_j, V_i) with N_k = U_i V_j - U_j V_i
+        self.cross = [
+            (self.normal[0], self.uy, self.vz, self.uz, self.vy),
+            (self.normal[1], self.uz, self.vx, self.ux, self.vz),
+            (self.normal[2], self.ux, self.vy, self.uy, self.vx),
+        ]
 
     def view(self, n: int) -> _Block:
         """Return the scratch arrays for ``n`` faces, fewer than this block's, in its memory."""
@@ -298,8 +302,13 @@ def _box_bound(box: FloatArray, tol2: float) -> float:
     with np.errstate(all="ignore"):
         span = box[1] - box[0]
         s = float((span * span).sum())
-        bound = s * s * (1.0 + 2.0**-20)
-    if not (s > _LO and bound < _HI):
+    return _clear_threshold(s, s, tol2)
+
+
+def _clear_threshold(su: float, sv: float, tol2: float) -> float:
+    """Return the |N|² above which faces with |U|² <= ``su``, |V|² <= ``sv`` are clear (or inf)."""
+    bound = su * sv * (1.0 + 2.0**-20)  # Python floats: an overflow is inf, quietly
+    if not (min(su, sv) > _LO and bound < _HI):  # (NaN fails too)
         return math.inf
     return max(_LO, tol2 * bound)
 
@@ -315,8 +324,7 @@ def _clear_block(edges: FloatArray, low: float, tol2: float) -> bool:
     with np.errstate(all="ignore"):
         top = np.maximum(edges.max(axis=2), -edges.min(axis=2))  # (2, 3): largest |U_k|, |V_k|
         su, sv = (top * top).sum(axis=1)
-        bound = su * sv * (1.0 + 2.0**-20)
-    return bool(min(su, sv) > _LO and bound < _HI and low > _LO and low > tol2 * bound)
+    return bool(low > _clear_threshold(float(su), float(sv), tol2))
 
 
 def _face_block(
@@ -345,24 +353,14 @@ def _face_block(
     # Outputs are passed by position: numpy parses that faster than out=, and every
     # microsecond here holds the interpreter lock that the other threads wait for.
     n, ss, d, q, t, t3 = w.normal, w.norm, w.dot, w.bound, w.temp, w.rows3
-    u, v, ux, uy, uz, vx, vy, vz = w.u, w.v, w.ux, w.uy, w.uz, w.vx, w.vy, w.vz
-    nx, ny, nz, t0, t1, t2 = w.nx, w.ny, w.nz, w.t0, w.t1, w.t2
+    u, v = w.u, w.v
     np.take(records, index, None, w.records, "clip")  # x, y, z of every corner
     sub(w.others, w.first, w.edges)  # U = B - A, V = C - A
-    # N = U × V (into the corners' memory, free now)
-    mul(uy, vz, nx)
-    mul(uz, vy, t)
-    sub(nx, t, nx)
-    mul(uz, vx, ny)
-    mul(ux, vz, t)
-    sub(ny, t, ny)
-    mul(ux, vy, nz)
-    mul(uy, vx, t)
-    sub(nz, t, nz)
-    # |N|² = x² + y² + z², summed in that order (as _dot does)
-    mul(n, n, t3)
-    add(t0, t1, ss)
-    add(ss, t2, ss)
+    for nk, ui, vj, uj, vi in w.cross:  # N = U × V (into the corners' memory, free now)
+        mul(ui, vj, nk)
+        mul(uj, vi, t)
+        sub(nk, t, nk)
+    _dot(n, n, ss, t3)  # |N|²
     low = ss.min()
     clear = bool(low > clear_above) or _clear_block(w.edges, low, tol2)
     careful = False
