@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from trinormal import mesh
-from trinormal.mesh import MeshFileError, io
+from trinormal.mesh import MeshFileError
+from trinormal.mesh.io import stl
 
 DATA = Path(__file__).parent / "data" / "meshes"
 BAD = DATA / "bad"
@@ -159,7 +160,7 @@ def test_stl_corners_merge_the_same_when_every_sort_key_collides(monkeypatch):
     corners = v[f].reshape(-1, 3)
     data = pack_stl(corners.reshape(-1, 3, 3))
     want = mesh.parse_mesh(data, "stl")
-    monkeypatch.setattr(io, "_MIX", (0, 0, 0))  # every corner gets the key 0
+    monkeypatch.setattr(stl, "_MIX", (0, 0, 0))  # every corner gets the key 0
     got = mesh.parse_mesh(data, "stl")
     assert got.faces.tolist() == want.faces.tolist()
     assert got.vertices.tobytes() == want.vertices.tobytes()

@@ -66,10 +66,12 @@ def test_the_readers_reasons_are_written_once_for_python_and_the_page():
     assert {k: mesh_page.MESSAGES[k] for k in READ_ERRORS} == READ_ERRORS
     assert set(OTHER_ERRORS).isdisjoint(mesh_page.MESSAGES)  # about paths and writing: Python's
     # every MeshFileError the reader raises is made from a template: no sentence of its own
-    source = (ROOT / "trinormal" / "mesh" / "io.py").read_text(encoding="utf-8")
+    sources = sorted((ROOT / "trinormal" / "mesh" / "io").glob("*.py"))
+    assert {"obj.py", "stl.py", "ply.py"} <= {path.name for path in sources}
     direct = [
-        node.lineno
-        for node in ast.walk(ast.parse(source))
+        (path.name, node.lineno)
+        for path in sources
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
         if isinstance(node, ast.Call)
         and isinstance(node.func, ast.Name)
         and node.func.id == "MeshFileError"

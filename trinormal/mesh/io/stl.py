@@ -1,0 +1,155 @@
+"""STL files, text and binary: corners with exactly equal coordinates become one vertex.
+
+STL stores each triangle's three corners as coordinates, not as shared
+vertices. Corners are merged by exact equality, never a tolerance (``-0.0``
+equals ``0.0``), and numbered in order of first appearance, so an STL model has
+the same edges, holes and pieces as the same model saved as OBJ.
+"""
+
+from __future__ import annotations
+
+import struct
+
+import numpy as np
+
+from trinormal.mesh._arrays import FloatArray, IntArray
+from trinormal.mesh.io.errors import MeshFileError, _number, _show, _text
+from trinormal.mesh.io.mesh_data import MeshData
+from trinormal.mesh.normals import face_normals
+
+_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attr", "<u2")])
+
+
+def _read_stl(data: bytes, name: str) -> MeshData:
+    """Read a binary STL (its size follows from its triangle count) or a text one."""
+    if len(data) >= 84:
+        (n,) = struct.unpack_from("<I", data, 80)
+        if len(data) == 84 + 50 * n:  # a binary STL, even when its header starts with "solid"
+            rec = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)
+            corners = rec["corners"].reshape(-1, 3)  # float32, as stored: merged before widening
+            if not np.isfinite(corners).all():
+                bad = int(np.flatnonzero(~np.isfinite(corners).all(axis=1))[0]) // 3
+                raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
+            return _merge_corners(corners, name, "binary")
+    if data.lstrip()[:5].lower() != b"solid" or b"\0" in data:
+        if len(data) >= 84:
+            (n,) = struct.unpack_from("<I", data, 80)
+            raise MeshFileError.of(
+                name,
+                "stl_not_stl",
+                count=f"{n:,}",
+                expected=f"{84 + 50 * n:,}",
+                size=f"{len(data):,}",
+            )
+        raise MeshFileError.of(name, "stl_short")
+    return _read_stl_ascii(data, name)
+
+
+def _read_stl_ascii(data: bytes, name: str) -> MeshData:
+    """Read STL text: facets of exactly three vertices, keywords in any case."""
+    text = _text(data, name, "STL")
+    corners: list[float] = []
+    in_loop = False
+    loop_count = 0
+    loop_line = 0
+    lineno = 0
+    for line in text.splitlines():
+        lineno += 1
+        toks = line.split()
+        if not toks:
+            continue
+        kw = toks[0].lower()
+        if kw == "vertex":
+            if not in_loop:
+                raise MeshFileError.of(name, "stl_vertex_outside", lineno)
+            if len(toks) != 4:
+                raise MeshFileError.of(name, "stl_vertex", lineno)
+            corners += (_number(t, name, lineno) for t in toks[1:])
+            loop_count += 1
+        elif kw == "outer":
+            in_loop, loop_count, loop_line = True, 0, lineno
+        elif kw == "endloop":
+            if not in_loop:
+                raise MeshFileError.of(name, "stl_endloop", lineno)
+            if loop_count != 3:
+                raise MeshFileError.of(name, "stl_facet", lineno, start=loop_line, count=loop_count)
+            in_loop = False
+        elif kw in ("solid", "endsolid", "facet", "endfacet"):
+            if in_loop:
+                raise MeshFileError.of(name, "stl_before_endloop", lineno, token=_show(toks[0]))
+        else:
+            raise MeshFileError.of(name, "stl_keyword", lineno, token=_show(toks[0]))
+    if in_loop:
+        raise MeshFileError.of(name, "stl_ends_in_facet", lineno)
+    arr = np.array(corners, dtype=np.float64).reshape(-1, 3)
+    return _merge_corners(arr, name, "ascii")
+
+
+#: Odd 64-bit multipliers that mix a corner's three bit patterns into one sort key.
+_MIX = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9)
+
+
+def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
+    """Corners with exactly equal coordinates become one vertex, numbered by first use.
+
+    ``corners`` (3F, 3) holds float32 (binary STL) or float64 (ASCII) numbers;
+    they are compared as stored, by their bit patterns, and widened to float64
+    only once merged.
+    """
+    corners = corners + corners.dtype.type(0)  # -0.0 becomes 0.0: equal numbers, one vertex
+    n = corners.shape[0]
+    if n == 0:
+        empty = np.empty((0, 3), np.intp)
+        return MeshData(np.empty((0, 3)), empty, "stl", encoding, np.empty(0, np.intp), 0, name)
+    bits = corners.view(np.uint32 if corners.dtype == np.float32 else np.uint64)
+    x, y, z = (bits[:, k].astype(np.uint64) for k in range(3))
+    # sort by a mix of the three bit patterns; equal rows get equal keys, and the rows
+    # themselves are compared after the sort, so equality is exact, never a hash match
+    mx, my, mz = (np.uint64(m) for m in _MIX)
+    with np.errstate(over="ignore"):
+        key = x * mx
+        key ^= y * my
+        key ^= z * mz
+    order = np.argsort(key, kind="stable")
+    sx, sy, sz = x[order], y[order], z[order]
+    same_row = (sx[1:] == sx[:-1]) & (sy[1:] == sy[:-1]) & (sz[1:] == sz[:-1])
+    sk = key[order]
+    if ((sk[1:] == sk[:-1]) & ~same_row).any():  # two different points share a key: sort rows
+        order = np.lexsort((z, y, x))
+        sx, sy, sz = x[order], y[order], z[order]
+        same_row = (sx[1:] == sx[:-1]) & (sy[1:] == sy[:-1]) & (sz[1:] == sz[:-1])
+    new = np.empty(n, dtype=bool)
+    new[0] = True
+    np.logical_not(same_row, out=new[1:])
+    group = np.cumsum(new) - 1  # group of each sorted corner
+    first = order[new]  # both sorts are stable: the first corner of each group in file order
+    rank = np.empty(first.size, dtype=np.intp)
+    rank[np.argsort(first)] = np.arange(first.size)
+    index = np.empty(n, dtype=np.intp)
+    index[order] = rank[group]
+    vertices = np.empty((first.size, 3))
+    vertices[rank] = corners[first]
+    faces = index.reshape(-1, 3)
+    nf = faces.shape[0]
+    return MeshData(vertices, faces, "stl", encoding, np.arange(nf, dtype=np.intp), nf, name)
+
+
+def _encode_stl(v: FloatArray, f: IntArray, enc: str) -> bytes:
+    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face)."""
+    normals = face_normals(v, f) if f.shape[0] else np.empty((0, 3))
+    if enc == "binary":
+        rec = np.zeros(f.shape[0], dtype=_STL_RECORD)
+        with np.errstate(over="ignore"):
+            rec["normal"] = normals
+            rec["corners"] = v[f]
+        header = b"binary STL written by trinormal".ljust(80, b" ")
+        return header + struct.pack("<I", f.shape[0]) + rec.tobytes()
+    out = ["solid trinormal"]
+    for n, tri in zip(normals.tolist(), v[f].tolist(), strict=True):
+        out.append(f"facet normal {n[0]!r} {n[1]!r} {n[2]!r}")
+        out.append("outer loop")
+        out += [f"vertex {x!r} {y!r} {z!r}" for x, y, z in tri]
+        out.append("endloop")
+        out.append("endfacet")
+    out.append("endsolid trinormal")
+    return ("\n".join(out) + "\n").encode()
