@@ -17,8 +17,14 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import IntArray, _check_faces, _check_tol, _check_vertices
 from trinormal.mesh.normals import degenerate_faces
-from trinormal.mesh.repair import _winding
-from trinormal.mesh.topology import _duplicates, _fans, _HalfEdges
+from trinormal.mesh.repair import _Winding, _winding
+from trinormal.mesh.topology import (
+    _boundary_edges,
+    _duplicates,
+    _HalfEdges,
+    _non_manifold_edges,
+    _non_manifold_vertices,
+)
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = ["NOUNS", "SUMMARY", "ComponentReport", "MeshReport", "check"]
@@ -420,19 +426,32 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
     used[f.ravel()] = True
     same, rev = _duplicates(f)
 
-    boundary = he.order[he.starts[he.counts == 1]]
-    ba, bb = he.start(boundary), he.end(boundary)
-    border = np.lexsort((bb, ba))
-    boundary_edges = np.stack([ba[border], bb[border]], axis=1).reshape(-1, 2)
-    non_manifold = he.edge_vertices(np.flatnonzero(he.counts >= 3))
-    verts, fans = _fans(he)
-
     w = _winding(v, he)
     h1, _ = w.inconsistent_pairs
-    ia, ib = he.start(h1), he.end(h1)
-    inc = np.stack([np.minimum(ia, ib), np.maximum(ia, ib)], axis=1).reshape(-1, 2)
+    inc = he.undirected(h1)
     inc = inc[np.lexsort((inc[:, 1], inc[:, 0]))]
 
+    return MeshReport(
+        n_vertices=nv,
+        n_faces=nf,
+        unused_vertices=np.flatnonzero(~used).astype(np.intp),
+        degenerate_faces=np.flatnonzero(deg).astype(np.intp),
+        coincident_faces=np.flatnonzero(coincident).astype(np.intp),
+        collinear_faces=np.flatnonzero(collinear).astype(np.intp),
+        duplicate_faces=same,
+        reversed_duplicate_faces=rev,
+        boundary_edges=_boundary_edges(he),
+        non_manifold_edges=_non_manifold_edges(he),
+        non_manifold_vertices=_non_manifold_vertices(he),
+        inconsistent_edges=inc,
+        face_component=w.component,
+        components=_component_reports(w),
+        faces_to_flip=np.flatnonzero(w.flip).astype(np.intp),
+    )
+
+
+def _component_reports(w: _Winding) -> tuple[ComponentReport, ...]:
+    """One `ComponentReport` a piece, from the winding's per-piece arrays."""
     nc = w.n_components
     sizes = np.bincount(w.component[w.component >= 0], minlength=nc)[:nc]
     flips = np.bincount(w.component[w.flip], minlength=nc)[:nc]
@@ -452,20 +471,4 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
                 faces_to_flip=int(flips[i]),
             )
         )
-    return MeshReport(
-        n_vertices=nv,
-        n_faces=nf,
-        unused_vertices=np.flatnonzero(~used).astype(np.intp),
-        degenerate_faces=np.flatnonzero(deg).astype(np.intp),
-        coincident_faces=np.flatnonzero(coincident).astype(np.intp),
-        collinear_faces=np.flatnonzero(collinear).astype(np.intp),
-        duplicate_faces=same,
-        reversed_duplicate_faces=rev,
-        boundary_edges=boundary_edges,
-        non_manifold_edges=non_manifold,
-        non_manifold_vertices=verts[fans > 1],
-        inconsistent_edges=inc,
-        face_component=w.component,
-        components=tuple(comps),
-        faces_to_flip=np.flatnonzero(w.flip).astype(np.intp),
-    )
+    return tuple(comps)

@@ -91,6 +91,25 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
     return out
 
 
+def _distinct_corners(f: IntArray) -> BoolArray:
+    """Which faces have three distinct vertices (the others have no edges)."""
+    out: BoolArray = (f[:, 0] != f[:, 1]) & (f[:, 1] != f[:, 2]) & (f[:, 2] != f[:, 0])
+    return out
+
+
+def _next_corner(h: IntArray) -> IntArray:
+    """Return the next corner of the same face: half-edge ``h`` arrives at its vertex."""
+    out: IntArray = h - h % 3 + (h % 3 + 1) % 3
+    return out
+
+
+def _renumber(kept: IntArray, n: int) -> IntArray:
+    """Give the ``kept`` items of ``0..n-1`` the numbers 0, 1, 2, …, and the others -1."""
+    index = np.full(n, -1, dtype=np.intp)
+    index[kept] = np.arange(kept.size)
+    return index
+
+
 @dataclass(frozen=True)
 class _HalfEdges:
     """Every edge walk of every face with three distinct vertices, grouped by edge.
@@ -109,7 +128,7 @@ class _HalfEdges:
     @classmethod
     def of(cls, faces: IntArray) -> _HalfEdges:
         f = faces
-        clean = (f[:, 0] != f[:, 1]) & (f[:, 1] != f[:, 2]) & (f[:, 2] != f[:, 0])
+        clean = _distinct_corners(f)
         h = np.flatnonzero(np.repeat(clean, 3))
         a = f.ravel()[h]
         b = f[:, [1, 2, 0]].ravel()[h]
@@ -132,15 +151,18 @@ class _HalfEdges:
 
     def end(self, h: IntArray) -> IntArray:
         """Return the vertex each half-edge arrives at."""
-        out: IntArray = self.faces.ravel()[h - h % 3 + (h % 3 + 1) % 3]
+        out: IntArray = self.faces.ravel()[_next_corner(h)]
+        return out
+
+    def undirected(self, h: IntArray) -> IntArray:
+        """Return the edges of half-edges ``h`` as (smaller, larger) vertex pairs, shape (k, 2)."""
+        a, b = self.start(h), self.end(h)
+        out: IntArray = np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1).reshape(-1, 2)
         return out
 
     def edge_vertices(self, groups: IntArray) -> IntArray:
         """Return the edges of the given groups as sorted vertex pairs, shape (k, 2)."""
-        h = self.order[self.starts[groups]]
-        a, b = self.start(h), self.end(h)
-        out: IntArray = np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1).reshape(-1, 2)
-        return out
+        return self.undirected(self.order[self.starts[groups]])
 
     def pairs(self, groups: IntArray) -> tuple[IntArray, IntArray]:
         """Neighbouring half-edges within each given group: each joins the next in its group."""
@@ -158,22 +180,24 @@ class _HalfEdges:
         return self.order[g], self.order[g + 1]
 
     @cached_property
+    def shared_pairs(self) -> tuple[IntArray, IntArray]:
+        """Neighbouring half-edges of every edge shared by two faces or more (`pairs`)."""
+        return self.pairs(np.flatnonzero(self.counts >= 2))
+
+    @cached_property
     def face_components(self) -> IntArray:
         """Pieces of faces joined through shared edges; faces left out get -1."""
         nf = self.faces.shape[0]
-        shared = np.flatnonzero(self.counts >= 2)
-        h1, h2 = self.pairs(shared)
+        h1, h2 = self.shared_pairs
         label = np.full(nf, -1, dtype=np.intp)
         kept = np.flatnonzero(self.clean)
-        index = np.full(nf, -1, dtype=np.intp)
-        index[kept] = np.arange(kept.size)
+        index = _renumber(kept, nf)
         label[kept] = _components(kept.size, index[h1 // 3], index[h2 // 3])
         return label
 
     def corner_at(self, h: IntArray, vertex: IntArray) -> IntArray:
         """Return the corner (3 · face + position) of half-edge ``h``'s face at ``vertex``."""
-        nxt = h - h % 3 + (h % 3 + 1) % 3
-        out: IntArray = np.where(self.start(h) == vertex, h, nxt)
+        out: IntArray = np.where(self.start(h) == vertex, h, _next_corner(h))
         return out
 
 
@@ -205,7 +229,10 @@ def boundary_edges(faces: npt.ArrayLike) -> IntArray:
     >>> boundary_edges(cube()[1]).shape
     (0, 2)
     """
-    he = _half_edges(faces)
+    return _boundary_edges(_half_edges(faces))
+
+
+def _boundary_edges(he: _HalfEdges) -> IntArray:
     h = he.order[he.starts[he.counts == 1]]
     a, b = he.start(h), he.end(h)
     order = np.lexsort((b, a))
@@ -233,21 +260,22 @@ def non_manifold_edges(faces: npt.ArrayLike) -> IntArray:
     >>> non_manifold_edges([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
     array([[0, 1]])
     """
-    he = _half_edges(faces)
+    return _non_manifold_edges(_half_edges(faces))
+
+
+def _non_manifold_edges(he: _HalfEdges) -> IntArray:
     return he.edge_vertices(np.flatnonzero(he.counts >= 3))
 
 
 def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
     """Every vertex used by a face with three distinct vertices, and its number of fans."""
-    shared = np.flatnonzero(he.counts >= 2)
-    h1, h2 = he.pairs(shared)
+    h1, h2 = he.shared_pairs
     a, b = he.start(h1), he.end(h1)
     # the two faces meet at both ends of the edge: join their corners there
     c1 = np.concatenate([he.corner_at(h1, a), he.corner_at(h1, b)])
     c2 = np.concatenate([he.corner_at(h2, a), he.corner_at(h2, b)])
     corners = np.flatnonzero(np.repeat(he.clean, 3))
-    index = np.full(he.faces.size, -1, dtype=np.intp)
-    index[corners] = np.arange(corners.size)
+    index = _renumber(corners, he.faces.size)
     fan = _components(corners.size, index[c1], index[c2])
     vertex = he.faces.ravel()[corners]
     # a fan lies around one vertex: count the fans of each vertex
@@ -283,7 +311,11 @@ def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
     >>> non_manifold_vertices([[0, 1, 2], [0, 2, 3]])
     array([], dtype=int64)
     """
-    verts, fans = _fans(_half_edges(faces))
+    return _non_manifold_vertices(_half_edges(faces))
+
+
+def _non_manifold_vertices(he: _HalfEdges) -> IntArray:
+    verts, fans = _fans(he)
     out: IntArray = verts[fans > 1]
     return out
 
@@ -343,8 +375,7 @@ def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
 
 
 def _duplicates(f: IntArray) -> tuple[IntArray, IntArray]:
-    a, b, c = f[:, 0], f[:, 1], f[:, 2]
-    clean = np.flatnonzero((a != b) & (b != c) & (c != a))
+    clean = np.flatnonzero(_distinct_corners(f))
     s = np.sort(f[clean], axis=1)
     fc = f[clean]
     even = (
