@@ -41,14 +41,8 @@ The promises, for every normal computed here:
   input is computed and returned in float64.
 * Bad input raises a `ValueError` that names the first bad row.
 
-Speed comes from plain numpy: the corners are gathered block by block,
-16 384 faces at a time, so that every temporary stays in the CPU cache, and
-every operation writes in place. There is no Python loop over faces (only over
-blocks of them). A mesh of more than 114 688 faces (eight blocks) is shared
-among up to four threads, one per core; while they run, the interpreter's
-switch interval (`sys.setswitchinterval`) is at most 100 µs, so they hand its
-lock to each other without sleeping, and it is put back as it was when they
-finish.
+Speed comes from plain numpy: there is no Python loop over faces, only over
+blocks of them; `trinormal.mesh.normals` says how a mesh is split into blocks.
 
 Examples
 --------
