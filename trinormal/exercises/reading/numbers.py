@@ -15,6 +15,7 @@ __all__ = ["DEGREE_SIGNS", "Number", "is_exact", "looks_like_number", "module_of
 #: A number read from an answer: a ``Fraction`` when exact, a ``float`` otherwise.
 Number = Fraction | float
 
+#: What may end a text answer in degrees (``"19.5°"``), where the exercise asks for degrees.
 DEGREE_SIGNS = ("°", "º", "˚", "degrees", "degree", "deg")
 
 
@@ -29,7 +30,8 @@ def read_number(x: Any, *, degrees: bool = False) -> Number:
     Parameters
     ----------
     x : object
-        Any object; see the module's rules for what reads as a number.
+        Any object; see the rules of ``trinormal.exercises.reading`` for what
+        reads as a number.
     degrees : bool, default False
         Accept a trailing degree sign in text (``"19.5°"``): the exercise
         asks for an angle in degrees.
