@@ -841,7 +841,7 @@ def test_negative_tolerance_is_refused():
 
 
 def test_notebook_modules_read_answers_only_with_the_shared_reader():
-    """No exercise parses an answer its own way: reading.py and judging.py hold the rules."""
+    """No exercise parses an answer its own way: reading/ and judging.py hold the rules."""
     ad_hoc = (
         "parse_expr",
         "sympify(",

@@ -61,6 +61,11 @@ __all__ = [
     "steps_latex",
 ]
 
+#: A vertex, as `trinormal.triangle_normal` reads it.
+Vertex = Iterable[Any]
+#: A degeneracy threshold, as `trinormal.triangle_normal` reads it.
+Tolerance = float | int | Fraction | str
+
 #: The guide's symbols for the vertices: (x1, y1, z1), (x2, y2, z2), (x3, y3, z3).
 POINT_SYMBOLS: tuple[tuple[sp.Symbol, sp.Symbol, sp.Symbol], ...] = tuple(
     tuple(sp.symbols(f"x{i} y{i} z{i}", real=True)) for i in (1, 2, 3)
@@ -374,11 +379,7 @@ def _three(xs: Iterable[sp.Expr]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
 
 
 def solution(
-    a: Iterable[Any],
-    b: Iterable[Any],
-    c: Iterable[Any],
-    winding: Winding | str = "ABC",
-    tol: float | int | Fraction | str = DEFAULT_TOL,
+    a: Vertex, b: Vertex, c: Vertex, winding: Winding | str = "ABC", tol: Tolerance = DEFAULT_TOL
 ) -> Solution:
     """Compute every value of the worked solution exactly, with sympy.
 
@@ -446,11 +447,7 @@ def _times_root(q: sp.Rational, root: sp.Expr) -> sp.Expr:
 
 
 def steps(
-    a: Iterable[Any],
-    b: Iterable[Any],
-    c: Iterable[Any],
-    winding: Winding | str = "ABC",
-    tol: float | int | Fraction | str = DEFAULT_TOL,
+    a: Vertex, b: Vertex, c: Vertex, winding: Winding | str = "ABC", tol: Tolerance = DEFAULT_TOL
 ) -> list[Step]:
     r"""Work the solution for three points step by step, in exact arithmetic.
 

@@ -28,9 +28,10 @@ Examples
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TypeVar
 
 from trinormal.display import format_number
 from trinormal.exercises.reading import Number
@@ -50,6 +51,11 @@ __all__ = [
 ROUNDING_PRECISION = Fraction(1, 200)
 #: An answer to an exact exercise this close (relative) is told it is close but not exact.
 NEAR_EXACT = Fraction(1, 10**6)
+#: What such an answer is told.
+NOT_EXACT = "Very close, but not exactly right: this exercise wants the exact value."
+
+#: An answer as judged: one number, or a vector of them.
+Answer = TypeVar("Answer", Number, Sequence[Number])
 
 
 @dataclass(frozen=True)
@@ -224,20 +230,37 @@ def judge_number(
     >>> judge_number(0.71, 0.7071068, 1e-3).hint  # doctest: +ELLIPSIS
     'Your answer looks like the right value rounded to 2 decimals...'
     """
-    if same_number(got, want, tol):
-        return Verdict(True)
-    for value, text in mistakes:
-        if _near_mistake(got, value, tol):
-            return Verdict(False, text)
+    known = _right_or_listed(got, want, tol, mistakes, same_number, _near_mistake)
+    if known is not None:
+        return known
     if want != 0 and same_number(-_q(got), want, tol):
         return Verdict(False, "Wrong sign.")
     if tol is not None and is_rounding(got, want, fine=False):
         return Verdict(False, _rounded_hint(got, tol, "number"))
     if tol is None and want != 0 and abs(_q(got) - _q(want)) <= NEAR_EXACT * abs(_q(want)):
-        return Verdict(
-            False, "Very close, but not exactly right: this exercise wants the exact value."
-        )
+        return Verdict(False, NOT_EXACT)
     return Verdict(False, hint)
+
+
+def _right_or_listed(
+    got: Answer,
+    want: Answer,
+    tol: float | None,
+    mistakes: Sequence[tuple[Answer, str]],
+    same: Callable[[Answer, Answer, float | None], bool],
+    near: Callable[[Answer, Answer, float | None], bool],
+) -> Verdict | None:
+    """Return the verdict on a right answer or on a listed mistake; None for any other answer.
+
+    ``same`` says whether an answer counts as the solution, ``near`` whether it is
+    a mistake (equal to it or rounded from it): the first listed one it is gets its hint.
+    """
+    if same(got, want, tol):
+        return Verdict(True)
+    for value, text in mistakes:
+        if near(got, value, tol):
+            return Verdict(False, text)
+    return None
 
 
 def _rounded_hint(got: Number, tol: float, kind: str) -> str:
@@ -286,11 +309,9 @@ def judge_vector(
     >>> judge_vector([0, 0, 2], want, None).hint
     'Right direction, wrong length.'
     """
-    if same_vector(got, want, tol):
-        return Verdict(True)
-    for value, text in mistakes:
-        if _near_mistake_vector(got, value, tol):
-            return Verdict(False, text)
+    known = _right_or_listed(got, want, tol, mistakes, same_vector, _near_mistake_vector)
+    if known is not None:
+        return known
     g, w = [_q(x) for x in got], [_q(x) for x in want]
     if any(w) and same_vector([-x for x in g], w, tol):
         return Verdict(False, "Your vector points the opposite way.")
@@ -315,9 +336,7 @@ def judge_vector(
     if tol is None and any(w):
         err = sum(((a - b) ** 2 for a, b in zip(g, w, strict=True)), Fraction(0))
         if err <= NEAR_EXACT**2 * _dot(w, w):
-            return Verdict(
-                False, "Very close, but not exactly right: this exercise wants the exact value."
-            )
+            return Verdict(False, NOT_EXACT)
     return Verdict(False, hint)
 
 

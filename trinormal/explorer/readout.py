@@ -78,10 +78,8 @@ def readout_html(result: TriangleNormal, precision: int) -> str:
 
     Parameters
     ----------
-    result : TriangleNormal
-        The computed triangle.
-    precision : int
-        Decimal places, 0 to 15.
+    result, precision
+        As for `readout_rows`.
 
     Returns
     -------

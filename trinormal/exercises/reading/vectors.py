@@ -1,0 +1,255 @@
+"""Reading vectors and lists of points (or of faces): tuples, arrays, matrices, text."""
+
+from __future__ import annotations
+
+import itertools
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+from trinormal.exercises.reading.errors import AnswerError, check_count, describe, guarded
+from trinormal.exercises.reading.numbers import Number, looks_like_number, module_of, read_number
+from trinormal.exercises.reading.text import plain_text
+
+__all__ = ["FACES", "POINTS", "Items", "read_points", "read_vector"]
+
+AXIS_NAMES = ("x", "y", "z")
+
+
+def _sized(kind: str, size: int) -> str:
+    return f"{size} numbers (x, y, z)" if size == 3 else f"{size} numbers"
+
+
+def _items(x: Any, size: int, what: str) -> list[Any]:
+    """Return the elements of a vector-like answer, before each is read as a number."""
+    if x is None:
+        raise AnswerError(f"None is not {what}")
+    if isinstance(x, str):
+        return _text_items(x)
+    if isinstance(x, bytes | bytearray | memoryview):
+        raise AnswerError(f"bytes are not {what}")
+    if isinstance(x, dict):
+        raise AnswerError(f"a dict is not {what}: write it as a tuple")
+    if isinstance(x, set | frozenset):
+        raise AnswerError(f"a set has no order, so it is not {what}: write it as a tuple")
+    module = module_of(x)
+    if module.startswith("numpy"):
+        import numpy as np
+
+        if isinstance(x, np.ndarray):
+            if x.ndim == 0:
+                raise AnswerError(f"expected {what}, got one number")
+            if x.ndim == 2 and 1 in x.shape:
+                return list(x.reshape(-1))
+            if x.ndim != 1:
+                raise AnswerError(f"expected {what}, got an array of shape {x.shape}")
+            return list(x)
+        raise AnswerError(f"expected {what}, got one number")
+    if module.startswith("sympy"):
+        if getattr(x, "is_Matrix", False):
+            rows, cols = x.shape
+            if rows == 1 or cols == 1:
+                return list(x)
+            raise AnswerError(f"expected {what}, got a {rows} × {cols} matrix")
+        raise AnswerError(f"expected {what}, got one value")
+    if isinstance(x, int | float | complex | Fraction) or looks_like_number(x):
+        raise AnswerError(f"expected {what}, got one number")
+    if not isinstance(x, Iterable) and not hasattr(x, "__getitem__"):
+        raise AnswerError(f"expected {what}, got {describe(x)}")
+    items = list(itertools.islice(iter(x), size + 1))  # a generator may never end
+    return items
+
+
+_BRACKETS = "()[]{}⟨⟩"
+
+
+def _text_items(text: str) -> list[str]:
+    s = plain_text(text).strip()
+    while len(s) >= 2 and s[0] in "([{⟨" and s[-1] in ")]}⟩":
+        s = s[1:-1].strip()
+    if not s:
+        return []
+    if any(b in s for b in _BRACKETS) and "," not in s:
+        return [s]
+    parts = [p.strip() for p in s.split(",")] if "," in s else s.split()
+    return parts
+
+
+def read_vector(x: Any, size: int = 3, *, degrees: bool = False) -> list[Number]:
+    """Read a vector of ``size`` numbers.
+
+    Parameters
+    ----------
+    x : object
+        A tuple, list, generator, numpy array (``(3,)``, ``(3, 1)`` or
+        ``(1, 3)``), row or column sympy matrix, or text such as ``"(1, 0, 2)"``.
+    size : int, default 3
+        How many numbers.
+    degrees : bool, default False
+        Passed on to `read_number` for each component.
+
+    Returns
+    -------
+    list of Fraction or float
+
+    Raises
+    ------
+    AnswerError
+        Naming the component that cannot be read, or saying how many there are.
+
+    Examples
+    --------
+    >>> read_vector(("2/7", 0, "-1.5"))
+    [Fraction(2, 7), Fraction(0, 1), Fraction(-3, 2)]
+    >>> read_vector([1, 2])
+    Traceback (most recent call last):
+    ...
+    trinormal.exercises.reading.errors.AnswerError: expected 3 numbers (x, y, z), got 2
+    """
+    what = _sized("vector", size)
+    items = guarded(lambda: _vector_items(x, size, what), x, what)
+    check_count(items, size, f"expected {what}")
+    out = []
+    for i, item in enumerate(items):
+        name = AXIS_NAMES[i] if size == 3 else str(i + 1)
+        try:
+            out.append(read_number(item, degrees=degrees))
+        except AnswerError as exc:
+            raise AnswerError(f"{name}: {exc}") from None
+    return out
+
+
+def _vector_items(x: Any, size: int, what: str) -> list[Any]:
+    """Return the elements of a vector, also of one given as a row inside a list."""
+    items = _items(x, size, what)
+    if len(items) == 1 and size != 1 and not isinstance(x, str):
+        inner = items[0]  # [[1, 2, 3]]: a row inside a list
+        if not isinstance(inner, str) and _length(inner) == size:
+            items = _items(inner, size, what)
+    return items
+
+
+def _length(x: Any) -> int:
+    try:
+        return len(x)
+    except Exception:
+        return -1
+
+
+@dataclass(frozen=True)
+class Items:
+    """What the triples of an answer are, as `read_points` names them in its messages."""
+
+    one: str
+    many: str
+    #: after the count: "4 points (x, y, z)"
+    parts: str
+    #: one of them in brackets, as text answers write them
+    bracketed: str
+    #: what the three numbers of one are: "(x, y, z)"
+    inner: str
+    #: whether their order matters (a set of them is an answer only when it does not)
+    ordered: bool = True
+
+
+#: Points (x, y, z): `read_points`'s default.
+POINTS = Items("point", "points", "(x, y, z)", "(x, y, z)", "(x, y, z)")
+#: Faces of a mesh, three vertex numbers each, in any order (a set of them is read too).
+FACES = Items(
+    "face", "faces", "of 3 vertex numbers", "(a, b, c)", "(its corners' vertex numbers)", False
+)
+
+
+def read_points(
+    answer: Any, count: int, *, items: Items = POINTS
+) -> list[tuple[Number, Number, Number]]:
+    """Read ``count`` points (x, y, z), or other triples ``items`` names.
+
+    Parameters
+    ----------
+    answer : object
+        A sequence of points, an ``(count, 3)`` array or sympy matrix, a dict
+        keyed ``"A"``, ``"B"``, ``"C"``, or text such as ``"(0,0,1), (1,0,1), (0,1,1)"``.
+    count : int
+        How many points.
+    items : Items, default POINTS
+        What the triples are, for the messages: points (x, y, z), or `FACES`
+        (three vertex numbers each).
+
+    Returns
+    -------
+    list of tuple
+
+    Raises
+    ------
+    AnswerError
+        Naming the point that cannot be read, or the wrong count.
+
+    Examples
+    --------
+    >>> read_points([(0, 0, 2), ("3/4", 0, 2)], 2)[1]
+    (Fraction(3, 4), Fraction(0, 1), Fraction(2, 1))
+    >>> read_points({"A": (0, 0, 0), "B": (1, 0, 0), "C": (0, 5, 0)}, 3)[2]
+    (Fraction(0, 1), Fraction(5, 1), Fraction(0, 1))
+    >>> read_points([(0, 1, 2)], 2, items=FACES)
+    Traceback (most recent call last):
+    ...
+    trinormal.exercises.reading.errors.AnswerError: give 2 faces of 3 vertex numbers, got 1
+    """
+    labels = "ABC" if count == 3 and items is POINTS else [str(i + 1) for i in range(count)]
+    want = f"{count} {items.one if count == 1 else items.many} {items.parts}"
+    items_read = guarded(lambda: _point_items(answer, count, want, labels, items), answer, want)
+    check_count(items_read, count, f"give {want}")
+    points = []
+    for label, p in zip(labels, items_read, strict=True):
+        try:
+            x, y, z = read_vector(p)
+        except AnswerError as exc:
+            told = str(exc).replace("(x, y, z)", items.inner)
+            raise AnswerError(f"{items.one} {label}: {told}") from None
+        points.append((x, y, z))
+    return points
+
+
+_GROUP = re.compile(r"[(\[]([^()\[\]]*)[)\]]")
+
+
+def _point_items(answer: Any, count: int, want: str, labels: Any, kind: Items) -> list[Any]:
+    if answer is None or answer is Ellipsis:
+        raise AnswerError(f"give {want}")
+    if isinstance(answer, str):
+        groups = _GROUP.findall(answer)
+        if not groups:
+            raise AnswerError(f"give {want}, each in brackets: {kind.bracketed}")
+        return groups
+    if isinstance(answer, dict):
+        keys = {str(k).strip().upper(): v for k, v in answer.items()}
+        if set(keys) == set(labels):
+            return [keys[k] for k in labels]
+        raise AnswerError(f"a dict of {kind.many} needs the keys {', '.join(labels)}")
+    if isinstance(answer, set | frozenset) and not kind.ordered:
+        return list(itertools.islice(iter(answer), count + 1))
+    if isinstance(answer, set | frozenset):
+        raise AnswerError(
+            f"a set has no order, and the order of the {kind.many} matters: give {want}"
+        )
+    if isinstance(answer, bytes | bytearray | memoryview):
+        raise AnswerError(f"bytes are not {kind.many}: give {want}")
+    module = module_of(answer)
+    if module.startswith("numpy"):
+        import numpy as np
+
+        if isinstance(answer, np.ndarray) and answer.ndim == 2 and answer.shape[1] == 3:
+            return list(answer)
+        raise AnswerError(f"give {want}; an array of them has shape ({count}, 3)")
+    if module.startswith("sympy"):
+        if getattr(answer, "is_Matrix", False) and answer.shape[1] == 3:
+            return [answer.row(i) for i in range(answer.shape[0])]
+        raise AnswerError(f"give {want}; a matrix of them has {count} rows of 3")
+    if isinstance(answer, int | float | complex | Fraction) or looks_like_number(answer):
+        raise AnswerError(f"give {want}, not one number")
+    if not isinstance(answer, Iterable):
+        raise AnswerError(f"give {want}, not {describe(answer)}")
+    return list(itertools.islice(iter(answer), count + 1))
