@@ -6,7 +6,7 @@ examples, and files written here from small models in every format and encoding 
 reads (OBJ, ASCII STL, binary STL, PLY ASCII, binary little endian and big endian), with
 flipped patches, inside-out pieces, holes, fins, pinch points, degenerate, duplicate and
 reversed faces, polygons, extreme scales and files that cannot be read (one at least for each
-reason of `trinormal.mesh.io.READ_ERRORS`).
+reason of `trinormal.mesh.io.READ_ERRORS`), and small files with random edits.
 
 `outcome(name, data)` is what Python makes of a file, as the page shows it: the report
 (``check(...).to_dict()``), its sentences, the format, and the repaired file (`fix_winding`,
@@ -17,6 +17,7 @@ then `write_mesh` in the same format and encoding); or the sentence of the error
 from __future__ import annotations
 
 import math
+import random
 import struct
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -436,6 +437,33 @@ def unreadable() -> Iterator[tuple[str, bytes]]:
                                 "binary_little_endian")  # fmt: skip
     yield "binary-range.ply", ply(np.eye(3), [[0, 1, 2], [0, 1, 7]], "binary_big_endian")
     yield "good-after-bad-name.ply", _ply_text(_GOOD_PLY_BODY)
+    huge = "element vertex 99999999999999999999\nproperty float x\nproperty float y\nproperty float z\n"
+    yield "huge-count.ply", _ply_text("0 0 0\n", _PLY_HEAD + huge + "end_header\n")
+    yield (
+        "huge-count-binary.ply",
+        ("ply\nformat binary_big_endian 1.0\n" + huge + "end_header\n").encode(),
+    )
+    yield "zero-count.ply", _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "003") + "element face 01\n"
+        "property list uchar int vertex_indices\nend_header\n")  # fmt: skip
+
+
+def damaged(rng: random.Random, data: bytes) -> bytes:
+    """A file with a few random edits: bytes inserted, deleted or changed, or the end cut off."""
+    words = [b"nan", b"inf", b"1_0", b"-0", b"x", b"#", b"\\", b"f", b"vt", b"endloop", b"3"]
+    words += [b"-1", b"1e400", b"\n", b"\r\n", b"\0", b"element", b"end_header", b"99", b"\xff"]
+    words += ["\u0661".encode(), b"\x85", b"solid", b"property list uchar int"]
+    out = bytearray(data)
+    for _ in range(rng.randint(1, 3)):
+        i, op = rng.randrange(len(out) + 1), rng.random()
+        if op < 0.35:
+            out[i:i] = rng.choice(words)
+        elif op < 0.6:
+            del out[i : i + rng.randint(1, 8)]
+        elif op < 0.75:
+            del out[i:]
+        elif out:
+            out[min(i, len(out) - 1)] = rng.randrange(256)
+    return bytes(out)
 
 
 def corpus() -> list[tuple[str, bytes]]:
@@ -446,6 +474,11 @@ def corpus() -> list[tuple[str, bytes]]:
         files += every_encoding(name, model)
     files += variants()
     files += unreadable()
+    rng = random.Random(31)  # seeded: the same damaged files every run
+    small = [(n, d) for n, d in files if 0 < len(d) < 4000 and "." in n[1:]]
+    for k in range(400):
+        name, data = rng.choice(small)
+        files.append((f"damaged{k}-{name}", damaged(rng, data)))
     names = [n for n, _ in files]
     assert len(set(names)) == len(names), "two corpus files share a name"
     return files

@@ -286,7 +286,9 @@
         fmt = toks[1];
       } else if (toks[0] === "element") {
         if (toks.length !== 3 || !/^[0-9]+$/.test(toks[2])) fileError(name, lineno, "ply_element", {});
-        elements.push({ name: toks[1], count: parseInt(toks[2], 10), props: [], line: lineno });
+        // `rows` as written, exact (a BigInt when huge) for messages; `count` for arithmetic
+        var rows = pyInt(toks[2]);
+        elements.push({ name: toks[1], count: Number(rows), rows: rows, props: [], line: lineno });
       } else if (toks[0] === "property") {
         if (!elements.length) fileError(name, lineno, "ply_property_first", {});
         var el = elements[elements.length - 1];
@@ -317,7 +319,7 @@
     elements.forEach(function (e) {
       if (!face && e.name === "face") face = e;
     });
-    if (face) I.checkFaceCount(name, face.count);
+    if (face) I.checkFaceCount(name, face.rows);
     var values =
       fmt === "ascii"
         ? plyAscii(bytes, bodyStart, header.length + 2, elements, name, progress)
@@ -371,7 +373,7 @@
     elements.forEach(function (el) {
       if (pos + el.count > lines.length) {
         fileError(name, firstLine + lines.length - 1, "ply_ascii_short", {
-          rows: Math.max(lines.length - pos, 0), count: el.count, element: el.name,
+          rows: Math.max(lines.length - pos, 0), count: el.rows, element: el.name,
         });
       }
       if (el.name !== "vertex" && el.name !== "face") {
@@ -456,7 +458,7 @@
         el.props.forEach(function (p) { item += p.type[1]; });
         if (pos + item * el.count > size) {
           fileError(name, null, "ply_binary_short", {
-            element: el.name, rows: Math.floor((size - pos) / Math.max(item, 1)), count: el.count,
+            element: el.name, rows: Math.floor((size - pos) / Math.max(item, 1)), count: el.rows,
           });
         }
         if (el.name === "vertex" || el.name === "face") {
@@ -482,13 +484,13 @@
           var p2 = el.props[pi];
           if (p2.count === null) {
             pos += p2.type[1];
-            if (pos > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.count });
+            if (pos > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
             continue;
           }
-          if (pos + p2.count[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.count });
+          if (pos + p2.count[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
           var n = view["get" + p2.count[0]](pos, little);
           pos += p2.count[1];
-          if (n < 0 || pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.count });
+          if (n < 0 || pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
           if (p2.name === want) {
             var items = new Array(n);
             var getter2 = "get" + p2.type[0];
