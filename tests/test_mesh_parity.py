@@ -16,7 +16,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
 from mesh_corpus import corpus, outcome
 
 from trinormal.mesh.io import READ_ERRORS
@@ -32,10 +31,8 @@ def _node() -> str:
     return path
 
 
-@pytest.fixture(scope="module")
-def written(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[dict]]:
-    """The corpus on disk with Python's outcomes: the folder and its manifest."""
-    folder = tmp_path_factory.mktemp("mesh_corpus")
+def write_corpus(folder: Path) -> list[dict]:
+    """The corpus on disk with Python's outcomes; its manifest."""
     manifest = []
     for i, (name, data) in enumerate(corpus()):
         (folder / f"{i}.in").write_bytes(data)
@@ -46,12 +43,11 @@ def written(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[dict]]
             entry["repaired"] = repaired.name
         manifest.append(entry)
     (folder / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
-    return folder, manifest
+    return manifest
 
 
-def test_the_corpus_holds_every_kind_of_file(written):
+def assert_every_kind_of_file(manifest: list[dict]) -> None:
     """Enough files of each format and encoding, fixable ones, and every reason for refusal."""
-    _, manifest = written
     read = [e["expected"] for e in manifest if "error" not in e["expected"]]
     kinds = {(r["format"], r["binary"]) for r in read}
     assert kinds == {("obj", False), ("stl", False), ("stl", True), ("ply", False), ("ply", True)}
@@ -66,8 +62,12 @@ def test_the_corpus_holds_every_kind_of_file(written):
     assert "no_faces" in refused
 
 
-def test_the_page_gives_pythons_answer_and_file_for_every_corpus_file(written, tmp_path):
-    folder, manifest = written
+def test_the_page_gives_pythons_answer_and_file_for_every_corpus_file(tmp_path):
+    """One Node run for the whole corpus (which must hold every kind of file): no difference."""
+    folder = tmp_path / "corpus"
+    folder.mkdir()
+    manifest = write_corpus(folder)
+    assert_every_kind_of_file(manifest)
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps(trinormal_site.site_constants()), encoding="utf-8")
     run = subprocess.run(
