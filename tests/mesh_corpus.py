@@ -327,6 +327,29 @@ def variants() -> Iterator[tuple[str, bytes]]:
     yield "ints.ply", ply(v.astype(int), polys, "binary_little_endian", "int")
     yield "no-faces.ply", ply(v, [])
     yield "UPPER.OBJ", obj(v, polys)
+    yield "slash-back.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf -3/-1 -2/-1/-1 -1//1\n"
+    yield "only-vertices.obj", b"v 0 0 0\nv 1 0 0\n"
+    two = stl_ascii(v, polys[:6]) + stl_ascii(v, polys[6:]).replace(b"model", b"second")
+    yield "two-solids.stl", two
+    yield (
+        "bare-facets.stl",
+        b"solid\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n",
+    )
+    face_first = (
+        "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float texcoord\n"
+        "property list uchar int vertex_indices\n" + _XYZ + "end_header\n"
+        "2 0.5 0.5 3 0 1 2\n0 0 0\n1 0 0\n0 1 0\n"
+    )
+    yield "face-first.ply", face_first.encode()
+    head = face_first[: face_first.index("2 0.5")].replace("ascii", "binary_little_endian")
+    body = struct.pack("<B2fB3i", 2, 0.5, 0.5, 3, 0, 1, 2) + struct.pack(
+        "<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0
+    )
+    yield "face-first-binary.ply", head.encode() + body
+    rows = struct.pack("<b3i", 3, 0, 1, 2) + struct.pack("<b3i", -1, 0, 1, 2)
+    negative = ply(np.eye(3), [], "binary_little_endian", "double", "char", "int")
+    yield "negative-count.ply", negative.replace(b"face 0", b"face 2") + rows
+    yield "zero-corners.ply", ply(np.eye(3), [[0, 1, 2], []], "binary_little_endian")
 
 
 # --------------------------------------------------------------------------- unreadable files
