@@ -1,6 +1,6 @@
 """The "Check a mesh" page's constants: defined once in Python, complete, and all used.
 
-The page's JavaScript (``docs/assets/javascripts/trinormal-mesh.js``, ``mesh-page.js``) names
+The page's JavaScript (``docs/assets/javascripts/trinormal-mesh-*.js``, ``mesh-page.js``) names
 no sentence, limit or report row of its own: it reads them from ``trinormal.mesh_page`` through
 the constants file the site build writes. These tests check that every message key the
 JavaScript asks for exists here and that every one defined here is used, that the examples
@@ -33,8 +33,9 @@ _KEY = re.compile(r'\b(?:message|fail)\(\s*"(\w+)"|fileError\([^,]+,[^,]+,\s*"(\
 
 def js_message_keys() -> set[str]:
     keys = set()
-    for name in ("trinormal-mesh.js", "mesh-page.js", "mesh-worker.js"):
-        for m in _KEY.finditer((JS / name).read_text(encoding="utf-8")):
+    scripts = [*sorted(JS.glob("trinormal-mesh-*.js")), JS / "mesh-page.js", JS / "mesh-worker.js"]
+    for path in scripts:
+        for m in _KEY.finditer(path.read_text(encoding="utf-8")):
             keys.add(m.group(1) or m.group(2))
     return keys
 

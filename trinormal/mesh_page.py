@@ -1,7 +1,7 @@
 """What the site's "Check a mesh" page says and allows, defined once here.
 
 The page reads, checks and repairs a mesh file in the browser
-(``docs/assets/javascripts/trinormal-mesh.js``, run in a Web Worker). Its
+(``docs/assets/javascripts/trinormal-mesh-*.js``, run in a Web Worker). Its
 messages, its limits, the rows of its report and the degeneracy tolerance are
 not written in JavaScript: the site build (``docs/hooks/trinormal_site.py``)
 puts `site_constants()` into ``trinormal-constants.js``.
@@ -50,7 +50,7 @@ def file_size(n: int) -> str:
     """Write a file's size as the page does: megabytes (10**6 bytes), rounded up to a tenth.
 
     Rounded up, so a file over the limit never reads as the limit itself. The page's
-    JavaScript (``fileSize`` in ``trinormal-mesh.js``) follows the same rule; the browser
+    JavaScript (``fileSize`` in ``trinormal-mesh-base.js``) follows the same rule; the browser
     tests compare the two.
 
     Examples

@@ -1,7 +1,7 @@
 """The "Check a mesh" page in Chromium: the same report as Python, a repair that holds, no upload.
 
-* The reader and the check (``docs/assets/javascripts/trinormal-mesh.js``, the very file the page
-  and its worker load) run on every mesh file of ``tests/data/meshes/`` and on the page's
+* The reader and the check (``docs/assets/javascripts/trinormal-mesh-*.js``, the very files the
+  page and its worker load) run on every mesh file of ``tests/data/meshes/`` and on the page's
   examples in a blank page, after the constants the site build writes; each report must equal
   Python's ``trinormal.mesh.check(*read(file)).to_dict()`` computed here, and its sentences
   Python's ``summary()``.
@@ -28,7 +28,11 @@ from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
 
-MESH_JS = ROOT / "docs/assets/javascripts/trinormal-mesh.js"
+#: The mesh scripts in the order the page and its worker load them.
+MESH_JS = [
+    ROOT / "docs/assets/javascripts" / f"trinormal-mesh-{part}.js"
+    for part in ("base", "read", "check", "write")
+]
 MESHES = ROOT / "tests/data/meshes"
 
 #: Run the reader and the check on one file's bytes (base64) in the page; a MeshError's message.
@@ -88,7 +92,8 @@ def assert_same(files: list[tuple[str, bytes]], got: list[dict]) -> None:
 def blank(page):
     page.set_content("<!doctype html><html><body></body></html>")
     page.add_script_tag(content=trinormal_site.constants_js())
-    page.add_script_tag(path=str(MESH_JS))
+    for path in MESH_JS:
+        page.add_script_tag(path=str(path))
     return page
 
 

@@ -1,6 +1,6 @@
 /*
  * The "Check a mesh" page: choose or drop an OBJ, STL or PLY file, or an example; a Web Worker
- * (mesh-worker.js, running trinormal-mesh.js) reads it, checks it and fixes its winding, with a
+ * (mesh-worker.js, running trinormal-mesh-*.js) reads it, checks it and fixes its winding, with a
  * progress bar; the page shows the report (rows and sentences from the package, through
  * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view of assets/explorer/explorer.js) and offers the
  * repaired file for download. A face picked in the view (a click, or its number typed) is

@@ -10,7 +10,13 @@
  */
 /* global importScripts, TrinormalMesh */
 self.window = self; // trinormal-constants.js sets window.TRINORMAL_CONSTANTS
-importScripts("trinormal-constants.js", "trinormal-mesh.js");
+importScripts(
+  "trinormal-constants.js",
+  "trinormal-mesh-base.js",
+  "trinormal-mesh-read.js",
+  "trinormal-mesh-check.js",
+  "trinormal-mesh-write.js"
+);
 
 let current = null; // {mesh, faces, report}
 

@@ -1,0 +1,660 @@
+/*
+ * trinormal's mesh check in the browser, part 3 of 4: the report. The same keys and values
+ * as Python's trinormal.mesh.check(vertices, faces).to_dict(), computed the same way
+ * (trinormal/mesh/report.py, topology.py, repair.py, normals.py), and its sentences.
+ * Loaded after trinormal-mesh-read.js; see trinormal-mesh-base.js for how the parts fit.
+ */
+(function (root, factory) {
+  "use strict";
+  if (typeof module === "object" && module.exports) module.exports = factory;
+  else root.TrinormalMesh = factory(root.TrinormalMesh);
+})(typeof self !== "undefined" ? self : this, function (base) {
+  "use strict";
+
+  if (!base || !base.read) throw new Error("trinormal-mesh-check.js needs trinormal-mesh-read.js to be loaded first");
+  var I = base.internal;
+  var MESH = I.MESH;
+  var TOL = MESH.tol;
+  var Growable = I.Growable;
+
+  // ------------------------------------------------------------------ each face: normal and degeneracy
+
+  // A face goes to the careful path unless |U|²|V|² < 2**900 and |N|² > 2**-900 (normals.py).
+  var TWO_900 = Math.pow(2, 900);
+  var TWO_M900 = Math.pow(2, -900);
+  var frexpBuf = new Float64Array(1);
+  var frexpU32 = new Uint32Array(frexpBuf.buffer);
+
+  /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
+  function frexpExp(x) {
+    if (x === 0 || !Number.isFinite(x)) return 0;
+    frexpBuf[0] = x;
+    var e = (frexpU32[1] >>> 20) & 0x7ff;
+    if (e === 0) {
+      // subnormal: scale up first
+      frexpBuf[0] = x * Math.pow(2, 64);
+      e = ((frexpU32[1] >>> 20) & 0x7ff) - 64;
+    }
+    return e - 1022;
+  }
+
+  /** x * 2**e, exact while the result is a normal number: the power split so no step overflows. */
+  function ldexp(x, e) {
+    while (e > 1000) { x *= Math.pow(2, 1000); e -= 1000; }
+    while (e < -1000) { x *= Math.pow(2, -1000); e += 1000; }
+    return x * Math.pow(2, e);
+  }
+
+  /** (x, y, z) scaled by 2**-e, e the frexp exponent of its largest magnitude: [x, y, z, e]. */
+  function scaled(x, y, z) {
+    var e = frexpExp(Math.max(Math.abs(x), Math.abs(y), Math.abs(z)));
+    return [ldexp(x, -e), ldexp(y, -e), ldexp(z, -e), e];
+  }
+
+  /**
+   * x·y of two rows as numpy's einsum("ij,ij->i") adds it in Python's careful path: two lanes
+   * at a time, so (x0 y0 + x2 y2) + x1 y1 (the fast path adds in order, as written here).
+   */
+  function einsumDot(x, y) {
+    return x[0] * y[0] + x[2] * y[2] + x[1] * y[1];
+  }
+
+  /**
+   * A face at an extreme scale (normals.py's _careful): its edges scaled by powers of two
+   * before the cross product (exact), halved first when their differences overflow. Writes
+   * its unit normal into normals[at..at+2] (when given); returns whether it is degenerate.
+   */
+  function careful(V, i0, i1, i2, tol2, normals, at) {
+    var u = [V[i1] - V[i0], V[i1 + 1] - V[i0 + 1], V[i1 + 2] - V[i0 + 2]];
+    var v = [V[i2] - V[i0], V[i2 + 1] - V[i0 + 1], V[i2 + 2] - V[i0 + 2]];
+    if (!u.concat(v).every(Number.isFinite)) {
+      for (var k = 0; k < 3; k++) {
+        u[k] = V[i1 + k] * 0.25 - V[i0 + k] * 0.25;
+        v[k] = V[i2 + k] * 0.25 - V[i0 + k] * 0.25;
+      }
+    }
+    u = scaled(u[0], u[1], u[2]);
+    v = scaled(v[0], v[1], v[2]);
+    var n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    var ns = scaled(n[0], n[1], n[2]);
+    var mag = Math.sqrt(einsumDot(ns, ns));
+    var deg = einsumDot(n, n) <= tol2 * einsumDot(u, u) * einsumDot(v, v) || mag === 0;
+    if (normals && !deg) {
+      normals[at] = ns[0] / mag;
+      normals[at + 1] = ns[1] / mag;
+      normals[at + 2] = ns[2] / mag;
+    }
+    return deg;
+  }
+
+  /**
+   * Every face's verdict: 0 proper, 1 two corners at one point, 2 degenerate otherwise (the
+   * sine of the angle between its edges is at most tol); and, when `normals` (3 numbers per
+   * face) is given, its unit normal there, zero when degenerate. The arithmetic of
+   * trinormal.mesh.normals: the same operations in the same order, so the same verdicts and
+   * the same bits of every normal.
+   */
+  function faceRows(vertices, faces, normals) {
+    var nf = faces.length / 3;
+    var kind = new Uint8Array(nf);
+    var tol2 = TOL * TOL;
+    var V = vertices;
+    for (var f = 0; f < nf; f++) {
+      var i0 = 3 * faces[3 * f], i1 = 3 * faces[3 * f + 1], i2 = 3 * faces[3 * f + 2];
+      var ax = V[i0], ay = V[i0 + 1], az = V[i0 + 2];
+      var bx = V[i1], by = V[i1 + 1], bz = V[i1 + 2];
+      var cx = V[i2], cy = V[i2 + 1], cz = V[i2 + 2];
+      if ((ax === bx && ay === by && az === bz) || (ax === cx && ay === cy && az === cz) || (bx === cx && by === cy && bz === cz)) {
+        kind[f] = 1;
+        continue;
+      }
+      var ux = bx - ax, uy = by - ay, uz = bz - az;
+      var vx = cx - ax, vy = cy - ay, vz = cz - az;
+      var nx = uy * vz - uz * vy;
+      var ny = uz * vx - ux * vz;
+      var nz = ux * vy - uy * vx;
+      var ss = nx * nx + ny * ny + nz * nz;
+      var d = ux * vx + uy * vy + uz * vz;
+      var q = d * d + ss; // |U|²|V|² (Lagrange)
+      if (!(q < TWO_900 && ss > TWO_M900)) {
+        if (careful(V, i0, i1, i2, tol2, normals, 3 * f)) kind[f] = 2;
+      } else if (ss <= q * tol2) {
+        kind[f] = 2;
+      } else if (normals) {
+        var m = Math.sqrt(ss); // N / |N|, correctly rounded, as Python divides
+        normals[3 * f] = nx / m;
+        normals[3 * f + 1] = ny / m;
+        normals[3 * f + 2] = nz / m;
+      }
+    }
+    return kind;
+  }
+
+  /** Which faces are degenerate: a Uint8Array, 0 proper, 1 coincident corners, 2 collinear. */
+  function degenerateFaces(vertices, faces) {
+    return faceRows(vertices, faces, null);
+  }
+
+  /** Unit normals, 3 per face, as trinormal.mesh.face_normals gives them (zero if degenerate). */
+  function faceNormals(vertices, faces) {
+    var out = new Float64Array(faces.length);
+    faceRows(vertices, faces, out);
+    return out;
+  }
+
+  // ------------------------------------------------------------------ edges and pieces
+
+  /**
+   * The edges of the mesh, grouped: for each vertex lo, the half-edges (lo, hi) with lo < hi,
+   * as compressed rows. A half-edge is a face side h = 3 * face + k, from corner k to corner
+   * k + 1. Only faces with three distinct vertex indices have edges (trinormal.mesh.topology).
+   */
+  function edgeTable(faces, nv, clean) {
+    var nf = faces.length / 3;
+    var start = new Int32Array(nv + 1);
+    var s, a, b;
+    for (s = 0; s < 3 * nf; s++) {
+      if (!clean[(s / 3) | 0]) continue;
+      a = faces[s];
+      b = faces[s % 3 === 2 ? s - 2 : s + 1];
+      start[(a < b ? a : b) + 1]++;
+    }
+    for (var v = 0; v < nv; v++) start[v + 1] += start[v];
+    var fill = start.slice(0, nv);
+    var hi = new Int32Array(start[nv]);
+    var side = new Int32Array(start[nv]);
+    for (s = 0; s < 3 * nf; s++) {
+      if (!clean[(s / 3) | 0]) continue;
+      a = faces[s];
+      b = faces[s % 3 === 2 ? s - 2 : s + 1];
+      var at = fill[a < b ? a : b]++;
+      hi[at] = a < b ? b : a;
+      side[at] = s;
+    }
+    return { start: start, hi: hi, side: side };
+  }
+
+  function find(parent, x) {
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  }
+
+  function union(parent, a, b) {
+    a = find(parent, a);
+    b = find(parent, b);
+    if (a === b) return;
+    if (a < b) parent[b] = a;
+    else parent[a] = b;
+  }
+
+  function next(h) {
+    return h % 3 === 2 ? h - 2 : h + 1;
+  }
+
+  /** Index lists as plain arrays, and pairs sorted lexicographically. */
+  function sortedPairs(pairs) {
+    var n = pairs.length / 2;
+    var order = new Array(n);
+    for (var i = 0; i < n; i++) order[i] = i;
+    order.sort(function (x, y) {
+      return pairs[2 * x] - pairs[2 * y] || pairs[2 * x + 1] - pairs[2 * y + 1];
+    });
+    return order.map(function (i) {
+      return [pairs[2 * i], pairs[2 * i + 1]];
+    });
+  }
+
+  /** 0..n-1 in a typed array: every element its own set, for `find` and `union`. */
+  function identity(n) {
+    var out = new Int32Array(n);
+    for (var i = 0; i < n; i++) out[i] = i;
+    return out;
+  }
+
+  /**
+   * Every undirected edge, by how many face sides share it: a boundary (one side), a manifold
+   * edge (two: `pairA`, `pairB`) or a non-manifold one (three or more). On the way, faces
+   * that share an edge join one piece (`parent`, by face) and their corners at each end of it
+   * one fan (`fanParent`, by face side).
+   */
+  function edgeGroups(faces, nv, clean) {
+    var nf = faces.length / 3;
+    var table = edgeTable(faces, nv, clean);
+    var start = table.start, hi = table.hi, side = table.side;
+    var e = {
+      parent: identity(nf),
+      fanParent: identity(3 * nf),
+      boundary: [],
+      nonManifold: [],
+      inconsistentPairs: [],
+      pairA: new Growable(Int32Array, nf),
+      pairB: new Growable(Int32Array, nf),
+      openSides: new Growable(Int32Array, 64), // a face side of every edge not shared by two
+      boundarySides: new Growable(Int32Array, 64),
+      nonManifoldSides: new Growable(Int32Array, 64),
+    };
+    var group = [];
+    for (var lo = 0; lo < nv; lo++) {
+      var a1 = start[lo + 1];
+      for (var x = start[lo]; x < a1; x++) {
+        var h = hi[x];
+        if (h < 0) continue;
+        group.length = 0;
+        group.push(side[x]);
+        for (var y = x + 1; y < a1; y++) {
+          if (hi[y] === h) {
+            group.push(side[y]);
+            hi[y] = -1;
+          }
+        }
+        addEdge(e, faces, lo, h, group);
+      }
+    }
+    return e;
+  }
+
+  /** One edge (lo, h) and the face sides along it, into the findings `e` of edgeGroups. */
+  function addEdge(e, faces, lo, h, group) {
+    var count = group.length;
+    if (count === 1) {
+      var only = group[0];
+      e.boundary.push(faces[only], faces[next(only)]);
+      e.boundarySides.push(only);
+      e.openSides.push(only);
+      return;
+    }
+    if (count === 2) {
+      e.pairA.push(group[0]);
+      e.pairB.push(group[1]);
+      if (faces[group[0]] === faces[group[1]]) e.inconsistentPairs.push(lo, h);
+    } else {
+      e.nonManifold.push(lo, h);
+      e.nonManifoldSides.push(group[0]);
+      e.openSides.push(group[0]);
+    }
+    // every face of the group in one piece; their corners at lo in one fan, at h in one
+    var h0 = group[0];
+    var cLo0 = faces[h0] === lo ? h0 : next(h0);
+    var cHi0 = faces[h0] === lo ? next(h0) : h0;
+    for (var k = 1; k < count; k++) {
+      var hk = group[k];
+      union(e.parent, (h0 / 3) | 0, (hk / 3) | 0);
+      var atLo = faces[hk] === lo;
+      union(e.fanParent, cLo0, atLo ? hk : next(hk));
+      union(e.fanParent, cHi0, atLo ? next(hk) : hk);
+    }
+  }
+
+  /** The piece of each face, numbered in the order of their first faces (-1: a vertex used twice). */
+  function pieceLabels(parent, clean) {
+    var nf = clean.length;
+    var comp = new Int32Array(nf).fill(-1);
+    var label = new Int32Array(nf).fill(-1);
+    var n = 0;
+    for (var f = 0; f < nf; f++) {
+      if (!clean[f]) continue;
+      var r = find(parent, f);
+      if (label[r] < 0) label[r] = n++;
+      comp[f] = label[r];
+    }
+    return { comp: comp, count: n };
+  }
+
+  /** Vertices whose corners fall into more than one fan: pinch points. */
+  function pinchPoints(faces, nv, fanParent, clean) {
+    var fanOf = new Int32Array(nv).fill(-1);
+    var manyFans = new Uint8Array(nv);
+    for (var s = 0; s < faces.length; s++) {
+      if (!clean[(s / 3) | 0]) continue;
+      var vtx = faces[s];
+      var root = find(fanParent, s);
+      if (fanOf[vtx] < 0) fanOf[vtx] = root;
+      else if (fanOf[vtx] !== root) manyFans[vtx] = 1;
+    }
+    var out = [];
+    for (var i = 0; i < nv; i++) if (manyFans[i]) out.push(i);
+    return out;
+  }
+
+  // ------------------------------------------------------------------ winding (repair.py)
+
+  /**
+   * Which faces fix_winding turns over so that each piece agrees with itself, flipping the
+   * fewer faces; a piece that meets itself turned over cannot be wound (not orientable).
+   * Orientation classes are faces joined by manifold edges; parity is turned relative to the
+   * class's first face. Also counts each piece's inconsistent edges.
+   */
+  function consistentFlips(faces, e, pieces, clean) {
+    var nf = clean.length;
+    var comp = pieces.comp;
+    var inconsistent = new Int32Array(pieces.count); // edges walked the same way by both faces
+    var across = new Int32Array(3 * nf).fill(-1); // the face across each manifold side
+    var agree = new Uint8Array(3 * nf);
+    for (var i = 0; i < e.pairA.length; i++) {
+      var p1 = e.pairA.data[i], p2 = e.pairB.data[i];
+      var same = faces[p1] === faces[p2] ? 1 : 0;
+      if (same) inconsistent[comp[(p1 / 3) | 0]]++;
+      across[p1] = (p2 / 3) | 0;
+      across[p2] = (p1 / 3) | 0;
+      agree[p1] = same;
+      agree[p2] = same;
+    }
+    var parity = new Uint8Array(nf);
+    var seen = new Uint8Array(nf);
+    var klass = new Int32Array(nf).fill(-1);
+    var queue = new Int32Array(nf);
+    var classCount = [], classBad = [];
+    var orientable = new Uint8Array(pieces.count).fill(1);
+    for (var seed = 0; seed < nf; seed++) {
+      if (seen[seed] || !clean[seed]) continue;
+      var c = classCount.length;
+      var n0 = 0, n1 = 0, bad = 0;
+      var head = 0, tail = 0;
+      queue[tail++] = seed;
+      seen[seed] = 1;
+      while (head < tail) {
+        var cur = queue[head++];
+        klass[cur] = c;
+        if (parity[cur]) n1++;
+        else n0++;
+        for (var k = 0; k < 3; k++) {
+          var nb = across[3 * cur + k];
+          if (nb < 0) continue;
+          var want = parity[cur] ^ agree[3 * cur + k];
+          if (!seen[nb]) {
+            seen[nb] = 1;
+            parity[nb] = want;
+            queue[tail++] = nb;
+          } else if (parity[nb] !== want) {
+            bad = 1;
+          }
+        }
+      }
+      classCount.push([n0, n1]);
+      classBad.push(bad);
+      if (bad) orientable[comp[seed]] = 0;
+    }
+    // flip the side with fewer faces as they are (a tie keeps the class's first face)
+    var flip = new Uint8Array(nf);
+    for (var f = 0; f < nf; f++) {
+      if (!clean[f] || !orientable[comp[f]] || classBad[klass[f]]) continue;
+      var cnt = classCount[klass[f]];
+      flip[f] = cnt[1] > cnt[0] ? 1 - parity[f] : parity[f];
+    }
+    return { flip: flip, orientable: orientable, inconsistent: inconsistent };
+  }
+
+  var EPS = Math.pow(2, -52);
+  var VOLUME_ROUNDING = 8;
+
+  /**
+   * Six times the enclosed volume of each piece, from the first vertex of its first face, as
+   * wound now (`volume`) and after the consistent flips (`fixed`), with its rounding bound.
+   */
+  function volumes(V, faces, comp, nComp, flip) {
+    var nf = comp.length;
+    var ref = new Int32Array(nComp).fill(-1);
+    var volume = new Float64Array(nComp), fixed = new Float64Array(nComp);
+    var sizeSum = new Float64Array(nComp), nIn = new Float64Array(nComp);
+    for (var f = 0; f < nf; f++) {
+      var cf = comp[f];
+      if (cf < 0) continue;
+      if (ref[cf] < 0) ref[cf] = 3 * faces[3 * f];
+      var o = ref[cf];
+      var i0 = 3 * faces[3 * f], i1 = 3 * faces[3 * f + 1], i2 = 3 * faces[3 * f + 2];
+      var px = V[i0] - V[o], py = V[i0 + 1] - V[o + 1], pz = V[i0 + 2] - V[o + 2];
+      var qx = V[i1] - V[o], qy = V[i1 + 1] - V[o + 1], qz = V[i1 + 2] - V[o + 2];
+      var sx = V[i2] - V[o], sy = V[i2 + 1] - V[o + 1], sz = V[i2 + 2] - V[o + 2];
+      var det = px * (qy * sz - qz * sy) + py * (qz * sx - qx * sz) + pz * (qx * sy - qy * sx);
+      var size =
+        Math.sqrt(px * px + py * py + pz * pz) *
+        Math.sqrt(qx * qx + qy * qy + qz * qz) *
+        Math.sqrt(sx * sx + sy * sy + sz * sz);
+      volume[cf] += det;
+      fixed[cf] += det * (flip[f] ? -1.0 : 1.0);
+      sizeSum[cf] += size;
+      nIn[cf] += 1;
+    }
+    var error = new Float64Array(nComp);
+    for (var i = 0; i < nComp; i++) error[i] = (VOLUME_ROUNDING + nIn[i]) * EPS * sizeSum[i];
+    return { volume: volume, fixed: fixed, error: error };
+  }
+
+  /** Each piece's entry of the report, and the faces to flip (closed pieces turned outward). */
+  function pieceReports(pieces, closed, w, vol, flip) {
+    var nComp = pieces.count, comp = pieces.comp;
+    var inward = new Uint8Array(nComp);
+    for (var i = 0; i < nComp; i++) inward[i] = closed[i] && w.orientable[i] && vol.fixed[i] < -vol.error[i] ? 1 : 0;
+    var toFlip = [];
+    var flips = new Int32Array(nComp), sizes = new Int32Array(nComp);
+    for (var f = 0; f < comp.length; f++) {
+      if (comp[f] < 0) continue;
+      sizes[comp[f]]++;
+      if (flip[f] ^ inward[comp[f]]) {
+        toFlip.push(f);
+        flips[comp[f]]++;
+      }
+    }
+    var components = [];
+    for (i = 0; i < nComp; i++) {
+      var consistent = w.inconsistent[i] === 0;
+      var measurable = closed[i] && consistent;
+      var v = vol.volume[i];
+      components.push({
+        faces: sizes[i],
+        closed: !!closed[i],
+        consistent: consistent,
+        orientable: !!w.orientable[i],
+        outward: measurable ? (Math.abs(v) <= vol.error[i] ? null : v > 0) : null,
+        volume: measurable ? v / 6.0 : null,
+        faces_to_flip: flips[i],
+      });
+    }
+    return { components: components, faces_to_flip: toFlip };
+  }
+
+  // ------------------------------------------------------------------ the report
+
+  function indicesWhere(array, test) {
+    var out = [];
+    for (var i = 0; i < array.length; i++) if (test(array[i])) out.push(i);
+    return out;
+  }
+
+  /**
+   * The report of trinormal.mesh.check(vertices, faces): the same keys and values as its
+   * to_dict(), and for the 3D view one face side (3 * face + k) of every boundary and
+   * non-manifold edge. `onProgress(fraction)` is called now and then.
+   */
+  function check(vertices, faces, onProgress) {
+    var progress = onProgress || function () {};
+    var nv = vertices.length / 3;
+    var nf = faces.length / 3;
+    var s;
+    for (s = 0; s < faces.length; s++) {
+      if (faces[s] >= nv) I.fail("index_range", { face: (s / 3) | 0, index: faces[s], count: nv });
+    }
+    progress(0.05);
+    var kind = degenerateFaces(vertices, faces);
+    var used = new Uint8Array(nv);
+    for (s = 0; s < faces.length; s++) used[faces[s]] = 1;
+    var clean = new Uint8Array(nf); // three distinct vertices: the faces that have edges
+    for (var f = 0; f < nf; f++) {
+      var fa = faces[3 * f], fb = faces[3 * f + 1], fc = faces[3 * f + 2];
+      clean[f] = fa !== fb && fb !== fc && fc !== fa ? 1 : 0;
+    }
+    var dups = duplicateFaces(faces, clean);
+    progress(0.2);
+    var e = edgeGroups(faces, nv, clean);
+    progress(0.5);
+    var pieces = pieceLabels(e.parent, clean);
+    var pinches = pinchPoints(faces, nv, e.fanParent, clean);
+    var closed = new Uint8Array(pieces.count).fill(1); // every edge shared by exactly two faces
+    for (s = 0; s < e.openSides.length; s++) closed[pieces.comp[(e.openSides.data[s] / 3) | 0]] = 0;
+    progress(0.6);
+    var w = consistentFlips(faces, e, pieces, clean);
+    progress(0.75);
+    var vol = volumes(vertices, faces, pieces.comp, pieces.count, w.flip);
+    var p = pieceReports(pieces, closed, w, vol, w.flip);
+    progress(0.9);
+    var c = p.components;
+    var anyClosed = c.some(function (x) { return x.closed; });
+    var degenerate = indicesWhere(kind, function (k) { return k > 0; });
+    var unused = indicesWhere(used, function (u) { return !u; });
+    var report = {
+      n_vertices: nv,
+      n_faces: nf,
+      n_components: pieces.count,
+      closed: c.length > 0 && c.every(function (x) { return x.closed; }),
+      consistent_winding: c.every(function (x) { return x.consistent; }),
+      outward: anyClosed ? c.every(function (x) { return !x.closed || x.outward === true; }) : null,
+      ok: false,
+      unused_vertices: unused,
+      degenerate_faces: degenerate,
+      coincident_faces: indicesWhere(kind, function (k) { return k === 1; }),
+      collinear_faces: indicesWhere(kind, function (k) { return k === 2; }),
+      duplicate_faces: dups.same,
+      reversed_duplicate_faces: dups.reversed,
+      boundary_edges: sortedPairs(e.boundary),
+      non_manifold_edges: sortedPairs(e.nonManifold),
+      non_manifold_vertices: pinches,
+      inconsistent_edges: sortedPairs(e.inconsistentPairs),
+      components: c,
+      faces_to_flip: p.faces_to_flip,
+      _boundary_sides: e.boundarySides.array(),
+      _non_manifold_sides: e.nonManifoldSides.array(),
+    };
+    report.ok =
+      report.closed && report.consistent_winding && report.outward === true &&
+      !degenerate.length && !dups.same.length && !dups.reversed.length && !pinches.length && !unused.length;
+    progress(1);
+    return report;
+  }
+
+  /**
+   * Faces that repeat an earlier face's three vertices: `same` when wound like an earlier copy,
+   * `reversed` for the first copy wound the other way (trinormal.mesh.duplicate_faces).
+   * Faces using a vertex twice are left out.
+   */
+  function duplicateFaces(faces, clean) {
+    var nf = faces.length / 3;
+    var table = I.slotTable(nf);
+    var fmix = I.fmix;
+    var otherWay = new Int32Array(nf).fill(-1); // first face wound the other way, per key
+    var same = [];
+    var reversed = [];
+    for (var f = 0; f < nf; f++) {
+      if (!clean[f]) continue;
+      var a = faces[3 * f], b = faces[3 * f + 1], c = faces[3 * f + 2];
+      var lo = Math.min(a, b, c), hi = Math.max(a, b, c), mid = a + b + c - lo - hi;
+      var slot = fmix(fmix(fmix(lo) ^ mid) ^ hi) & table.mask;
+      for (;;) {
+        var at = table.slots[slot];
+        if (at < 0) {
+          table.slots[slot] = f;
+          break;
+        }
+        var p = faces[3 * at], q = faces[3 * at + 1], r = faces[3 * at + 2];
+        if (Math.min(p, q, r) === lo && Math.max(p, q, r) === hi && p + q + r - lo - hi === mid) {
+          if (sameWay(a, b, c, p, q, r)) same.push(f);
+          else if (otherWay[at] >= 0) same.push(f);
+          else {
+            otherWay[at] = f;
+            reversed.push(f);
+          }
+          break;
+        }
+        slot = (slot + 1) & table.mask;
+      }
+    }
+    return { same: same, reversed: reversed };
+  }
+
+  function sameWay(a, b, c, p, q, r) {
+    return (a === p && b === q && c === r) || (a === q && b === r && c === p) || (a === r && b === p && c === q);
+  }
+
+
+  // ------------------------------------------------------------------ the summary in words
+
+  function counted(n, noun) {
+    var forms = MESH.nouns[noun];
+    return n + " " + (n === 1 ? forms[0] : forms[1]);
+  }
+
+  /** A sentence of the summary: a template, or a (one, many) pair chosen by values.n. */
+  function sentence(key, values) {
+    var t = MESH.summary[key];
+    if (Array.isArray(t)) t = values.n === 1 ? t[0] : t[1];
+    return I.fill(t, values);
+  }
+
+  /** The report in plain sentences, one finding per line: MeshReport.summary() of Python. */
+  function summary(r) {
+    var lines = [
+      sentence("sizes", {
+        vertices: counted(r.n_vertices, "vertex"),
+        triangles: counted(r.n_faces, "triangle"),
+        pieces: counted(r.n_components, "piece"),
+      }),
+    ];
+    if (r.ok) {
+      lines.push(sentence("ok", {}));
+      return lines;
+    }
+    var nd = r.degenerate_faces.length;
+    if (nd) {
+      var parts = [];
+      if (r.coincident_faces.length) parts.push(sentence("coincident", { n: r.coincident_faces.length }));
+      if (r.collinear_faces.length) parts.push(sentence("collinear", { n: r.collinear_faces.length }));
+      lines.push(sentence("degenerate", { n: nd, parts: parts.join(", ") }));
+    }
+    var simple = [
+      ["duplicate", r.duplicate_faces],
+      ["reversed_duplicate", r.reversed_duplicate_faces],
+      ["unused", r.unused_vertices],
+      ["boundary", r.boundary_edges],
+      ["non_manifold_edges", r.non_manifold_edges],
+      ["non_manifold_vertices", r.non_manifold_vertices],
+    ];
+    for (var i = 0; i < simple.length; i++) {
+      if (simple[i][1].length) lines.push(sentence(simple[i][0], { n: simple[i][1].length }));
+    }
+    var many = r.components.length > 1;
+    var anyClosed = false;
+    r.components.forEach(function (c, j) {
+      if (c.closed) anyClosed = true;
+      var name = many ? sentence("piece", { i: j + 1, faces: counted(c.faces, "face") }) : sentence("whole", {});
+      if (!c.orientable) lines.push(sentence("not_orientable", { name: name }));
+      else if (!c.consistent) lines.push(sentence("inconsistent", { name: name }));
+      else if (c.closed && c.outward === false) lines.push(sentence("inside_out", { name: name }));
+      else if (c.closed && c.outward === null) lines.push(sentence("no_volume", { name: name }));
+    });
+    var nFlip = r.faces_to_flip.length;
+    if (nFlip) {
+      lines.push(sentence("flip", { n: nFlip, end: sentence(anyClosed ? "flip_end_closed" : "flip_end_open", {}) }));
+    }
+    return lines;
+  }
+
+  /** The report without the view's private keys: what Python's to_dict() returns. */
+  function toDict(report) {
+    var out = {};
+    Object.keys(report).forEach(function (k) {
+      if (k.charAt(0) !== "_") out[k] = report[k];
+    });
+    return out;
+  }
+
+  return Object.assign({}, base, {
+    check: check,
+    toDict: toDict,
+    summary: summary,
+    counted: counted,
+    degenerateFaces: degenerateFaces,
+    internal: Object.assign({}, I, { faceNormals: faceNormals }),
+  });
+});
