@@ -85,7 +85,7 @@ types: env
 
 # In parallel on every core (pytest-xdist).
 unit: env
-	$(TIMED) $(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q -n auto
+	$(TIMED) $(RUN) pytest tests trinormal docs/hooks README.md --doctest-glob=README.md --ignore=tests/browser -q -n auto
 
 ## nbval: the notebooks' stored outputs, re-run here (make test runs nbval on the wheel's copies)
 nbval: env
