@@ -12,7 +12,7 @@ same key names the float value in ``TriangleNormal.to_dict()``.
 Adding an output is one entry in `FIELDS` plus its computation in
 [`trinormal.core`][trinormal.core]: the attribute of
 [`TriangleNormal`][trinormal.core.TriangleNormal] of
-the same name (the float value) and its entry in ``TriangleNormal._exact_fields``
+the same name (the float value) and its entry in the exact fields of ``trinormal/core.py``
 (the exact value the text is rounded from). Code that reads the fields looks
 them up as ``fields.FIELDS`` when it runs, never copies them.
 
