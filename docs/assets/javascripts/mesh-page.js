@@ -2,14 +2,16 @@
  * The "Check a mesh" page: choose or drop an OBJ, STL or PLY file, or an example; a Web Worker
  * (mesh-worker.js, running trinormal-mesh.js) reads it, checks it and fixes its winding, with a
  * progress bar; the page shows the report (rows and sentences from the package, through
- * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view of assets/explorer/explorer.js) and offers the
+ * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view, assets/explorer/mesh.js) and offers the
  * repaired file for download. A face picked in the view (a click, or its number typed) is
  * answered here as the kernel answers it in Jupyter: its three vertices, its exact normal and
  * its area from the calculator's core (TrinormalCore), with the package's wording
  * (TRINORMAL_CONSTANTS.mesh.selection, trinormal.mesh.selection). Nothing leaves the browser.
  */
+import { modelEvents } from "./explorer-site.js"; // the calculator's 3D view, on every page
+
 const WORKER = new URL("mesh-worker.js", import.meta.url).href;
-const VIEW = new URL("../explorer/explorer.js", import.meta.url).href; // both 3D views, one three.js
+const VIEW = new URL("../explorer/mesh.js", import.meta.url).href; // the mesh view (three.js in its shared chunk)
 const SHOWN = 12; // list at most this many indices in a row of the report
 
 const $ = (id) => document.getElementById(id);
@@ -62,23 +64,16 @@ function createWorker() {
 /** A tiny model with anywidget's API for the mesh view. */
 function createModel(initial) {
   const data = { ...initial };
-  const listeners = new Map();
+  const events = modelEvents();
   return {
     get: (key) => data[key],
     set(key, value) {
       data[key] = value;
-      for (const cb of listeners.get("change:" + key) || []) cb({ name: key, new: value });
+      events.emit(key, value);
     },
     save_changes() {},
-    on(event, cb) {
-      if (!listeners.has(event)) listeners.set(event, new Set());
-      listeners.get(event).add(cb);
-    },
-    off(event, cb) {
-      if (!event) listeners.clear();
-      else if (!cb) listeners.delete(event);
-      else listeners.get(event)?.delete(cb);
-    },
+    on: events.on,
+    off: events.off,
   };
 }
 
@@ -286,7 +281,7 @@ function mount(root) {
     if (!view) {
       const module = await import(VIEW);
       host.textContent = "";
-      view = module.mesh.render({ model, el: host });
+      view = module.default.render({ model, el: host });
     }
     host.dataset.ready = "true";
   }
