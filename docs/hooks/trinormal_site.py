@@ -65,9 +65,10 @@ def on_files(files: Files, config: MkDocsConfig) -> Files:
 
 def add_explorer_assets(files: Files, config: MkDocsConfig) -> None:
     """The 3D view's bundle and licence under ``assets/explorer/``, and the constants file."""
-    static = sorted(p for p in EXPLORER_STATIC.glob("*") if p.is_file())
+    site = EXPLORER_STATIC / "site-modules"  # the site's build of the views (js/explorer/build.mjs)
+    static = sorted(p for p in site.glob("*") if p.is_file())
     if not any(p.name == "explorer.js" for p in static):
-        raise FileNotFoundError(f"{EXPLORER_STATIC / 'explorer.js'} is missing: run `make js`")
+        raise FileNotFoundError(f"{site / 'explorer.js'} is missing: run `make js`")
     for path in static:
         files.append(
             File.generated(config, f"{EXPLORER_ASSETS}/{path.name}", abs_src_path=str(path))
