@@ -7,6 +7,7 @@ naming the first bad row, whichever function it reaches.
 
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any, Literal
 
 import numpy as np
@@ -132,6 +133,11 @@ def _check_tol(tol: float) -> float:
     """Return the tolerance as a float, checked by `trinormal.validation.check_tolerance`."""
     n, d = check_tolerance(tol)
     return n / d  # 0 <= tol <= 1: no overflow
+
+
+def _exact_tol(tol: float) -> Fraction:
+    """Return the tolerance exactly as `trinormal.validation.check_tolerance` reads it."""
+    return Fraction(*check_tolerance(tol))
 
 
 def _cast(values: FloatArray, dtype: np.dtype[Any]) -> FloatArray:
