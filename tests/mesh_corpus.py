@@ -242,6 +242,37 @@ def thin(tol_factor: float) -> Model:
     return np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, h, 0.0]]), [[0, 1, 2], [0, 2, 1]]
 
 
+#: The three rotations and the two windings of a face's corners.
+ORDERS = ((0, 1, 2), (1, 2, 0), (2, 0, 1), (0, 2, 1), (2, 1, 0), (1, 0, 2))
+
+
+def slivers(scale: float) -> Model:
+    """Thin and nearly coincident faces, each in every order of its corners, times ``scale``.
+
+    Each face has its own copies of its corners, so none is a duplicate of another. A needle
+    (one edge 1e-13 long) is degenerate whichever corner comes first; faces on and just off
+    the threshold |N| = tol · L² are decided in exact arithmetic, tilted ones too, so their
+    normals are quotients of integers.
+    """
+    tol = 1e-12
+    b = np.array([1.0, 0.5, 0.25])
+    side = np.cross(b, [0.0, 0.0, 1.0])
+    h = tol * (b @ b) / np.linalg.norm(np.cross(side, b))
+    faces = [
+        [[0, 0, 0], [1, 0, 0], [0, 1e-13, 0]],  # a needle
+        [[0, 0, 0], [1, 0, 0], [1, 1e-13, 0]],  # a sliver: two corners nearly coincident
+        [[0, 0, 0], [1, 0, 0], [1 + 1e-13, 1e-13, 0]],
+        [[0, 0, 0], [1, 0, 0], [0, 3e-12, 0]],  # thin but above the threshold
+        [[0, 0, 0], [1, 0, 0], [0, tol, 0]],  # on the threshold: degenerate
+        [[0, 0, 0], [1, 0, 0], [0, math.nextafter(tol, 1), 0]],  # just above it
+        [[0, 0, 0], b, 0.5 * b + h * side],  # tilted, about on the threshold
+        [[0, 0, 0], b, 0.5 * b + math.nextafter(h, 1) * 1.5 * side],
+        [[0, 0, 0], b, 0.5 * b + h * 0.75 * side],
+    ]
+    v = np.array([face[k] for face in faces for order in ORDERS for k in order], dtype=np.float64)
+    return v * scale, [[3 * i, 3 * i + 1, 3 * i + 2] for i in range(len(v) // 3)]
+
+
 def models() -> Iterator[tuple[str, Model]]:
     rng = np.random.default_rng(30)
     v, f = cube()
@@ -277,6 +308,8 @@ def models() -> Iterator[tuple[str, Model]]:
     yield "every-fault", faulty()
     yield "thin-below-tol", thin(0.5)
     yield "thin-above-tol", thin(2.0)
+    for scale in (1.0, 1e-300, 1e300):
+        yield f"slivers-scale-{scale:g}", slivers(scale)
     for scale in (1e-300, 1e-200, 1e-160, 1e150, 1e200, 1e300):
         v, f = icosphere(1)
         yield f"ball-scale-{scale:g}", tri(v * scale, turned(f.tolist(), [0, 5]))
