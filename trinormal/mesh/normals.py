@@ -201,6 +201,7 @@ def _face_rows(
         span = box[1] - box[0]
         reach = float(span @ span)  # L² <= reach for every face
     hi = _band(t)[1]
+    # |N|² above this clears a face: 1 + 2**-20 covers the rounding of reach and of each L²
     clear = max(_LO, hi * hi * reach * reach * (1 + 2.0**-20)) if reach < _HI else math.inf
     m = min(_BLOCK, nf)
     work = np.empty(24 * m)  # a block's working arrays, cut from one allocation per call
