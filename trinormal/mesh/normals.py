@@ -1,5 +1,11 @@
 """Face normals, degeneracy, areas and vertex normals of whole meshes.
 
+A mesh is two arrays: ``vertices``, shape (V, 3), the coordinates (float32 or
+float64; integers are read as float64), and ``faces``, shape (F, 3), each row
+the three vertex indices of a triangle in winding order. Results come back in
+the vertices' dtype. `face_normals` documents the pair once; the other
+functions take it as it does.
+
 The kernel `_face_rows` computes, block by block, whatever per-face output a
 caller asks for: unit normals, the degeneracy verdict, |N| and the interior
 angles. Every public function here is one call to it plus a little numpy.
@@ -371,10 +377,8 @@ def degenerate_faces(
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh, as in `face_normals`.
     tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
         Threshold on |N| / L²; ``0`` flags only faces whose exact N is zero
         (collinear or coincident corners).
@@ -382,7 +386,8 @@ def degenerate_faces(
     Returns
     -------
     ndarray of bool, shape (F,)
-        True where the face has no trustworthy normal.
+        True where the face has no trustworthy normal (`face_normals` gives it
+        a zero row).
 
     Examples
     --------
@@ -413,10 +418,9 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh (shapes (V, 3) and (F, 3); see `face_normals`). Winding does
+        not matter: an area is never negative.
 
     Returns
     -------
@@ -451,10 +455,9 @@ def vertex_normals(
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh, as in `face_normals`: each face adds its normal to its three
+        corners, so its winding decides which way that normal points.
     weighting : {"angle", "area", "uniform"}, default "angle"
         How much each face counts at a vertex: its interior angle there
         (Thürmer and Wüthrich; independent of how the surface is
