@@ -75,11 +75,11 @@ def test_many_faces_across_blocks_match_the_core_row_by_row():
 
 @pytest.mark.parametrize("where", [0, 9_000, 39_999])
 @pytest.mark.parametrize("ratio", [0.5, 1.5, 4.0])
-def test_a_thin_face_among_many_gets_the_cores_verdict(where, ratio):
-    # A block of ordinary faces is decided all at once (no face's sine can be near tol);
-    # one thin face, with sine ratio * tol, must still be judged as the core judges it.
+def test_a_thin_face_among_many_gets_the_exact_verdict(where, ratio):
+    # A block of ordinary faces is decided all at once (no face's |N| / L² can be near tol);
+    # one thin face, with |N| / L² about ratio * tol, must still get the exact verdict.
     tol = 1e-9
-    v, f = mesh.terrain(150, 150)  # 44 402 faces: three blocks
+    v, f = mesh.terrain(150, 150)  # 44 402 faces: several blocks
     f = f[:40_000]
     v = np.vstack([v, [[0, 0, 0], [1, 0, 0], [1, ratio * tol, 0]]])
     n = v.shape[0]
@@ -97,9 +97,9 @@ def test_a_thin_face_among_many_gets_the_cores_verdict(where, ratio):
 
 @pytest.mark.parametrize("far", [1e3, 1e9, 1e150])
 def test_a_far_vertex_changes_no_row(far):
-    # A mesh is cleared all at once from its bounding box, block by block from the edges, or
-    # row by row; an unused vertex far away widens the box until the first test fails, and
-    # the rows must not change by a bit: every path gives the same verdicts and numbers.
+    # A block is cleared all at once from the mesh's bounding box, or judged row by row; an
+    # unused vertex far away widens the box until the first test fails, and the rows must
+    # not change by a bit: both paths give the same verdicts and numbers.
     v, f = mesh.terrain(150, 150)
     wide = np.vstack([v, [[far, -far, far]]])
     for unit in (True, False):
@@ -108,6 +108,30 @@ def test_a_far_vertex_changes_no_row(far):
             == mesh.face_normals(v, f, unit=unit).tobytes()
         )
     assert (mesh.degenerate_faces(wide, f) == mesh.degenerate_faces(v, f)).all()
+
+
+def test_each_face_gets_the_same_bits_in_any_block_and_alone():
+    v, f = mesh.terrain(120, 120)  # 28 322 faces: several blocks
+    v = v.copy()
+    v[:50] *= 1e-200  # faces for the careful path in the first block
+    v[-50:] *= 1e200  # and in the last
+    f = f.copy()
+    f[::997, 2] = f[::997, 1]  # degenerate faces here and there
+    rows = np.r_[0:60, 9_000:9_060, len(f) - 60 : len(f)]
+    for fn in (
+        mesh.face_normals,
+        lambda v, f: mesh.face_normals(v, f, unit=False),
+        mesh.degenerate_faces,
+        mesh.face_areas,
+    ):
+        whole = fn(v, f)
+        alone = np.array([fn(v, f[i : i + 1])[0] for i in rows])
+        assert whole[rows].tobytes() == alone.tobytes()
+    assert np.isfinite(mesh.face_normals(v, f)).all()
+    bad = f.copy()
+    bad[-3, 1] = len(v)
+    with pytest.raises(ValueError, match=f"faces row {len(f) - 3} refers to vertex {len(v)}"):
+        mesh.face_normals(v, bad)
 
 
 @pytest.mark.parametrize("rows", [0, 1, 511, 512, 513, 1025, 5000])

@@ -42,7 +42,7 @@ The promises, for every normal computed here:
 * Bad input raises a `ValueError` that names the first bad row.
 
 Speed comes from plain numpy on one thread: the corners are gathered block by
-block, 16 384 faces at a time, so that every temporary stays in the CPU cache,
+block, 8 192 faces at a time, so that every temporary stays in the CPU cache,
 and every operation writes in place. There is no Python loop over faces (only
 over blocks of them, and over the rare faces too close to the threshold for
 float64, which are decided exactly).
