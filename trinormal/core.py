@@ -748,7 +748,7 @@ def _result(
 
     The arguments are the fields in order. The result is frozen: its attributes
     are set once, here, as one dictionary (the dataclass's field-by-field
-    ``__init__`` would cost about 3 µs a call, a third of the whole calculation).
+    ``__init__`` is a large share of the time of one call, and it is refused).
     """
     r = _new_object(TriangleNormal)
     _set(
