@@ -576,3 +576,19 @@ def test_float_formats_judge_the_n_they_computed_against_the_longest_side():
         assert all(r.degenerate for r in _every_order(pts, arithmetic=arithmetic, tol=0.25))
         below = _every_order(pts, arithmetic=arithmetic, tol=Fraction(1, 4) - Fraction(1, 10**40))
         assert not any(r.degenerate for r in below)
+
+
+def test_the_core_imports_no_formatter():
+    """core is the bottom layer: display and fields sit above it (format() imports them lazily)."""
+    import ast
+    import inspect
+
+    from trinormal import core
+
+    tree = ast.parse(inspect.getsource(core))
+    top = [n for n in tree.body if isinstance(n, ast.Import | ast.ImportFrom)]
+    names = {n.module for n in top if isinstance(n, ast.ImportFrom)} | {
+        a.name for n in top if isinstance(n, ast.Import) for a in n.names
+    }
+    assert "trinormal.validation" in names
+    assert not names & {"trinormal.display", "trinormal.fields", "trinormal"}

@@ -446,7 +446,7 @@ VERDICTS: dict[str, str] = {
     "coincide": "{names} coincide, so the triangle has no area.",
     "collinear": "A, B and C are collinear{where} (they lie on one line), so the area is zero.",
     "too_thin": (
-        "it is too thin to trust: its height is at most the tolerance times its longest side."
+        "it is too thin to trust (its height is at most the tolerance times its longest side)."
     ),
 }
 
