@@ -320,7 +320,7 @@ class TriangleNormal:
 
         In ``float64``/``float32`` arithmetic the strings are those of the
         computed floats, written exactly before rounding to ``precision``.
-        Written by [`trinormal.fields.format_result`][trinormal.fields.format_result].
+        Written by [`trinormal.fields.format_fields`][trinormal.fields.format_fields].
 
         Parameters
         ----------
@@ -350,9 +350,9 @@ class TriangleNormal:
         >>> triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["unit_normal"]
         'undefined'
         """
-        from trinormal.fields import format_result  # the formatter sits above the core
+        from trinormal.fields import format_fields  # the formatter sits above the core
 
-        return format_result(self, precision, trim)
+        return format_fields(self, precision, trim)
 
     def to_dict(self) -> dict[str, Any]:
         """Every field as JSON-ready values: floats (non-finite as strings) and exact strings.
@@ -582,7 +582,7 @@ def triangle_normal(
     if arithmetic == "exact":
         ints, D = check_common(coords)
         return _exact(ints, D, w, tn, td, tn / td)
-    from trinormal.float_arithmetic import floating  # the rarer path, read when used
+    from trinormal._float_arithmetic import floating  # the rarer path, read when used
 
     return floating(coords, w, tn, td, arithmetic)
 

@@ -9,7 +9,7 @@ Each field's value is the string ``TriangleNormal.format(precision)[key]``;
 its ``kind`` says how that string is written ([`Field.text`][trinormal.fields.Field.text]), and the
 same key names the float value in ``TriangleNormal.to_dict()``.
 
-This module also writes a whole result: [`format_result`][trinormal.fields.format_result]
+This module also writes a whole result: [`format_fields`][trinormal.fields.format_fields]
 (the strings behind ``TriangleNormal.format``), [`result_dict`][trinormal.fields.result_dict]
 (``to_dict``) and [`result_repr`][trinormal.fields.result_repr] (``repr``). The core
 computes; it imports nothing from here.
@@ -56,7 +56,7 @@ __all__ = [
     "exact_values",
     "field_labels",
     "fields_spec",
-    "format_result",
+    "format_fields",
     "result_dict",
     "result_repr",
 ]
@@ -262,7 +262,7 @@ def exact_values(r: TriangleNormal) -> dict[str, Any]:
     }
 
 
-def format_result(r: TriangleNormal, precision: int = 4, trim: bool = False) -> dict[str, str]:
+def format_fields(r: TriangleNormal, precision: int = 4, trim: bool = False) -> dict[str, str]:
     """Display strings for every output field of a result, and its ``status`` sentence.
 
     This is ``TriangleNormal.format`` (documented there). Exact results are
@@ -272,7 +272,7 @@ def format_result(r: TriangleNormal, precision: int = 4, trim: bool = False) -> 
     Examples
     --------
     >>> from trinormal import triangle_normal
-    >>> format_result(triangle_normal((0, 0, 0), (2, 0, 0), (0, 3, 0)), 2)["area"]
+    >>> format_fields(triangle_normal((0, 0, 0), (2, 0, 0), (0, 3, 0)), 2)["area"]
     '3.00'
     """
     from trinormal.core import VERDICTS
