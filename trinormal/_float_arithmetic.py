@@ -18,8 +18,8 @@ from trinormal.core import (
     Plane,
     TriangleNormal,
     Vec3,
-    _cross,
     _div,
+    _exact,
     _longest_squared,
     _reason,
     _result,
@@ -150,7 +150,7 @@ def floating(
         reason,
         fmt,
         tn / td,
-        _cross(*check_common(coords), w),
+        _exact(*check_common(coords), w, tn, td, tn / td)._integers,
     )
 
 

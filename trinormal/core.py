@@ -401,22 +401,6 @@ def _sqrt_ratio(num: int, den: int) -> float:
     return _div(r, 1 << k)
 
 
-def _cross(ints: tuple[int, ...], D: int, winding: Winding) -> _Integers:
-    """Form U, V, N and |N|² from the nine coordinates over one denominator ``D``."""
-    ax, ay, az, bx, by, bz, cx, cy, cz = ints
-    if winding is Winding.ABC:
-        ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
-    else:
-        ux, uy, uz, vx, vy, vz = cx - ax, cy - ay, cz - az, bx - ax, by - ay, bz - az
-    nx = uy * vz - uz * vy
-    ny = uz * vx - ux * vz
-    nz = ux * vy - uy * vx
-    return _new_tuple(
-        _Integers,
-        (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), nx * nx + ny * ny + nz * nz),
-    )
-
-
 def _longest_squared(u: tuple[int, ...], v: tuple[int, ...]) -> int:
     """L², the squared length of the longest side, from the edges U and V (V − U is the third)."""
     ux, uy, uz = u
@@ -433,6 +417,12 @@ def _thin(norm_squared: int, longest_squared: int, tn: int, td: int) -> bool:
     ``norm_squared`` and ``longest_squared`` must be over the same denominator
     (|N|² over D⁴ and L² over D², as `_Integers` holds them).
     """
+    # 2**(bits − 1) <= x < 2**bits: when the bit lengths alone put the left side above the
+    # right one, the products are not needed (the usual case, a triangle far from thin)
+    # (N = 0 is always degenerate: it has no lower bound to compare)
+    bits = td.bit_length() - tn.bit_length() - longest_squared.bit_length()
+    if norm_squared and norm_squared.bit_length() + 2 * bits >= 3:
+        return False
     return norm_squared * td * td <= tn * tn * longest_squared * longest_squared
 
 
@@ -664,8 +654,16 @@ def _exact(
     ``1 / D`` when `_plain_integers` found the scaled floats exact (else 0.0);
     ``points`` are the vertices when they are already tuples of floats.
     """
-    s = _cross(ints, D, w)
-    (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S = s.u, s.v, s.normal, s.norm_squared
+    ax, ay, az, bx, by, bz, cx, cy, cz = ints
+    if w is Winding.ABC:
+        ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
+    else:
+        ux, uy, uz, vx, vy, vz = cx - ax, cy - ay, cz - az, bx - ax, by - ay, bz - az
+    nx = uy * vz - uz * vy
+    ny = uz * vx - ux * vz
+    nz = ux * vy - uy * vx
+    S = nx * nx + ny * ny + nz * nz
+    s = _new_tuple(_Integers, (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S))
     degenerate = _thin(S, _longest_squared(s.u, s.v), tn, td)
     if points is None:
         f = _divide(ints, D)
@@ -704,7 +702,7 @@ def _exact(
         reason = _reason(ints, S == 0)
     else:
         unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)  # |unit| <= 1: no overflow
-        offset = _div((nx * ints[0] + ny * ints[1] + nz * ints[2]) << k, r * D)
+        offset = _div((nx * ax + ny * ay + nz * az) << k, r * D)
         plane = _new_tuple(Plane, (unit, offset))
     return _result(
         points[0],
