@@ -129,3 +129,18 @@ def test_borderline_triangles_get_one_verdict_in_every_order(a, b, t, k):
     floats = [tuple(float(x) for x in p) for p in (a, b, c)]
     quick = {triangle_normal(p, q, r, winding=w).degenerate for p, q, r, w in _orders(*floats)}
     assert len(quick) == 1
+
+
+@given(
+    st.integers(min_value=0, max_value=2**300),
+    st.integers(min_value=0, max_value=2**200),
+    st.fractions(min_value=0, max_value=1, max_denominator=2**100),
+)
+def test_the_degenerate_test_s_shortcut_never_changes_the_answer(norm_squared, longest, tol):
+    """_thin may decide from bit lengths alone; it must agree with the products every time."""
+    from trinormal.core import _thin
+
+    tn, td = tol.numerator, tol.denominator
+    want = norm_squared * td * td <= tn * tn * longest * longest
+    assert _thin(norm_squared, longest, tn, td) is want
+    assert _thin(0, longest, tn, td) is True
