@@ -38,7 +38,7 @@ from trinormal.mesh import (
     write_mesh,
 )
 from trinormal.mesh.io import MeshFileError, _format_of
-from trinormal.mesh_page import EXAMPLES, MESSAGES, example_file
+from trinormal.mesh_page import EXAMPLES, example_file
 
 ROOT = Path(__file__).resolve().parents[1]
 STORED = (ROOT / "tests" / "data" / "meshes", ROOT / "trinormal" / "mesh" / "data")
@@ -62,16 +62,11 @@ def _finite_or_text(x: Any) -> Any:
 
 
 def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
-    """What the page shows for a file, computed by Python; the repaired file goes to ``scratch``.
-
-    The page's own rule on top of Python's reader: a file with no faces has nothing to check.
-    """
+    """What the page shows for a file, computed by Python; the repaired file goes to ``scratch``."""
     try:
         m = parse_mesh(data, _format_of(name, None), name)
     except MeshFileError as exc:
         return {"error": str(exc), "key": exc.key}
-    if m.faces.shape[0] == 0:
-        return {"error": MESSAGES["no_faces"].format(name=name), "key": "no_faces"}
     r = check(m.vertices, m.faces)
     fixed, _ = fix_winding(m.vertices, m.faces)
     write_mesh(scratch, m.vertices, fixed, m.format, m.encoding)
@@ -82,6 +77,7 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
         "binary": m.encoding == "binary",
         "polygons": m.n_polygons,
         "split_polygons": m.split_polygons,
+        "notes": list(m.notes),
     }
 
 
@@ -242,6 +238,37 @@ def thin(tol_factor: float) -> Model:
     return np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, h, 0.0]]), [[0, 1, 2], [0, 2, 1]]
 
 
+#: The three rotations and the two windings of a face's corners.
+ORDERS = ((0, 1, 2), (1, 2, 0), (2, 0, 1), (0, 2, 1), (2, 1, 0), (1, 0, 2))
+
+
+def slivers(scale: float) -> Model:
+    """Thin and nearly coincident faces, each in every order of its corners, times ``scale``.
+
+    Each face has its own copies of its corners, so none is a duplicate of another. A needle
+    (one edge 1e-13 long) is degenerate whichever corner comes first; faces on and just off
+    the threshold |N| = tol · L² are decided in exact arithmetic, tilted ones too, so their
+    normals are quotients of integers.
+    """
+    tol = 1e-12
+    b = np.array([1.0, 0.5, 0.25])
+    side = np.cross(b, [0.0, 0.0, 1.0])
+    h = tol * (b @ b) / np.linalg.norm(np.cross(side, b))
+    faces = [
+        [[0, 0, 0], [1, 0, 0], [0, 1e-13, 0]],  # a needle
+        [[0, 0, 0], [1, 0, 0], [1, 1e-13, 0]],  # a sliver: two corners nearly coincident
+        [[0, 0, 0], [1, 0, 0], [1 + 1e-13, 1e-13, 0]],
+        [[0, 0, 0], [1, 0, 0], [0, 3e-12, 0]],  # thin but above the threshold
+        [[0, 0, 0], [1, 0, 0], [0, tol, 0]],  # on the threshold: degenerate
+        [[0, 0, 0], [1, 0, 0], [0, math.nextafter(tol, 1), 0]],  # just above it
+        [[0, 0, 0], b, 0.5 * b + h * side],  # tilted, about on the threshold
+        [[0, 0, 0], b, 0.5 * b + math.nextafter(h, 1) * 1.5 * side],
+        [[0, 0, 0], b, 0.5 * b + h * 0.75 * side],
+    ]
+    v = np.array([face[k] for face in faces for order in ORDERS for k in order], dtype=np.float64)
+    return v * scale, [[3 * i, 3 * i + 1, 3 * i + 2] for i in range(len(v) // 3)]
+
+
 def models() -> Iterator[tuple[str, Model]]:
     rng = np.random.default_rng(30)
     v, f = cube()
@@ -277,6 +304,8 @@ def models() -> Iterator[tuple[str, Model]]:
     yield "every-fault", faulty()
     yield "thin-below-tol", thin(0.5)
     yield "thin-above-tol", thin(2.0)
+    for scale in (1.0, 1e-300, 1e300):
+        yield f"slivers-scale-{scale:g}", slivers(scale)
     for scale in (1e-300, 1e-200, 1e-160, 1e150, 1e200, 1e300):
         v, f = icosphere(1)
         yield f"ball-scale-{scale:g}", tri(v * scale, turned(f.tolist(), [0, 5]))
@@ -489,6 +518,36 @@ def damaged(rng: random.Random, data: bytes) -> bytes:
     return bytes(out)
 
 
+def lenient() -> Iterator[tuple[str, bytes]]:
+    """Binary STL files whose triangle count disagrees with their size, and empty files.
+
+    Read with a note: whole 50-byte records after the header whatever the count says, and
+    fewer than 50 bytes after the counted records. Refused: any other size, and a file with
+    no faces (no bytes at all, or nothing but a header).
+    """
+    v, polys = tetra()
+    good = stl_binary(v, polys)  # 4 triangles
+
+    def counted(n: int, data: bytes = good) -> bytes:
+        return data[:80] + struct.pack("<I", n) + data[84:]
+
+    yield "count-zero.stl", counted(0)
+    yield "count-big.stl", counted(7)
+    yield "count-small.stl", counted(1)
+    yield "count-huge.stl", counted(2**32 - 1)
+    yield "count-zero-solid.stl", counted(0, stl_binary(v, polys, b"solid tetra"))
+    for extra in range(1, 50):
+        yield f"trailing-{extra}.stl", good + bytes(range(extra))
+    yield "count-zero-trailing.stl", counted(0) + bytes(7)  # neither rule: not an STL
+    yield "count-big-trailing.stl", counted(5) + bytes(49)
+    yield "header-only.stl", good[:84]  # the count says 4: not an STL
+    yield "header-only-zero.stl", counted(0, good[:84])  # no faces
+    yield "header-trailing.stl", counted(0, good[:84]) + bytes(30)  # no faces, a note
+    yield "solid-empty.stl", b"solid empty\nendsolid empty\n"
+    for ext in ("obj", "stl", "ply", "STL"):
+        yield f"zero-bytes.{ext}", b""
+
+
 def corpus() -> list[tuple[str, bytes]]:
     """Every file of the corpus, as (name, bytes); names are unique."""
     files = [(p.name, p.read_bytes()) for d in STORED for p in sorted(d.rglob("*")) if p.is_file()]
@@ -502,6 +561,7 @@ def corpus() -> list[tuple[str, bytes]]:
     for k in range(400):
         name, data = rng.choice(small)
         files.append((f"damaged{k}-{name}", damaged(rng, data)))
+    files += lenient()
     names = [n for n, _ in files]
     assert len(set(names)) == len(names), "two corpus files share a name"
     return files

@@ -96,6 +96,7 @@ function run(M, name, bytes) {
     binary: !!mesh.binary,
     polygons: mesh.polygons,
     split_polygons: mesh.split_polygons,
+    notes: mesh.notes,
   };
   var faces = M.fixWinding(mesh.faces, report);
   return { shown: shown, repaired: M.write(mesh, faces) };

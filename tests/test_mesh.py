@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from test_mesh_degenerate import exact_ratio, exactly_degenerate
 
 from trinormal import mesh, triangle_normal
 from trinormal.tolerances import DEFAULT_TOL
@@ -33,7 +34,7 @@ def angle_deg(p: np.ndarray, q: np.ndarray) -> float:
 @given(point, point, point)
 def test_face_normals_agree_with_triangle_normal(a, b, c):
     r = triangle_normal(a, b, c)
-    assume(r.sine > 1e-6)  # well away from the threshold, where the verdicts must agree
+    assume(exact_ratio(a, b, c) > 1e-12)  # |N| / L² > 1e-6: clear of the threshold
     v = np.array([a, b, c])
     f = np.array([[0, 1, 2]])
     unit = mesh.face_normals(v, f)[0]
@@ -50,12 +51,10 @@ def test_face_normals_agree_with_triangle_normal(a, b, c):
 
 
 @settings(max_examples=200, deadline=None)
-@given(point, point, point, st.sampled_from([1e-9, 1e-6, 1e-3, 0.1]))
-def test_degenerate_verdict_agrees_with_core(a, b, c, tol):
-    r = triangle_normal(a, b, c, tol=tol)
-    assume(r.sine == 0.0 or abs(r.sine / tol - 1) > 1e-3)  # not on the threshold itself
+@given(point, point, point, st.sampled_from([0, 1e-12, 1e-9, 1e-6, 1e-3, 0.1]))
+def test_degenerate_verdict_is_the_exact_rule(a, b, c, tol):
     got = mesh.degenerate_faces(np.array([a, b, c]), [[0, 1, 2]], tol=tol)[0]
-    assert bool(got) == r.degenerate
+    assert bool(got) == exactly_degenerate(a, b, c, tol)
 
 
 def test_many_faces_across_blocks_match_the_core_row_by_row():
@@ -65,9 +64,10 @@ def test_many_faces_across_blocks_match_the_core_row_by_row():
     got = mesh.face_normals(v, f)
     deg = mesh.degenerate_faces(v, f)
     for i in rng.choice(f.shape[0], size=300, replace=False):
-        r = triangle_normal(*(v[j] for j in f[i]))
-        assert bool(deg[i]) == r.degenerate
-        if r.degenerate:
+        corners = [v[j].tolist() for j in f[i]]
+        assert bool(deg[i]) == exactly_degenerate(*corners)
+        r = triangle_normal(*corners)
+        if deg[i]:
             assert not got[i].any()
         else:
             np.testing.assert_allclose(got[i], r.unit_normal, atol=64 * EPS / r.sine, rtol=0)
@@ -75,19 +75,18 @@ def test_many_faces_across_blocks_match_the_core_row_by_row():
 
 @pytest.mark.parametrize("where", [0, 9_000, 39_999])
 @pytest.mark.parametrize("ratio", [0.5, 1.5, 4.0])
-def test_a_thin_face_among_many_gets_the_cores_verdict(where, ratio):
-    # A block of ordinary faces is decided all at once (no face's sine can be near tol);
-    # one thin face, with sine ratio * tol, must still be judged as the core judges it.
+def test_a_thin_face_among_many_gets_the_exact_verdict(where, ratio):
+    # A block of ordinary faces is decided all at once (no face's |N| / L² can be near tol);
+    # one thin face, with |N| / L² about ratio * tol, must still get the exact verdict.
     tol = 1e-9
-    v, f = mesh.terrain(150, 150)  # 44 402 faces: three blocks
+    v, f = mesh.terrain(150, 150)  # 44 402 faces: several blocks
     f = f[:40_000]
     v = np.vstack([v, [[0, 0, 0], [1, 0, 0], [1, ratio * tol, 0]]])
     n = v.shape[0]
     f = f.copy()
     f[where] = [n - 3, n - 2, n - 1]
-    r = triangle_normal(*v[f[where]].tolist(), tol=tol)
     deg = mesh.degenerate_faces(v, f, tol=tol)
-    assert bool(deg[where]) == r.degenerate == (ratio < 1)
+    assert bool(deg[where]) == exactly_degenerate(*v[f[where]].tolist(), tol) == (ratio < 1)
     assert np.flatnonzero(deg).tolist() == ([where] if ratio < 1 else [])
     unit = mesh.face_normals(v, f, tol=tol)
     if ratio < 1:
@@ -98,9 +97,9 @@ def test_a_thin_face_among_many_gets_the_cores_verdict(where, ratio):
 
 @pytest.mark.parametrize("far", [1e3, 1e9, 1e150])
 def test_a_far_vertex_changes_no_row(far):
-    # A mesh is cleared all at once from its bounding box, block by block from the edges, or
-    # row by row; an unused vertex far away widens the box until the first test fails, and
-    # the rows must not change by a bit: every path gives the same verdicts and numbers.
+    # A block is cleared all at once from the mesh's bounding box, or judged row by row; an
+    # unused vertex far away widens the box until the first test fails, and the rows must
+    # not change by a bit: both paths give the same verdicts and numbers.
     v, f = mesh.terrain(150, 150)
     wide = np.vstack([v, [[far, -far, far]]])
     for unit in (True, False):
@@ -109,6 +108,30 @@ def test_a_far_vertex_changes_no_row(far):
             == mesh.face_normals(v, f, unit=unit).tobytes()
         )
     assert (mesh.degenerate_faces(wide, f) == mesh.degenerate_faces(v, f)).all()
+
+
+def test_each_face_gets_the_same_bits_in_any_block_and_alone():
+    v, f = mesh.terrain(120, 120)  # 28 322 faces: several blocks
+    v = v.copy()
+    v[:50] *= 1e-200  # faces for the careful path in the first block
+    v[-50:] *= 1e200  # and in the last
+    f = f.copy()
+    f[::997, 2] = f[::997, 1]  # degenerate faces here and there
+    rows = np.r_[0:60, 9_000:9_060, len(f) - 60 : len(f)]
+    for fn in (
+        mesh.face_normals,
+        lambda v, f: mesh.face_normals(v, f, unit=False),
+        mesh.degenerate_faces,
+        mesh.face_areas,
+    ):
+        whole = fn(v, f)
+        alone = np.array([fn(v, f[i : i + 1])[0] for i in rows])
+        assert whole[rows].tobytes() == alone.tobytes()
+    assert np.isfinite(mesh.face_normals(v, f)).all()
+    bad = f.copy()
+    bad[-3, 1] = len(v)
+    with pytest.raises(ValueError, match=f"faces row {len(f) - 3} refers to vertex {len(v)}"):
+        mesh.face_normals(v, bad)
 
 
 @pytest.mark.parametrize("rows", [0, 1, 511, 512, 513, 1025, 5000])
@@ -162,12 +185,16 @@ def test_degenerate_rows_are_zero_never_nan():
     assert mesh.face_normals(v, f, tol=0)[4].tolist() == [0.0, 0.0, 1.0]
 
 
-def test_degenerate_test_uses_the_sine_of_the_edge_angle():
-    s = 1e-6  # sine of the angle at A is s / sqrt(1 + s**2)
+def test_degenerate_test_is_n_over_the_longest_edge_squared():
+    s = 1e-6  # |N| = s, and the longest edge is A to C: L² = 1 + s²
     v = np.array([[0, 0, 0], [1, 0, 0], [1, s, 0]])
-    sine = s / math.sqrt(1 + s * s)
-    assert mesh.degenerate_faces(v, [[0, 1, 2]], tol=sine * 1.001)[0]
-    assert not mesh.degenerate_faces(v, [[0, 1, 2]], tol=sine * 0.999)[0]
+    ratio = s / (1 + s * s)
+    assert mesh.degenerate_faces(v, [[0, 1, 2]], tol=ratio * 1.001)[0]
+    assert not mesh.degenerate_faces(v, [[0, 1, 2]], tol=ratio * 0.999)[0]
+    # a right angle at A does not save a needle: |N| / L² = 1e-13 (the sine at A is 1)
+    needle = [[0, 0, 0], [1, 0, 0], [0, 1e-13, 0]]
+    assert mesh.degenerate_faces(needle, [[0, 1, 2]]).tolist() == [True]
+    assert not mesh.degenerate_faces(needle, [[0, 1, 2]], tol=1e-14)[0]
 
 
 @pytest.mark.parametrize("k", [-1000, -600, -300, -60, 0, 60, 300, 600, 1000])
@@ -211,10 +238,14 @@ def test_far_from_origin_and_mixed_scales_in_one_mesh():
     )
     v = np.vstack([v, [[1.7e308, -1.7e308, 0], [-1.7e308, -1.7e308, 0], [0, 1.7e308, 0]]])
     f = np.array([[0, 1, 2], [0, 3, 4], [0, 5, 2], [6, 7, 8]])
-    # face 2 has edges of length 1e300 and 1e-200 at 45 degrees; face 3 overflows B - A
+    # face 2 has edges of length 1e300 and 1e-200 at 45 degrees: a needle (|N| / L² = 1e-500),
+    # degenerate by default, with its normal back when tol = 0; face 3 overflows B - A
     n = mesh.face_normals(v, f)
-    np.testing.assert_allclose(n, [[0, 0, 1], [0, -1, 0], [0, 0, 1], [0, 0, -1]], rtol=0, atol=EPS)
-    assert not mesh.degenerate_faces(v, f).any()
+    np.testing.assert_allclose(n, [[0, 0, 1], [0, -1, 0], [0, 0, 0], [0, 0, -1]], rtol=0, atol=EPS)
+    assert mesh.degenerate_faces(v, f).tolist() == [False, False, True, False]
+    n0 = mesh.face_normals(v, f, tol=0)
+    np.testing.assert_allclose(n0, [[0, 0, 1], [0, -1, 0], [0, 0, 1], [0, 0, -1]], rtol=0, atol=EPS)
+    assert not mesh.degenerate_faces(v, f, tol=0).any()
     raw = mesh.face_normals(v, f, unit=False)
     assert not np.isnan(raw).any()
     assert raw[1, 1] == -np.inf  # |N| = 1e400 is beyond the float range: an honest -inf

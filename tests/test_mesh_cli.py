@@ -95,6 +95,34 @@ def test_bad_files_exit_2_with_one_line(args, message):
     assert "Traceback" not in p.stderr
 
 
+@pytest.mark.parametrize("content", [b"", b"solid x\nendsolid x\n"])
+def test_a_file_with_no_faces_exits_2(tmp_path, content):
+    path = tmp_path / "empty.stl"
+    path.write_bytes(content)
+    p = run("mesh", str(path))
+    assert (p.returncode, p.stdout) == (2, "")
+    assert (
+        p.stderr
+        == f"trinormal: error: {path}: the file has no faces: there is no surface to check\n"
+    )
+
+
+def test_a_note_goes_to_stderr_and_the_json_keeps_its_keys(tmp_path):
+    path = tmp_path / "zero.stl"
+    mesh.write_mesh(path, *mesh.cube())  # a binary STL of 12 triangles
+    good = path.read_bytes()
+    path.write_bytes(good[:80] + bytes(4) + good[84:])  # a triangle count of 0
+    note = f"trinormal: note: {path}: the header's triangle count is 0, but the file holds 12"
+    for args in ((), ("--json",)):
+        p = run("mesh", str(path), *args)
+        assert p.returncode == 0, p.stderr
+        assert p.stderr.startswith(note) and p.stderr.count("\n") == 1
+    assert list(json.loads(p.stdout)) == [
+        "file", "format", "encoding", "polygons", "polygons_split", "report",
+    ]  # fmt: skip
+    assert json.loads(p.stdout)["report"]["n_faces"] == 12
+
+
 def test_without_numpy_one_line_names_the_extra():
     code = (
         "import sys; sys.modules['numpy'] = None\n"

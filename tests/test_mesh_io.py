@@ -203,6 +203,83 @@ def test_obj_negative_indices_count_back_from_the_latest_vertex():
     assert m.faces.tolist() == [[0, 1, 2], [1, 3, 2]]
 
 
+# --------------------------------------------------------------------------- lenient where STL allows
+
+
+def _binary_stl(n_triangles: int, count: int | None = None, extra: bytes = b"") -> bytes:
+    """A binary STL of ``n_triangles`` distinct triangles whose header gives ``count``."""
+    rec = np.zeros(n_triangles, dtype=stl._STL_RECORD)
+    rec["corners"] = np.arange(9 * n_triangles, dtype=np.float32).reshape(-1, 3, 3) ** 1.5
+    n = n_triangles if count is None else count
+    return b" " * 80 + struct.pack("<I", n) + rec.tobytes() + extra
+
+
+def test_an_exact_binary_stl_has_no_notes():
+    m = mesh.parse_mesh(_binary_stl(3), "stl", "m.stl")
+    assert m.faces.shape == (3, 3) and m.notes == ()
+
+
+@pytest.mark.parametrize("count", [0, 1, 2, 4, 1000, 2**32 - 1])
+def test_whole_records_are_read_whatever_the_count_says(count):
+    m = mesh.parse_mesh(_binary_stl(3, count), "stl", "m.stl")
+    assert m.faces.shape == (3, 3)
+    assert (m.vertices[m.faces] == mesh.parse_mesh(_binary_stl(3), "stl").vertices[m.faces]).all()
+    assert m.notes == (
+        f"m.stl: the header's triangle count is {count:,}, but the file holds 3: its 150 bytes "
+        "after the header are whole 50-byte triangle records, and all were read",
+    )
+
+
+@pytest.mark.parametrize("extra", range(1, 50))
+def test_fewer_than_50_bytes_after_the_counted_records_are_ignored(extra):
+    m = mesh.parse_mesh(_binary_stl(2, extra=bytes(range(extra))), "stl", "m.stl")
+    assert m.faces.shape == (2, 3)
+    word = "byte" if extra == 1 else "bytes"
+    assert m.notes == (
+        f"m.stl: ignored the last {extra} {word}: fewer than the 50 of a triangle record",
+    )
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        _binary_stl(2, 0, bytes(7)),  # the count is wrong, and a record is cut short
+        _binary_stl(2, 3, bytes(49)),  # a third record cut short
+        _binary_stl(0, 4),  # a header and nothing else
+    ],
+)
+def test_any_other_size_is_not_an_stl_file(data):
+    with pytest.raises(
+        MeshFileError, match=rf"^m\.stl: not an STL file: .* has {len(data)} bytes\)$"
+    ):
+        mesh.parse_mesh(data, "stl", "m.stl")
+
+
+@pytest.mark.parametrize(
+    "data,fmt",
+    [
+        (b"", "obj"),
+        (b"", "stl"),
+        (b"", "ply"),
+        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "obj"),
+        (b"solid x\nendsolid x\n", "stl"),
+        (_binary_stl(0), "stl"),
+        (_binary_stl(0, 0, bytes(30)), "stl"),
+        (
+            b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+            b"property float z\nend_header\n0 0 0\n",
+            "ply",
+        ),
+    ],
+)
+def test_a_file_with_no_faces_is_an_error(data, fmt):
+    with pytest.raises(
+        MeshFileError, match=r"^e: the file has no faces: there is no surface to check$"
+    ) as err:
+        mesh.parse_mesh(data, fmt, "e")
+    assert err.value.key == "no_faces"
+
+
 # --------------------------------------------------------------------------- round trips
 
 
@@ -252,7 +329,7 @@ def test_text_files_keep_every_digit(tmp_path):
         ("two_corners.stl", r"two_corners\.stl, line 6: the facet starting at line 3 has 2"),
         (
             "truncated.stl",
-            r"truncated\.stl: not an STL file: .*\(3 triangles would take 234 bytes; this file has 184 bytes",
+            r"truncated\.stl: not an STL file: .*\(3 triangles would take 234 bytes; this file has 183 bytes",
         ),
         ("png_renamed.ply", r"png_renamed\.ply, line 1: not a PLY file"),
         (

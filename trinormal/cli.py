@@ -110,12 +110,12 @@ def _write(stream: Any, text: str) -> None:
 _MAX_MESSAGE = 300
 
 
-def _error(message: str) -> None:
-    """Print one error line on stderr, whatever stderr can encode."""
+def _error(message: str, kind: str = "error") -> None:
+    """Print one error line (or, with ``kind="note"``, a note) on stderr, whatever it can encode."""
     message = " ".join(message.split("\n"))
     if len(message) > _MAX_MESSAGE:  # argparse echoes arguments whole: never a screenful
         message = message[: _MAX_MESSAGE - 1] + "…"
-    line = "trinormal: error: " + message
+    line = f"trinormal: {kind}: " + message
     with contextlib.suppress(OSError, ValueError):  # stderr itself is gone: nothing to do
         _write(sys.stderr, line + "\n")
 
@@ -149,8 +149,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--tol",
         default=None,
-        help="degeneracy threshold on the sine of the angle between U and V "
-        f"(default {DEFAULT_TOL})",
+        help="degeneracy threshold: degenerate when |N| <= tol · L², L the longest side, "
+        f"in any order of the corners (default {DEFAULT_TOL})",
     )
     p.add_argument(
         "--arithmetic",
@@ -345,6 +345,8 @@ def _run_mesh(args_in: list[str]) -> int:
     except ValueError as exc:  # MeshFileError and bad arrays: one line, status 2
         _error(str(exc))
         return 2
+    for note in data.notes:  # what the reader forgave: on stderr, so stdout keeps its form
+        _error(note, "note")
     if args.json:
         out: dict[str, Any] = {
             "file": data.path,

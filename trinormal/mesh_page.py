@@ -8,8 +8,8 @@ puts `site_constants()` into ``trinormal-constants.js``.
 
 Examples
 --------
->>> MESSAGES["no_faces"].format(name="model.stl")
-'model.stl has no faces: there is no surface to check.'
+>>> MESSAGES["too_many_faces"].format(name="model.stl", count="6,000,000", max="5,000,000")[:44]
+'model.stl has 6,000,000 faces; this page che'
 >>> LIMITS["max_faces"]
 5000000
 """
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from trinormal.mesh.io import READ_ERRORS
+from trinormal.mesh.io import READ_ERRORS, READ_NOTES
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
 from trinormal.tolerances import DEFAULT_TOL
@@ -68,10 +68,13 @@ def file_size(n: int) -> str:
 #: `trinormal.mesh.io.READ_ERRORS` itself, the templates `trinormal.mesh.MeshFileError` fills
 #: for the same file: the page writes "NAME: REASON" or "NAME, line N: REASON" as Python does,
 #: and the browser tests check that both say the same on every bad file of
-#: ``tests/data/meshes/bad/``. The others are the page's own (its limits, its progress and its
-#: buttons).
+#: ``tests/data/meshes/bad/``. The notes on a file read leniently (``stl_count``,
+#: ``stl_trailing``) are `trinormal.mesh.io.READ_NOTES`, written "NAME: NOTE" as
+#: `trinormal.mesh.MeshData.notes` holds them. The others are the page's own (its limits, its
+#: progress and its buttons).
 MESSAGES: dict[str, str] = {
     **READ_ERRORS,
+    **READ_NOTES,
     # the page's own
     "too_large": (
         "{name} is {size}; this page reads files of up to {max}. "
@@ -81,7 +84,6 @@ MESSAGES: dict[str, str] = {
         "{name} has {count} faces; this page checks up to {max}. "
         "The Python package (trinormal mesh FILE) has no such limit."
     ),
-    "no_faces": "{name} has no faces: there is no surface to check.",
     "index_range": "Face {face} uses vertex {index}, but the mesh has {count} vertices.",
     "internal": "This file could not be read: {detail}",
     "yes": "yes",

@@ -240,6 +240,24 @@ def test_a_bad_file_shows_pythons_message_not_a_crash(page, server, traffic, tmp
     assert not traffic.problems()
 
 
+def test_a_binary_stl_with_a_wrong_count_is_read_with_pythons_note(page, server, traffic, tmp_path):
+    from trinormal.mesh import cube, parse_mesh
+    from trinormal.mesh.io import _encode
+
+    good = _encode(*cube(), "stl", "binary")
+    data = good[:80] + bytes(4) + good[84:]  # a triangle count of 0, as some programs write
+    path = tmp_path / "zero-count.stl"
+    path.write_bytes(data)
+    open_page(page, server)
+    page.set_input_files("#tn-mesh-file", str(path))
+    page.wait_for_function("() => document.getElementById('tn-mesh').dataset.state === 'done'")
+    notes = parse_mesh(data, "stl", path.name).notes
+    assert len(notes) == 1
+    assert page.locator("#tn-mesh-status").inner_text() == notes[0]
+    assert reported(page) == python_report(path.name, data)[0]
+    assert not traffic.problems()
+
+
 def test_a_big_binary_stl_moves_the_progress_bar_and_turns_as_a_coarser_copy(
     page, server, traffic, tmp_path
 ):

@@ -29,10 +29,10 @@ The modules, each named for what it answers:
 
 The promises, for every normal computed here:
 
-* No NaN and no ``RuntimeWarning``, whatever the input. A degenerate face (the
-  sine of the angle between its edges is at most ``tol``, the scale-invariant
-  test of [`trinormal.tolerances`][trinormal.tolerances]) gets a zero normal; a vertex that
-  touches only degenerate faces gets a zero vertex normal.
+* No NaN and no ``RuntimeWarning``, whatever the input. A degenerate face
+  (``|N| <= tol · L²``, L its longest edge: the same verdict for every order of
+  its corners and at every scale) gets a zero normal; a vertex that touches
+  only degenerate faces gets a zero vertex normal.
 * Coordinates near 1e-200 or 1e200 still give correct unit normals: rows that
   would underflow or overflow are redone with their edges scaled by powers of
   two, which is exact.
@@ -41,8 +41,11 @@ The promises, for every normal computed here:
   input is computed and returned in float64.
 * Bad input raises a `ValueError` that names the first bad row.
 
-Speed comes from plain numpy: there is no Python loop over faces, only over
-blocks of them; `trinormal.mesh.normals` says how a mesh is split into blocks.
+Speed comes from plain numpy on one thread: the corners are gathered block by
+block, 8 192 faces at a time, so that every temporary stays in the CPU cache,
+and every operation writes in place. There is no Python loop over faces (only
+over blocks of them, and over the rare faces too close to the threshold for
+float64, which are decided exactly).
 
 Examples
 --------

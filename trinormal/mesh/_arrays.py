@@ -7,6 +7,7 @@ naming the first bad row, whichever function it reaches.
 
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any, Literal
 
 import numpy as np
@@ -71,20 +72,21 @@ def _box(v: FloatArray) -> FloatArray:
     """Return the smallest and the largest x, y and z of the contiguous (V, 3) ``v``: (2, 3).
 
     A reduction along the first axis of a (V, 3) array runs an inner loop of
-    three numbers per row, 20 times slower than this: the vertices are read
-    512 to a row, so the loop runs along 1 536 numbers, then the 512 minima
-    of each coordinate are reduced.
+    three numbers per row, about 20 times slower than this: the coordinates
+    are read 512 vertices to a row (the last, shorter row folded into the
+    first), so the loop runs along 1 536 numbers, then 512 vertices remain.
     """
     if v.shape[0] == 0:
         return np.zeros((2, 3))
-    w = _BOX_ROW
-    whole = v.shape[0] // w * w
-    parts = [v[whole:]] if whole < v.shape[0] else []
-    if whole:
-        wide = v[:whole].reshape(-1, 3 * w)
-        parts += [wide.min(axis=0).reshape(w, 3), wide.max(axis=0).reshape(w, 3)]
-    both = np.concatenate(parts)
-    box: FloatArray = np.stack([both.min(axis=0), both.max(axis=0)])
+    flat = v.reshape(-1)
+    width = 3 * min(_BOX_ROW, v.shape[0])
+    whole = flat.size // width * width
+    wide = flat[:whole].reshape(-1, width)
+    lo, hi = wide.min(axis=0), wide.max(axis=0)
+    tail = flat[whole:]  # x, y, z of the last vertices, in the same order as a row's start
+    np.minimum(lo[: tail.size], tail, out=lo[: tail.size])
+    np.maximum(hi[: tail.size], tail, out=hi[: tail.size])
+    box: FloatArray = np.stack([lo.reshape(-1, 3).min(axis=0), hi.reshape(-1, 3).max(axis=0)])
     return box
 
 
@@ -132,6 +134,11 @@ def _check_tol(tol: float) -> float:
     """Return the tolerance as a float, checked by `trinormal.validation.check_tolerance`."""
     n, d = check_tolerance(tol)
     return n / d  # 0 <= tol <= 1: no overflow
+
+
+def _exact_tol(tol: float) -> Fraction:
+    """Return the tolerance exactly as `trinormal.validation.check_tolerance` reads it."""
+    return Fraction(*check_tolerance(tol))
 
 
 def _cast(values: FloatArray, dtype: np.dtype[Any]) -> FloatArray:

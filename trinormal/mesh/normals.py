@@ -1,20 +1,24 @@
 """Face normals, degeneracy, areas and vertex normals of whole meshes.
 
+A mesh is two arrays: ``vertices``, shape (V, 3), the coordinates (float32 or
+float64; integers are read as float64), and ``faces``, shape (F, 3), each row
+the three vertex indices of a triangle in winding order. Results come back in
+the vertices' dtype. `face_normals` documents the pair once; the other
+functions take it as it does.
+
 The kernel `_face_rows` computes, block by block, whatever per-face output a
 caller asks for: unit normals, the degeneracy verdict, |N| and the interior
 angles. Every public function here is one call to it plus a little numpy.
+
+A face A, B, C is degenerate when ``|N| <= tol · L²``, with N = (B − A) × (C − A)
+and L the length of its longest edge: the same verdict whichever corner comes
+first and whichever way the face is wound, and the same at every scale.
 """
 
 from __future__ import annotations
 
 import math
-import os
-import sys
-import threading
-from collections.abc import Iterator
-from concurrent.futures import ThreadPoolExecutor
-from contextlib import contextmanager
-from dataclasses import dataclass
+from fractions import Fraction
 
 from trinormal._optional import missing_extra
 
@@ -30,7 +34,7 @@ from trinormal.mesh._arrays import (
     IntArray,
     Weighting,
     _cast,
-    _check_tol,
+    _exact_tol,
     _prepare,
     _raise_range_error,
 )
@@ -41,146 +45,120 @@ __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vert
 #: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 
-#: Faces per block: small enough that a block's scratch (18 numbers a face, 2.4 MB) stays in a
-#: core's cache, large enough that threads seldom wait for the interpreter lock between two numpy
-#: operations. Measured with benchmarks/bench_mesh.py: 8192 made two threads hardly faster than
-#: one, and 32 768 spilled out of the cache.
-_BLOCK = 16384
+#: Faces per block: a block's working arrays (24 numbers a face, 1.5 MB) stay in the CPU's
+#: caches from one step of the kernel to the next, while the Python work per block (a few
+#: dozen numpy calls) stays small beside the arithmetic.
+_BLOCK = 8192
 
-#: Meshes of at least this many blocks of `_BLOCK` are shared among threads, at most this many.
-_THREADED_BLOCKS = 8
-_MAX_THREADS = 4
-#: The interpreter's switch interval (seconds) while threads share a mesh; see `_handing_over`.
-_SWITCH_INTERVAL = 1e-4
-
-#: One vertex (or corner) as a single 24-byte record: x, y and z gathered by one take.
+#: One vertex as a single 24-byte record, so that one take gathers x, y and z of a corner.
 _RECORD = np.dtype((np.void, 24))
 
-# A row goes to the careful path unless |U|²|V|² < 2**900 (no product can
-# overflow) and |N|² > 2**-900 (|N| and the unit normal are full precision).
-_HI = 2.0**900
+# The kernel keeps a row when |N|² > 2**-900 and L² < 2**450: then no product overflows,
+# none underflows enough to matter, and |N| and N / |N| are full precision. `_careful`
+# redoes every other row with its edges scaled by powers of two.
 _LO = 2.0**-900
+_HI = 2.0**450
 
-# --------------------------------------------------------------------------- the kernel
+#: Half-width of the band around the threshold, as a fraction of L² (and of tol · L²), inside
+#: which the float test |N| <= tol · L² is not trusted. The float |N| and L² are within a few
+#: units of roundoff (2**-53) of the values for the exact corners, so outside the band the
+#: float verdict is the exact one; faces inside it are decided in exact arithmetic (`_exact`).
+_BAND = 2.0**-49
 
 
-class _Block:
-    """Scratch arrays for one block of up to ``n`` faces, reused block after block.
+def _band(tol: float) -> tuple[float, float]:
+    """Return ``(lo, hi)``: a float |N| below ``lo · L²`` is degenerate, above ``hi · L²`` not."""
+    return max(tol * (1 - _BAND) - _BAND, 0.0), tol * (1 + _BAND) + _BAND
 
-    Everything lives in one float buffer of 18 ``n`` numbers (and one bool
-    buffer), cut into the views below; `view` cuts the same memory for a
-    shorter last block. The edges and the normal are laid out coordinate by
-    coordinate (one contiguous row of ``n`` numbers per coordinate), so the
-    arithmetic runs on contiguous memory.
 
-    Attributes
-    ----------
-    records : ndarray (n, 3) of 24-byte records
-        The block's corners, one record (x, y, z) per corner, face by face
-        (A, B, C of the first face, then of the second, …): one take from the
-        vertices seen as records, instead of one take per coordinate.
-    corners : ndarray (n, 3, 3)
-        The same memory as numbers: ``corners[i, c, k]``, coordinate k of
-        corner c of face i.
-    edges : ndarray (2, 3, n)
-        ``edges[0, k]``, ``edges[1, k]``: coordinate k of U = B − A and V = C − A.
-    normal : ndarray (3, n)
-        N = U × V, in the corners' memory (free once the edges are taken).
-    rows3 : ndarray (3, n)
-        Scratch for three products at once, also in the corners' memory;
-        ``temp`` is its first row.
-    norm : ndarray (n,)
-        |N|², then |N|.
-    dot : ndarray (n,)
-        U · V.
-    bound : ndarray (n,)
-        |U|²|V|², then tol²|U|²|V|² (the degeneracy bound), then |U|² − U·V.
-    in_range, degenerate : ndarray of bool (n,)
-        Rows the fast arithmetic handles; rows whose sine is at most tol.
+def _sure(nn: FloatArray, l2: FloatArray, tol: float) -> tuple[BoolArray, BoolArray]:
+    """Return the faces surely not degenerate and those surely degenerate.
+
+    ``nn`` and ``l2`` are |N|² and L² = max(|U|², |V|², |W|²) computed in
+    float64 from a face's edges (all three scaled alike, by a power of two,
+    or not at all). Faces in neither mask are too close to the threshold for
+    floats. All three corners at one point (L² = 0) make a degenerate face.
     """
+    lo, hi = _band(tol)
+    l4 = l2 * l2
+    ok: BoolArray = nn > (hi * hi) * l4
+    below = (lo * lo) * l4
+    bad: BoolArray = ((nn < below) & (below > _LO)) | (l2 == 0.0)
+    return ok, bad
 
-    def __init__(self, n: int) -> None:
-        self._numbers = np.empty(18 * n)
-        self._flags = np.empty(2 * n, dtype=bool)
-        self._cut(n)
 
-    def _cut(self, n: int) -> None:
-        x = self._numbers
-        self.records = x[: 9 * n].view(_RECORD).reshape(n, 3)
-        self.corners = x[: 9 * n].reshape(n, 3, 3)
-        self.normal = x[: 3 * n].reshape(3, n)
-        self.rows3 = x[3 * n : 6 * n].reshape(3, n)
-        self.temp = self.rows3[0]
-        self.edges = x[9 * n : 15 * n].reshape(2, 3, n)
-        self.norm, self.dot, self.bound = x[15 * n : 16 * n], x[16 * n : 17 * n], x[17 * n : 18 * n]
-        self.in_range, self.degenerate = self._flags[:n], self._flags[n : 2 * n]
-        # the views the kernel takes every block, made once (they hold the interpreter lock)
-        self.first = self.corners[:, 0, :].T  # (3, n): A
-        self.others = self.corners[:, 1:3, :].transpose(1, 2, 0)  # (2, 3, n): B and C
-        self.u, self.v = self.edges
-        self.ux, self.uy, self.uz = self.u
-        self.vx, self.vy, self.vz = self.v
-        # N = U × V row by row: (N_k, U_i, V_j, U_j, V_i) with N_k = U_i V_j - U_j V_i
-        self.cross = [
-            (self.normal[0], self.uy, self.vz, self.uz, self.vy),
-            (self.normal[1], self.uz, self.vx, self.ux, self.vz),
-            (self.normal[2], self.ux, self.vy, self.uy, self.vx),
-        ]
+def _exact(corners: FloatArray, tol: Fraction) -> FloatArray | None:
+    """Return one face's unit normal computed exactly, or None when the face is degenerate.
 
-    def view(self, n: int) -> _Block:
-        """Return the scratch arrays for ``n`` faces, fewer than this block's, in its memory."""
-        out = object.__new__(_Block)
-        out._numbers, out._flags = self._numbers, self._flags
-        out._cut(n)
-        return out
+    ``corners`` (3, 3): A, B, C. Every float is an integer over a power of
+    two, so over the largest denominator among them the corners are integers,
+    and the rule |N| <= tol · L² is tested exactly, squared:
+    |N|² · d² <= n² · L⁴ for tol = n / d. The unit normal's components are
+    quotients of integers, correctly rounded.
+    """
+    ratios = [x.as_integer_ratio() for x in corners.ravel().tolist()]
+    den = max(d for _, d in ratios)
+    ax, ay, az, bx, by, bz, cx, cy, cz = (p * (den // d) for p, d in ratios)
+    u, v, w = (bx - ax, by - ay, bz - az), (cx - ax, cy - ay, cz - az), (cx - bx, cy - by, cz - bz)
+    n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    nn = sum(x * x for x in n)
+    l2 = max(sum(x * x for x in e) for e in (u, v, w))
+    if nn * tol.denominator**2 <= tol.numerator**2 * l2 * l2:
+        return None
+    k = max(0, 67 - nn.bit_length() // 2)  # |N| · 2**k to 67 bits or more
+    r = math.isqrt(nn << 2 * k)
+    return np.array([(x << k) / r for x in n])
+
+
+def _rowdot(p: FloatArray, q: FloatArray) -> FloatArray:
+    """Return the dot products of the rows of ``p`` and ``q`` (k, 3)."""
+    out: FloatArray = np.einsum("ij,ij->i", p, q)
+    return out
 
 
 def _careful(
-    x: FloatArray,
-    y: FloatArray,
-    z: FloatArray,
-    f: IntArray,
-    tol2: float,
-) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray, BoolArray]:
-    """Rows at extreme scales: edges scaled by powers of two before the cross product.
+    v: FloatArray, f: IntArray, tol: Fraction
+) -> tuple[FloatArray, BoolArray, FloatArray, IntArray, FloatArray]:
+    """Faces at extreme scales or near the threshold: edges scaled by powers of two first.
 
-    Returns the edges U', V' (k, 3) scaled by one common power of two and
-    |U' × V'| (k,), for the corner angles; the normal
-    scaled once more to a largest component in [0.5, 1), N'' (k, 3), with |N''|
-    and the exponent ``e`` such that N = N'' · 2**e; and the degeneracy mask.
+    Returns, for the faces ``f`` (k, 3): unit normals (k, 3), zero where
+    degenerate; the verdicts (k,); |N| = ``mag · 2**exp`` as ``mag`` (k,) and
+    ``exp`` (k,); the interior angles (k, 3).
     """
-    i0, i1, i2 = f[:, 0], f[:, 1], f[:, 2]
-    a = np.stack([x[i0], y[i0], z[i0]], axis=1)
-    b = np.stack([x[i1], y[i1], z[i1]], axis=1)
-    c = np.stack([x[i2], y[i2], z[i2]], axis=1)
-    with np.errstate(all="ignore"):
-        u, v = b - a, c - a
-        # differences of coordinates near the float64 limit can overflow: halve first (exact)
-        big = ~(np.isfinite(u).all(axis=1) & np.isfinite(v).all(axis=1))
-        pre = np.where(big, 2, 0)
-        if big.any():
-            u[big] = b[big] * 0.25 - a[big] * 0.25
-            v[big] = c[big] * 0.25 - a[big] * 0.25
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    u, w, x = b - a, c - a, c - b  # U, V, W
+    # differences of coordinates near the float64 limit can overflow: quarter them first (exact)
+    big = ~(np.isfinite(u).all(axis=1) & np.isfinite(w).all(axis=1) & np.isfinite(x).all(axis=1))
+    if big.any():
+        a4, b4, c4 = a[big] * 0.25, b[big] * 0.25, c[big] * 0.25
+        u[big], w[big], x[big] = b4 - a4, c4 - a4, c4 - b4
     eu = np.frexp(np.abs(u).max(axis=1))[1]
-    ev = np.frexp(np.abs(v).max(axis=1))[1]
-    # for the corner angles: both edges scaled alike, so their dot products compare
+    ev = np.frexp(np.abs(w).max(axis=1))[1]
+    # the verdict and the angles: the three edges scaled alike, so their products compare
     common = np.maximum(eu, ev)[:, None]
-    uc, vc = np.ldexp(u, -common), np.ldexp(v, -common)
+    uc, vc, wc = np.ldexp(u, -common), np.ldexp(w, -common), np.ldexp(x, -common)
     nc = np.cross(uc, vc)
-    nn = np.sqrt(np.einsum("ij,ij->i", nc, nc))
-    u = np.ldexp(u, -eu[:, None])
-    v = np.ldexp(v, -ev[:, None])
-    n = np.cross(u, v)
-    uu = np.einsum("ij,ij->i", u, u)
-    vv = np.einsum("ij,ij->i", v, v)
+    nn = _rowdot(nc, nc)
+    l2 = np.maximum(np.maximum(_rowdot(uc, uc), _rowdot(vc, vc)), _rowdot(wc, wc))
+    ok, bad = _sure(nn, l2, float(tol))
+    uv, nc_len = _rowdot(uc, vc), np.sqrt(nn)
+    ang_a, ang_b = np.arctan2(nc_len, uv), np.arctan2(nc_len, _rowdot(uc, uc) - uv)
+    angles = np.stack([ang_a, ang_b, math.pi - (ang_a + ang_b)], axis=1)
+    # the normal: each edge scaled on its own, so a huge edge and a tiny one keep their product
+    n = np.cross(np.ldexp(u, -eu[:, None]), np.ldexp(w, -ev[:, None]))
     en = np.frexp(np.abs(n).max(axis=1))[1]
     ns = np.ldexp(n, -en[:, None])
-    mag = np.sqrt(np.einsum("ij,ij->i", ns, ns))
-    # the sine test on the scaled edges: |N'|² <= tol² |U'|² |V'|² (exact scale invariance)
-    deg = np.einsum("ij,ij->i", n, n) <= tol2 * uu * vv
-    deg |= mag == 0.0
-    exp = (eu + ev + en + 2 * pre).astype(np.intp)
-    return uc, vc, nn, ns, mag, exp, deg
+    mag = np.sqrt(_rowdot(ns, ns))
+    exp = (eu + ev + en + np.where(big, 2, 0)).astype(np.intp)
+    unit = ns / np.where(mag == 0.0, 1.0, mag)[:, None]
+    degenerate = ~ok
+    for i in np.flatnonzero(~(ok | bad)):  # too near the threshold for floats
+        exact = _exact(v[f[i]], tol)
+        degenerate[i] = exact is None
+        if exact is not None:
+            unit[i] = exact
+    unit[degenerate] = 0.0
+    return unit, degenerate, mag, exp, angles
 
 
 def _normalize_rows(s: FloatArray) -> FloatArray:
@@ -193,94 +171,6 @@ def _normalize_rows(s: FloatArray) -> FloatArray:
     return out
 
 
-def _workers(n_blocks: int) -> int:
-    """How many threads share the blocks: numpy releases the GIL inside each operation."""
-    if n_blocks < _THREADED_BLOCKS:
-        return 1
-    try:
-        cores = len(os.sched_getaffinity(0))
-    except AttributeError:  # not on Linux
-        cores = os.cpu_count() or 1
-    return max(1, min(cores, _MAX_THREADS, n_blocks // 2))
-
-
-#: Full-size blocks' scratch kept between calls, at most one per thread (`_scratch`, `_keep`).
-_spare: list[_Block] = []
-_spare_lock = threading.Lock()
-
-
-def _scratch(n: int) -> _Block:
-    """Return scratch for blocks of ``n`` faces: a kept one when ``n`` is a full block.
-
-    A fresh block's 2.4 MB are new pages, which the system maps one fault at
-    a time when first written: measured here, 1 230 faults and 4 ms on a call
-    that takes 17 ms with kept scratch.
-    """
-    if n == _BLOCK:
-        with _spare_lock:
-            if _spare:
-                return _spare.pop()
-    return _Block(n)
-
-
-def _keep(w: _Block) -> None:
-    """Keep a full block's scratch for the next call (up to `_MAX_THREADS` of them)."""
-    if w.norm.size == _BLOCK:
-        with _spare_lock:
-            if len(_spare) < _MAX_THREADS:
-                _spare.append(w)
-
-
-_switch_lock = threading.Lock()
-_switch_depth = 0
-_switch_saved = 0.0
-_switch_applied = 0.0
-
-
-@contextmanager
-def _handing_over() -> Iterator[None]:
-    """Shorten the interpreter's switch interval while threads share a mesh, then restore it.
-
-    Threads running numpy take the interpreter lock back between two
-    operations. A thread that finds it taken sleeps; by the time it wakes,
-    the other has often taken the lock again, and it sleeps once more. With
-    the usual 5 ms interval a sleeper asks the holder for the lock only after
-    5 ms; with 100 µs it asks soon, and the holder hands the lock over at
-    once. Measured with benchmarks/bench_mesh.py on a million faces and two
-    cores: about 120 sleeps per call fell to about 20, and the best call took
-    16 ms instead of 18-19 ms.
-
-    Calls from several threads at once share one saved value: the first one
-    in saves it, the last one out restores it, unless something else changed
-    the interval meanwhile (then that change stays). An interval already
-    shorter than ours is left alone.
-    """
-    global _switch_depth, _switch_saved, _switch_applied
-    with _switch_lock:
-        if _switch_depth == 0:
-            _switch_saved = sys.getswitchinterval()
-            sys.setswitchinterval(min(_switch_saved, _SWITCH_INTERVAL))
-            _switch_applied = sys.getswitchinterval()
-        _switch_depth += 1
-    try:
-        yield
-    finally:
-        with _switch_lock:
-            _switch_depth -= 1
-            if _switch_depth == 0 and sys.getswitchinterval() == _switch_applied:
-                sys.setswitchinterval(_switch_saved)
-
-
-@dataclass
-class _Outputs:
-    """Where `_face_rows` writes: any of the four per-face results (None: not wanted)."""
-
-    unit: FloatArray | None
-    degenerate: BoolArray | None
-    magnitude: FloatArray | None
-    angles: FloatArray | None
-
-
 def _dot(x: FloatArray, y: FloatArray, out: FloatArray, rows3: FloatArray) -> None:
     """Write x · y of (3, n) rows into ``out``: three products at once, then x + y + z in turn."""
     np.multiply(x, y, out=rows3)
@@ -288,132 +178,11 @@ def _dot(x: FloatArray, y: FloatArray, out: FloatArray, rows3: FloatArray) -> No
     np.add(out, rows3[2], out=out)
 
 
-def _box_bound(box: FloatArray, tol2: float) -> float:
-    """Return the |N|² above which a face in ``box`` is neither degenerate nor out of range.
-
-    Each edge's components are at most the box's extents, so |U|² and |V|² are
-    at most ``s``, the sum of the extents' squares, and |U|²|V|² at most ``s²``
-    (times 1 + 2**-20, far more than the rounding of any |N|² + (U·V)²
-    computed from them). A face with |N|² above ``tol² s²`` passes the sine
-    test ``|N|² > tol² |U|²|V|²`` that `_face_block` would apply row by row:
-    the same verdict, without U·V. Infinite when the box is too large or too
-    small for that argument (then each block is bounded by its own edges).
-    """
-    with np.errstate(all="ignore"):
-        span = box[1] - box[0]
-        s = float((span * span).sum())
-    return _clear_threshold(s, s, tol2)
-
-
-def _clear_threshold(su: float, sv: float, tol2: float) -> float:
-    """Return the |N|² above which faces with |U|² <= ``su``, |V|² <= ``sv`` are clear (or inf)."""
-    bound = su * sv * (1.0 + 2.0**-20)  # Python floats: an overflow is inf, quietly
-    if not (min(su, sv) > _LO and bound < _HI):  # (NaN fails too)
-        return math.inf
-    return max(_LO, tol2 * bound)
-
-
-def _clear_block(edges: FloatArray, low: float, tol2: float) -> bool:
-    """Whether no face of a block can be degenerate or out of the fast path's range.
-
-    `_box_bound` for a block: here the bound on every |U|²|V|² is the product
-    of the sums of squares of the block's own largest edge components, so it
-    holds where the mesh's box is far larger than its faces. ``low`` is the
-    block's smallest |N|².
-    """
-    with np.errstate(all="ignore"):
-        top = np.maximum(edges.max(axis=2), -edges.min(axis=2))  # (2, 3): largest |U_k|, |V_k|
-        su, sv = (top * top).sum(axis=1)
-    return bool(low > _clear_threshold(float(su), float(sv), tol2))
-
-
-def _face_block(
-    w: _Block,
-    records: npt.NDArray[np.void],
-    f: IntArray,
-    s: int,
-    e: int,
-    tol2: float,
-    clear_above: float,
-    out: _Outputs,
-) -> IntArray | None:
-    """Compute faces ``s`` to ``e`` into ``out``; return the rows the careful path must redo.
-
-    ``records``: the vertices as 24-byte records. ``clear_above``: `_box_bound`.
-    Floating-point warnings are the caller's to silence (once per thread, not per block).
-    """
-    nv = records.size
-    mul, sub, add = np.multiply, np.subtract, np.add
-    unit_out, deg_out, mag_out, angles_out = out.unit, out.degenerate, out.magnitude, out.angles
-    index = f[s:e]
-    # one test for both ends: a negative index, read as unsigned, is beyond any count
-    if index.view(np.uintp).max() >= nv:
-        _raise_range_error(f, nv)
-    # short local names for the block's arrays (see _Block): the kernel reads as formulas.
-    # Outputs are passed by position: numpy parses that faster than out=, and every
-    # microsecond here holds the interpreter lock that the other threads wait for.
-    n, ss, d, q, t, t3 = w.normal, w.norm, w.dot, w.bound, w.temp, w.rows3
-    u, v = w.u, w.v
-    np.take(records, index, None, w.records, "clip")  # x, y, z of every corner
-    sub(w.others, w.first, w.edges)  # U = B - A, V = C - A
-    for nk, ui, vj, uj, vi in w.cross:  # N = U × V (into the corners' memory, free now)
-        mul(ui, vj, nk)
-        mul(uj, vi, t)
-        sub(nk, t, nk)
-    _dot(n, n, ss, t3)  # |N|²
-    low = ss.min()
-    clear = bool(low > clear_above) or _clear_block(w.edges, low, tol2)
-    careful = False
-    if not clear or angles_out is not None:
-        _dot(u, v, d, t3)  # U·V
-    if clear:  # no face of the block is degenerate or out of range
-        if deg_out is not None:
-            deg_out[s:e] = False
-    else:
-        # |U|²|V|² = |N|² + (U·V)² (Lagrange); outside the safe range: the careful path
-        mul(d, d, out=q)
-        add(q, ss, out=q)
-        # (NaN fails every comparison, so it goes to the careful path too)
-        careful = not (q.max() < _HI and ss.min() > _LO)
-        if careful:
-            np.less(q, _HI, out=w.in_range)
-            np.greater(ss, _LO, out=w.degenerate)
-            np.logical_and(w.in_range, w.degenerate, out=w.in_range)
-        # degenerate: |N|² <= tol² |U|²|V|²
-        mul(q, tol2, out=q)
-        np.less_equal(ss, q, out=w.degenerate)
-        if deg_out is not None:
-            deg_out[s:e] = w.degenerate
-    np.sqrt(ss, ss)  # |N|
-    if mag_out is not None:
-        mag_out[s:e] = ss
-    if angles_out is not None:
-        # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
-        ang = angles_out[s:e]
-        np.arctan2(ss, d, out=ang[:, 0])
-        _dot(u, u, q, t3)  # |U|²
-        sub(q, d, out=q)
-        np.arctan2(ss, q, out=ang[:, 1])
-        add(ang[:, 0], ang[:, 1], out=t)
-        sub(math.pi, t, out=ang[:, 2])
-    if unit_out is not None:
-        rows_out = unit_out[s:e]
-        # N / |N|, correctly rounded (a product with 1/|N| rounds twice), written
-        # straight into the (faces, 3) rows
-        np.divide(n, ss, rows_out.T)
-        if not clear and w.degenerate.any():
-            rows_out[w.degenerate] = 0.0
-    if careful:
-        rows: IntArray = s + np.flatnonzero(~w.in_range)
-        return rows
-    return None
-
-
 def _face_rows(
     vertices: FloatArray,
     f: IntArray,
     box: FloatArray,
-    tol: float,
+    tol: Fraction,
     unit_out: FloatArray | None = None,
     deg_out: BoolArray | None = None,
     mag_out: FloatArray | None = None,
@@ -422,74 +191,96 @@ def _face_rows(
     """Fill the requested per-face outputs; return the magnitude exponents if any are nonzero.
 
     ``unit_out`` (F, 3) unit normals (zero rows where degenerate), ``deg_out``
-    (F,) degeneracy, ``mag_out`` (F,) |N| as a mantissa (times ``2**exp``),
+    (F,) the verdicts, ``mag_out`` (F,) |N| as a mantissa (times ``2**exp``),
     ``angles_out`` (F, 3) the interior angle at each corner. ``box``: the
     vertices' bounding box (`_arrays._box`).
 
-    Blocks of faces are independent: on a big mesh, a few threads (this one
-    among them) each take the next block as they finish one (every face is
-    computed the same way whichever thread does it, so the result never
-    depends on the threads). Rows at extreme scales are redone afterwards by
-    `_careful`.
+    Blocks of `_BLOCK` faces go through the same few in-place steps, on
+    arrays laid out coordinate by coordinate. A block whose smallest |N|² is
+    above ``clear`` has no face near the threshold or out of range (every
+    edge component is at most the box's extent, so L² <= ``reach``); any other
+    block is judged face by face, and its out-of-range and borderline faces
+    are redone by `_careful`.
     """
-    nf = f.shape[0]
-    tol2 = tol * tol
-    exps: IntArray | None = None
-    records = vertices.reshape(-1).view(_RECORD)  # vertex i: one record (x, y, z), no copy
-    clear_above = _box_bound(box, tol2)
-    out = _Outputs(unit_out, deg_out, mag_out, angles_out)
-    block, workers = _BLOCK, _workers(len(range(0, nf, _BLOCK)))
-    starts = list(range(0, nf, block))
-
-    def run(share: Iterator[int]) -> list[IntArray]:
-        full = _scratch(min(block, max(nf, 1)))
-        found = []
-        try:
-            with np.errstate(all="ignore"):  # per thread: numpy keeps it in a context variable
-                for s in share:
-                    e = min(s + block, nf)
-                    w = full if e - s == block else full.view(e - s)
-                    rows = _face_block(w, records, f, s, e, tol2, clear_above, out)
-                    if rows is not None:
-                        found.append(rows)
-        finally:
-            _keep(full)
-        return found
-
-    if workers == 1:
-        found = run(iter(starts))
-    else:
-        # the threads, this one among them, take the next block as each finishes one (one
-        # shared iterator: taking from it is atomic), so none waits on a slower one at the end
-        queue = iter(starts)
-        with _handing_over(), ThreadPoolExecutor(workers - 1) as pool:
-            helpers = [pool.submit(run, queue) for _ in range(workers - 1)]
-            found = run(queue)
-            for h in helpers:
-                found += h.result()
-    if not found:
-        return None
-    at = np.concatenate(found)
-    x, y, z = vertices.T
+    nf, nv, t = f.shape[0], vertices.shape[0], float(tol)
+    with np.errstate(over="ignore", invalid="ignore"):
+        span = box[1] - box[0]
+        reach = float(span @ span)  # L² <= reach for every face
+    hi = _band(t)[1]
+    # |N|² above this clears a face: 1 + 2**-20 covers the rounding of reach and of each L²
+    clear = max(_LO, hi * hi * reach * reach * (1 + 2.0**-20)) if reach < _HI else math.inf
+    m = min(_BLOCK, nf)
+    work = np.empty(24 * m)  # a block's working arrays, cut from one allocation per call
+    corners = work[: 9 * m].reshape(m, 3, 3)  # face, corner (A, B, C), coordinate
+    records = corners.reshape(-1).view(_RECORD).reshape(m, 3)  # the same memory, corner by corner
+    edges = work[9 * m : 15 * m].reshape(2, 3, m)  # U = B - A, V = C - A, coordinate by coordinate
+    normal, rows3 = work[15 * m : 18 * m].reshape(3, m), work[18 * m : 21 * m].reshape(3, m)
+    nn, dot, aux = work[21 * m : 22 * m], work[22 * m : 23 * m], work[23 * m :]
+    vertex_records = vertices.reshape(-1).view(_RECORD)  # vertex i as one record: no copy
+    redo = []
     with np.errstate(all="ignore"):
-        uc, vc, nn, ns, mag, exp, deg = _careful(x, y, z, f[at], tol2)
+        for s0 in range(0, nf, _BLOCK):
+            s1 = min(s0 + _BLOCK, nf)
+            k = s1 - s0
+            index = f[s0:s1]
+            if index.view(np.uintp).max() >= nv:  # a negative index, read as unsigned, is huge
+                _raise_range_error(f, nv)
+            c, (u, v), n, p = corners[:k], edges[:, :, :k], normal[:, :k], rows3[:, :k]
+            q, d, r = nn[:k], dot[:k], aux[:k]
+            np.take(vertex_records, index, 0, records[:k], "clip")
+            np.subtract(c[:, 1:].transpose(1, 2, 0), c[:, 0].T, edges[:, :, :k])
+            for row, (i, j) in enumerate(((1, 2), (2, 0), (0, 1))):  # N = U × V
+                np.multiply(u[i], v[j], n[row])
+                np.multiply(u[j], v[i], p[0])
+                np.subtract(n[row], p[0], n[row])
+            _dot(n, n, q, p)  # |N|²
+            degenerate = None
+            if not q.min() > clear:  # (or NaN) judge face by face: L² = max(|U|², |V|², |W|²)
+                _dot(u, u, d, p)
+                _dot(v, v, r, p)
+                np.maximum(d, r, out=r)
+                wv = c[:, 2].T - c[:, 1].T  # W = C - B
+                _dot(wv, wv, d, p)
+                np.maximum(d, r, out=r)
+                ok, bad = _sure(q, r, t)
+                degenerate = ~ok
+                redo.append(s0 + np.flatnonzero(~((ok | bad) & (q > _LO) & (r < _HI))))
+            if deg_out is not None:
+                deg_out[s0:s1] = False if degenerate is None else degenerate
+            np.sqrt(q, q)  # |N|
+            if mag_out is not None:
+                mag_out[s0:s1] = q
+            if angles_out is not None:
+                # angle at A: atan2(|N|, U·V); at B: atan2(|N|, |U|² - U·V); C: the rest of π
+                ang = angles_out[s0:s1]
+                _dot(u, v, d, p)
+                np.arctan2(q, d, out=ang[:, 0])
+                _dot(u, u, r, p)
+                np.subtract(r, d, out=r)
+                np.arctan2(q, r, out=ang[:, 1])
+                np.add(ang[:, 0], ang[:, 1], out=r)
+                np.subtract(math.pi, r, out=ang[:, 2])
+            if unit_out is not None:
+                rows = unit_out[s0:s1]
+                np.divide(n, q, rows.T)  # N / |N|, correctly rounded, into the (F, 3) rows
+                if degenerate is not None:
+                    rows[degenerate] = 0.0
+    at = np.concatenate(redo) if redo else np.empty(0, dtype=np.intp)
+    if at.size == 0:
+        return None
+    with np.errstate(all="ignore"):
+        unit, deg, mag, exp, angles = _careful(vertices, f[at], tol)
+    if unit_out is not None:
+        unit_out[at] = unit
     if deg_out is not None:
         deg_out[at] = deg
-    if mag_out is not None:
-        exps = np.zeros(nf, dtype=np.intp)
-        mag_out[at] = mag
-        exps[at] = exp
-    if unit_out is not None:
-        safe = np.where(mag == 0.0, 1.0, mag)
-        unit_out[at] = np.where(deg[:, None], 0.0, ns / safe[:, None])
     if angles_out is not None:
-        uv = np.einsum("ij,ij->i", uc, vc)
-        uu = np.einsum("ij,ij->i", uc, uc)
-        ang_a = np.arctan2(nn, uv)
-        ang_b = np.arctan2(nn, uu - uv)
-        angles_out[at, 0] = ang_a
-        angles_out[at, 1] = ang_b
-        angles_out[at, 2] = math.pi - (ang_a + ang_b)
+        angles_out[at] = angles
+    if mag_out is None:
+        return None
+    mag_out[at] = mag
+    exps = np.zeros(nf, dtype=np.intp)
+    exps[at] = exp
     return exps
 
 
@@ -514,7 +305,8 @@ def face_normals(
         True: unit normals N / |N|. False: the raw N, whose length is twice the
         face's area (the weight the guide recommends keeping for averaging).
     tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
-        Degeneracy threshold on the sine of the angle between the two edges.
+        Degeneracy threshold: a face is degenerate when ``|N| <= tol · L²``,
+        L its longest edge (see `degenerate_faces`).
 
     Returns
     -------
@@ -554,7 +346,7 @@ def face_normals(
     >>> face_normals(np.array(v) * 1e-200, [[0, 1, 2]])
     array([[0., 0., 1.]])
     """
-    t = _check_tol(tol)
+    t = _exact_tol(tol)
     v, f, dtype, box = _prepare(vertices, faces)
     nf = f.shape[0]
     if unit:
@@ -574,25 +366,28 @@ def face_normals(
 def degenerate_faces(
     vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TOL
 ) -> BoolArray:
-    """Which faces are degenerate: the sine of the angle between their edges is at most ``tol``.
+    """Which faces are degenerate: ``|N| <= tol · L²``, L the length of the longest edge.
 
-    The test ``|N| <= tol · |U| · |V|`` is the one
-    [`trinormal.triangle_normal`][trinormal.core.triangle_normal]
-    uses; it does not depend on the mesh's scale or position's units.
+    |N| / L² is at most sin 60° (an equilateral face has the most), so the test
+    flags faces that are nearly collinear or that have one edge much shorter
+    than the others, whichever corner is listed first and whichever way the
+    face is wound. It does not depend on the mesh's scale or position. Faces
+    so close to the threshold that float64 rounding could change the verdict
+    are decided in exact arithmetic.
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh, as in `face_normals`.
     tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
-        Sine threshold; ``0`` flags only faces whose computed N is exactly zero.
+        Threshold on |N| / L²; ``0`` flags only faces whose exact N is zero
+        (collinear or coincident corners).
 
     Returns
     -------
     ndarray of bool, shape (F,)
-        True where the face has no trustworthy normal.
+        True where the face has no trustworthy normal (`face_normals` gives it
+        a zero row).
 
     Examples
     --------
@@ -600,12 +395,18 @@ def degenerate_faces(
     >>> degenerate_faces(v, [[0, 1, 2], [0, 1, 3], [0, 0, 2]])
     array([False,  True,  True])
 
+    A needle, one edge 1e-13 long, is degenerate in every order of its corners:
+
+    >>> needle = [[0, 0, 0], [1, 0, 0], [0, 1e-13, 0]]
+    >>> degenerate_faces(needle, [[0, 1, 2], [1, 2, 0], [2, 0, 1], [0, 2, 1]])
+    array([ True,  True,  True,  True])
+
     The verdict does not change with the scale:
 
     >>> degenerate_faces(np.array(v) * 1e-150, [[0, 1, 2], [0, 1, 3]])
     array([False,  True])
     """
-    t = _check_tol(tol)
+    t = _exact_tol(tol)
     v, f, _, box = _prepare(vertices, faces)
     out = np.empty(f.shape[0], dtype=bool)
     _face_rows(v, f, box, t, deg_out=out)
@@ -617,10 +418,9 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh (shapes (V, 3) and (F, 3); see `face_normals`). Winding does
+        not matter: an area is never negative.
 
     Returns
     -------
@@ -639,7 +439,7 @@ def face_areas(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> FloatArray:
     """
     v, f, dtype, box = _prepare(vertices, faces)
     mag = np.empty(f.shape[0])
-    exps = _face_rows(v, f, box, DEFAULT_TOL, mag_out=mag)
+    exps = _face_rows(v, f, box, _exact_tol(DEFAULT_TOL), mag_out=mag)
     with np.errstate(over="ignore", under="ignore"):
         area = np.ldexp(mag, (exps if exps is not None else 0) - 1)
     return _cast(area, dtype)
@@ -655,16 +455,15 @@ def vertex_normals(
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh, as in `face_normals`: each face adds its normal to its three
+        corners, so its winding decides which way that normal points.
     weighting : {"angle", "area", "uniform"}, default "angle"
         How much each face counts at a vertex: its interior angle there
         (Thürmer and Wüthrich; independent of how the surface is
         triangulated), its area, or the same for every face.
     tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
-        Degenerate faces (sine test) contribute nothing.
+        Degenerate faces (see `degenerate_faces`) contribute nothing.
 
     Returns
     -------
@@ -696,7 +495,7 @@ def vertex_normals(
     """
     if weighting not in WEIGHTINGS:
         raise ValueError(f"weighting must be one of {', '.join(WEIGHTINGS)}; got {weighting!r}")
-    t = _check_tol(tol)
+    t = _exact_tol(tol)
     v, f, dtype, box = _prepare(vertices, faces)
     nv, nf = v.shape[0], f.shape[0]
     unit = np.empty((nf, 3))

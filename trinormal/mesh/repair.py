@@ -11,6 +11,10 @@ Only edges shared by exactly two faces carry a verdict: a boundary edge has
 no neighbour, and an edge shared by three faces or more cannot be walked once
 each way by all of them. A piece that cannot be wound consistently at all,
 like a Möbius strip, is left as it is.
+
+Both functions take a mesh as `trinormal.mesh.face_normals` does:
+``vertices``, shape (V, 3), and ``faces``, shape (F, 3), vertex indices in
+winding order.
 """
 
 from __future__ import annotations
@@ -139,10 +143,9 @@ def fix_winding(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> tuple[IntArray
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates (used only to tell outward from inward).
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh. Which faces agree comes from ``faces`` alone; the coordinates
+        only tell outward from inward.
 
     Returns
     -------
@@ -198,14 +201,13 @@ def signed_volume(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> float:
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+    vertices, faces : array_like
+        The mesh; turning every face over negates the result.
 
     Returns
     -------
     float
+        The volume in the coordinates' unit cubed; 0.0 for no faces.
 
     Examples
     --------

@@ -97,8 +97,9 @@ class MeshReport:
     coincident_faces : ndarray of int
         Faces with two corners at exactly the same point (or one vertex used twice).
     collinear_faces : ndarray of int
-        The other degenerate faces: corners on one line, or so nearly that the
-        sine of the angle between the edges is at most ``tol`` (the core's test).
+        The other degenerate faces: corners on one line, or so nearly that
+        ``|N| <= tol · L²``, N the face's normal and L its longest side (see
+        `trinormal.mesh.degenerate_faces`).
     duplicate_faces, reversed_duplicate_faces : ndarray of int
         Faces repeating an earlier face's three vertices, wound the same way
         or only the other way (see `trinormal.mesh.duplicate_faces`).
@@ -215,6 +216,8 @@ class MeshReport:
         Returns
         -------
         str
+            The findings, one paragraph each; a paragraph's wrapped lines are
+            indented by two spaces.
 
         Examples
         --------
@@ -372,13 +375,13 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
 
     Parameters
     ----------
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
-    faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle, in winding order.
+    vertices, faces : array_like
+        The mesh, shapes (V, 3) and (F, 3), as `trinormal.mesh.face_normals`
+        takes them; the report's indices refer to these rows.
     tol : float, default ``trinormal.tolerances.DEFAULT_TOL``
-        Degeneracy threshold on the sine of the angle between a face's edges:
-        the same scale-free test as `trinormal.triangle_normal`.
+        Degeneracy threshold: a face is degenerate when ``|N| <= tol · L²``,
+        N its normal and L its longest side, whatever the mesh's scale (see
+        `trinormal.mesh.degenerate_faces`).
 
     Returns
     -------

@@ -14,9 +14,11 @@ walks ``i → j``, ``j → k`` and ``k → i``.
 * In a *consistently wound* piece, every edge shared by two faces is walked
   once each way.
 
-A face that uses one vertex twice, like ``(4, 4, 7)``, has no edges in this
-sense (it is a degenerate face, reported by `trinormal.mesh.check`): every
-function here leaves it out.
+Every public function here takes one argument, ``faces``: an array_like of
+int, shape (F, 3), each row the three vertex indices of a triangle in winding
+order. A face that uses one vertex twice, like ``(4, 4, 7)``, has no edges in
+this sense (it is a degenerate face, reported by `trinormal.mesh.check`):
+every function here leaves it out.
 
 Examples
 --------
@@ -211,13 +213,13 @@ def boundary_edges(faces: npt.ArrayLike) -> IntArray:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles; the winding of the one face on an edge sets its direction.
 
     Returns
     -------
     ndarray of int, shape (B, 2)
-        Each boundary edge as its face walks it, ``(from, to)``, sorted by
-        their vertices. A closed surface has none.
+        Each boundary edge as ``(from, to)``, sorted by those two vertices;
+        empty for a closed surface.
 
     Examples
     --------
@@ -246,7 +248,7 @@ def non_manifold_edges(faces: npt.ArrayLike) -> IntArray:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles, wound either way: only how many faces share an edge counts.
 
     Returns
     -------
@@ -295,12 +297,12 @@ def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles. Winding does not matter.
 
     Returns
     -------
     ndarray of int, shape (k,)
-        Those vertices, sorted.
+        The pinch points: vertex indices with two fans or more, in increasing order.
 
     Examples
     --------
@@ -326,7 +328,7 @@ def connected_components(faces: npt.ArrayLike) -> IntArray:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles; two faces sharing an edge are in one piece however each is wound.
 
     Returns
     -------
@@ -350,7 +352,7 @@ def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles, compared as sets of three vertices (and then by winding).
 
     Returns
     -------
@@ -362,6 +364,8 @@ def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
         (``(0, 2, 1)`` after ``(0, 1, 2)``): together they are a sheet with
         no inside, whose normals cancel.
 
+    Notes
+    -----
     Every face after the first with its three vertices is in exactly one of
     the two lists. Faces that use a vertex twice are left out.
 
@@ -413,12 +417,13 @@ def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles in winding order: face ``(i, j, k)`` walks ``i → j``.
 
     Returns
     -------
     ndarray of int, shape (E, 2)
-        Each offending directed edge ``(i, j)`` once, sorted.
+        Every directed edge ``(i, j)`` that two faces or more walk, once each;
+        rows sorted.
 
     Examples
     --------
@@ -445,7 +450,7 @@ def consistent_winding(faces: npt.ArrayLike) -> bool:
     Parameters
     ----------
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        The triangles, as in `inconsistent_edges`.
 
     Returns
     -------

@@ -354,7 +354,7 @@ function mount(root) {
         if (stage === "check" && f === 0) setStatus(message("checking", { name }));
         progress(stage, f);
       });
-      const shown = showResult(res);
+      const shown = showResult(res, res.notes.join(" ")); // what the reader forgave, if anything
       setBusy(false);
       root.dataset.state = "done";
       await shown;

@@ -47,6 +47,7 @@ function payload(mesh, faces, report, file) {
     binary: !!mesh.binary,
     polygons: mesh.polygons,
     split_polygons: mesh.split_polygons,
+    notes: mesh.notes,
     report: TrinormalMesh.toDict(report),
     positions,
     faces: faceCopy,

@@ -18,86 +18,214 @@
   var Growable = I.Growable;
 
   // ------------------------------------------------------------------ each face: normal and degeneracy
+  //
+  // trinormal/mesh/normals.py, operation for operation. A face A, B, C is degenerate when
+  // |N| <= tol · L², N = (B − A) × (C − A) and L its longest edge: one verdict whatever the
+  // order of the corners. The float test is trusted outside a narrow band around the
+  // threshold; faces inside it, or at extreme scales, take the careful path, and the faces
+  // still undecided there are decided in exact (BigInt) arithmetic.
 
-  // A face goes to the careful path unless |U|²|V|² < 2**900 and |N|² > 2**-900 (normals.py).
-  var TWO_900 = Math.pow(2, 900);
+  // A face stays on the fast path when |N|² > 2**-900 and L² < 2**450 (normals.py's _LO, _HI).
   var TWO_M900 = Math.pow(2, -900);
-  var frexpBuf = new Float64Array(1);
-  var frexpU32 = new Uint32Array(frexpBuf.buffer);
+  var TWO_450 = Math.pow(2, 450);
+  // The band: a float |N| below LO_T · L² is degenerate, above HI_T · L² not (normals.py's _band).
+  var BAND = Math.pow(2, -49);
+  var LO_T = Math.max(TOL * (1 - BAND) - BAND, 0.0);
+  var HI_T = TOL * (1 + BAND) + BAND;
+  var f64 = new Float64Array(1);
+  var u32 = new Uint32Array(f64.buffer);
+
+  /** 1: surely not degenerate, -1: surely degenerate, 0: too near the threshold (_sure). */
+  function sure(nn, l2) {
+    var l4 = l2 * l2;
+    if (nn > HI_T * HI_T * l4) return 1;
+    var below = LO_T * LO_T * l4;
+    return (nn < below && below > TWO_M900) || l2 === 0.0 ? -1 : 0;
+  }
 
   /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
   function frexpExp(x) {
     if (x === 0 || !Number.isFinite(x)) return 0;
-    frexpBuf[0] = x;
-    var e = (frexpU32[1] >>> 20) & 0x7ff;
+    f64[0] = x;
+    var e = (u32[1] >>> 20) & 0x7ff;
     if (e === 0) {
-      // subnormal: scale up first
-      frexpBuf[0] = x * Math.pow(2, 64);
-      e = ((frexpU32[1] >>> 20) & 0x7ff) - 64;
+      f64[0] = x * 18446744073709551616; // 2**64: a subnormal made normal, exactly
+      e = ((u32[1] >>> 20) & 0x7ff) - 64;
     }
     return e - 1022;
   }
 
-  /** x * 2**e, exact while the result is a normal number: the power split so no step overflows. */
+  /** 2**e for -1074 <= e <= 1023, built from its bits (exact). */
+  function pow2(e) {
+    u32[0] = 0;
+    u32[1] = 0;
+    if (e >= -1022) u32[1] = (e + 1023) << 20;
+    else if (e >= -1042) u32[1] = 1 << (e + 1074 - 32);
+    else u32[0] = 1 << (e + 1074);
+    return f64[0];
+  }
+
+  /** x * 2**e rounded once, as C's ldexp (numpy.ldexp): exact unless the result is subnormal. */
   function ldexp(x, e) {
-    while (e > 1000) { x *= Math.pow(2, 1000); e -= 1000; }
-    while (e < -1000) { x *= Math.pow(2, -1000); e += 1000; }
-    return x * Math.pow(2, e);
+    if (x === 0 || !Number.isFinite(x) || e === 0) return x;
+    var ex = frexpExp(x);
+    var t = ex + e; // x * 2**e = m * 2**t with m in [0.5, 1)
+    if (t > 1024) return x * Infinity;
+    if (t < -1074) return x * 0; // below half the smallest subnormal: zero, with x's sign
+    var m = ex < -1000 ? x * 18446744073709551616 * pow2(-ex - 64) : x * pow2(-ex);
+    return t === 1024 ? m * 2 * pow2(1023) : m * pow2(t);
   }
 
-  /** (x, y, z) scaled by 2**-e, e the frexp exponent of its largest magnitude: [x, y, z, e]. */
-  function scaled(x, y, z) {
-    var e = frexpExp(Math.max(Math.abs(x), Math.abs(y), Math.abs(z)));
-    return [ldexp(x, -e), ldexp(y, -e), ldexp(z, -e), e];
+  function ldexp3(p, e) {
+    return [ldexp(p[0], e), ldexp(p[1], e), ldexp(p[2], e)];
+  }
+
+  function maxAbs(p) {
+    return Math.max(Math.abs(p[0]), Math.abs(p[1]), Math.abs(p[2]));
+  }
+
+  function cross(p, q) {
+    return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
   }
 
   /**
-   * x·y of two rows as numpy's einsum("ij,ij->i") adds it in Python's careful path: two lanes
-   * at a time, so (x0 y0 + x2 y2) + x1 y1 (the fast path adds in order, as written here).
+   * p·q of two rows as numpy's einsum("ij,ij->i") adds it in normals.py's _careful (its
+   * _rowdot): two lanes at a time, so (p0 q0 + p2 q2) + p1 q1. The fast path adds in order.
    */
-  function einsumDot(x, y) {
-    return x[0] * y[0] + x[2] * y[2] + x[1] * y[1];
+  function einsumDot(p, q) {
+    return p[0] * q[0] + p[2] * q[2] + p[1] * q[1];
   }
 
-  /**
-   * A face at an extreme scale (normals.py's _careful): its edges scaled by powers of two
-   * before the cross product (exact), halved first when their differences overflow. Writes
-   * its unit normal into normals[at..at+2] (when given); returns whether it is degenerate.
-   */
-  function careful(V, i0, i1, i2, tol2, normals, at) {
-    var u = [V[i1] - V[i0], V[i1 + 1] - V[i0 + 1], V[i1 + 2] - V[i0 + 2]];
-    var v = [V[i2] - V[i0], V[i2 + 1] - V[i0 + 1], V[i2 + 2] - V[i0 + 2]];
-    if (!u.concat(v).every(Number.isFinite)) {
-      for (var k = 0; k < 3; k++) {
-        u[k] = V[i1 + k] * 0.25 - V[i0 + k] * 0.25;
-        v[k] = V[i2 + k] * 0.25 - V[i0 + k] * 0.25;
-      }
+  // ---- exact arithmetic for the faces too near the threshold (normals.py's _exact)
+
+  function bitLength(n) {
+    return n === 0n ? 0 : n.toString(2).length;
+  }
+
+  /** A finite x as [M, E], x = M * 2**E exactly, M an odd BigInt (or [0n, 0]): as_integer_ratio. */
+  function binaryRatio(x) {
+    if (x === 0) return [0n, 0];
+    f64[0] = Math.abs(x);
+    var bits = (BigInt(u32[1] & 0xfffff) << 32n) | BigInt(u32[0]);
+    var be = (u32[1] >>> 20) & 0x7ff;
+    var m = be === 0 ? bits : bits | (1n << 52n);
+    var e = (be === 0 ? 1 : be) - 1075;
+    while ((m & 1n) === 0n) {
+      m >>= 1n;
+      e++;
     }
-    u = scaled(u[0], u[1], u[2]);
-    v = scaled(v[0], v[1], v[2]);
+    return [x < 0 ? -m : m, e];
+  }
+
+  /** The largest integer r with r * r <= n (Python's math.isqrt). */
+  function isqrt(n) {
+    if (n < 2n) return n;
+    var x = 1n << BigInt(Math.ceil(bitLength(n) / 2));
+    for (;;) {
+      var y = (x + n / x) >> 1n;
+      if (y >= x) return x;
+      x = y;
+    }
+  }
+
+  /** a / b correctly rounded to a double (b > 0), as Python's int / int. */
+  function divide(a, b) {
+    if (a === 0n) return 0;
+    var neg = a < 0n;
+    if (neg) a = -a;
+    var s = 55 - (bitLength(a) - bitLength(b)); // the quotient to 55 or 56 bits
+    var num = s >= 0 ? a << BigInt(s) : a;
+    var den = s >= 0 ? b : b << BigInt(-s);
+    var q = num / den;
+    var inexact = num % den !== 0n;
+    var top = bitLength(q) - 1 - s; // a / b in [2**top, 2**(top + 1))
+    var keep = top >= -1022 ? 53 : 53 - (-1022 - top); // fewer bits for a subnormal
+    if (keep < 0) return neg ? -0 : 0;
+    var drop = bitLength(q) - keep;
+    var m = q >> BigInt(drop);
+    var rest = q - (m << BigInt(drop));
+    var half = drop > 0 ? 1n << BigInt(drop - 1) : 0n;
+    if (drop > 0 && (rest > half || (rest === half && (inexact || (m & 1n) === 1n)))) m += 1n;
+    var out = ldexp(Number(m), drop - s);
+    return neg ? -out : out;
+  }
+
+  var TOL_RATIO = binaryRatio(TOL); // tol = n / d exactly, as check_tolerance reads the float
+  var TOL_N = TOL_RATIO[1] >= 0 ? TOL_RATIO[0] << BigInt(TOL_RATIO[1]) : TOL_RATIO[0];
+  var TOL_D = TOL_RATIO[1] >= 0 ? 1n : 1n << BigInt(-TOL_RATIO[1]);
+
+  /**
+   * One face's unit normal computed exactly, or null when it is degenerate: the corners as
+   * integers over their largest denominator (a power of two), |N|² d² <= n² L⁴ for tol = n / d,
+   * and each component a quotient of integers, correctly rounded.
+   */
+  function exact(corners) {
+    var ratios = corners.map(binaryRatio);
+    var den = 0;
+    ratios.forEach(function (r) { if (r[0] !== 0n && -r[1] > den) den = -r[1]; });
+    var p = ratios.map(function (r) { return r[0] << BigInt(r[1] + den); });
+    var u = [p[3] - p[0], p[4] - p[1], p[5] - p[2]];
+    var v = [p[6] - p[0], p[7] - p[1], p[8] - p[2]];
+    var w = [p[6] - p[3], p[7] - p[4], p[8] - p[5]];
     var n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-    var ns = scaled(n[0], n[1], n[2]);
+    var sq = function (e) { return e[0] * e[0] + e[1] * e[1] + e[2] * e[2]; };
+    var nn = sq(n);
+    var l2 = [sq(u), sq(v), sq(w)].reduce(function (x, y) { return x > y ? x : y; });
+    if (nn * TOL_D * TOL_D <= TOL_N * TOL_N * l2 * l2) return null;
+    var k = Math.max(0, 67 - Math.floor(bitLength(nn) / 2)); // |N| * 2**k to 67 bits or more
+    var r = isqrt(nn << BigInt(2 * k));
+    return n.map(function (x) { return divide(x << BigInt(k), r); });
+  }
+
+  /**
+   * A face at an extreme scale or near the threshold (normals.py's _careful): its edges scaled
+   * by powers of two (exact), quartered first when their differences overflow. Writes its unit
+   * normal into normals[at..at+2] (when given); returns whether it is degenerate.
+   */
+  function careful(V, i0, i1, i2, normals, at) {
+    var a = [V[i0], V[i0 + 1], V[i0 + 2]], b = [V[i1], V[i1 + 1], V[i1 + 2]], c = [V[i2], V[i2 + 1], V[i2 + 2]];
+    var sub = function (p, q) { return [p[0] - q[0], p[1] - q[1], p[2] - q[2]]; };
+    var quarter = function (p) { return [p[0] * 0.25, p[1] * 0.25, p[2] * 0.25]; };
+    var u = sub(b, a), w = sub(c, a), x = sub(c, b); // U, V, W
+    if (!u.concat(w, x).every(Number.isFinite)) {
+      u = sub(quarter(b), quarter(a));
+      w = sub(quarter(c), quarter(a));
+      x = sub(quarter(c), quarter(b));
+    }
+    var eu = frexpExp(maxAbs(u)), ev = frexpExp(maxAbs(w));
+    // the verdict: the three edges scaled alike, so that their products compare
+    var common = Math.max(eu, ev);
+    var uc = ldexp3(u, -common), vc = ldexp3(w, -common), wc = ldexp3(x, -common);
+    var nc = cross(uc, vc);
+    var verdict = sure(einsumDot(nc, nc), Math.max(Math.max(einsumDot(uc, uc), einsumDot(vc, vc)), einsumDot(wc, wc)));
+    // the normal: each edge scaled on its own
+    var n = cross(ldexp3(u, -eu), ldexp3(w, -ev));
+    var ns = ldexp3(n, -frexpExp(maxAbs(n)));
     var mag = Math.sqrt(einsumDot(ns, ns));
-    var deg = einsumDot(n, n) <= tol2 * einsumDot(u, u) * einsumDot(v, v) || mag === 0;
+    if (mag === 0) mag = 1;
+    var unit = [ns[0] / mag, ns[1] / mag, ns[2] / mag];
+    var deg = verdict !== 1;
+    if (verdict === 0) {
+      unit = exact(a.concat(b, c));
+      deg = unit === null;
+    }
     if (normals && !deg) {
-      normals[at] = ns[0] / mag;
-      normals[at + 1] = ns[1] / mag;
-      normals[at + 2] = ns[2] / mag;
+      normals[at] = unit[0];
+      normals[at + 1] = unit[1];
+      normals[at + 2] = unit[2];
     }
     return deg;
   }
 
   /**
-   * Every face's verdict: 0 proper, 1 two corners at one point, 2 degenerate otherwise (the
-   * sine of the angle between its edges is at most tol); and, when `normals` (3 numbers per
-   * face) is given, its unit normal there, zero when degenerate. The arithmetic of
-   * trinormal.mesh.normals: the same operations in the same order, so the same verdicts and
-   * the same bits of every normal.
+   * Every face's verdict: 0 proper, 1 two corners at one point, 2 degenerate otherwise
+   * (|N| <= tol · L²); and, when `normals` (3 numbers per face) is given, its unit normal
+   * there, zero when degenerate. The arithmetic of trinormal.mesh.normals: the same
+   * operations in the same order, so the same verdicts and the same bits of every normal.
    */
   function faceRows(vertices, faces, normals) {
     var nf = faces.length / 3;
     var kind = new Uint8Array(nf);
-    var tol2 = TOL * TOL;
     var V = vertices;
     for (var f = 0; f < nf; f++) {
       var i0 = 3 * faces[3 * f], i1 = 3 * faces[3 * f + 1], i2 = 3 * faces[3 * f + 2];
@@ -110,18 +238,19 @@
       }
       var ux = bx - ax, uy = by - ay, uz = bz - az;
       var vx = cx - ax, vy = cy - ay, vz = cz - az;
+      var wx = cx - bx, wy = cy - by, wz = cz - bz;
       var nx = uy * vz - uz * vy;
       var ny = uz * vx - ux * vz;
       var nz = ux * vy - uy * vx;
-      var ss = nx * nx + ny * ny + nz * nz;
-      var d = ux * vx + uy * vy + uz * vz;
-      var q = d * d + ss; // |U|²|V|² (Lagrange)
-      if (!(q < TWO_900 && ss > TWO_M900)) {
-        if (careful(V, i0, i1, i2, tol2, normals, 3 * f)) kind[f] = 2;
-      } else if (ss <= q * tol2) {
+      var nn = nx * nx + ny * ny + nz * nz;
+      var l2 = Math.max(Math.max(ux * ux + uy * uy + uz * uz, vx * vx + vy * vy + vz * vz), wx * wx + wy * wy + wz * wz);
+      var verdict = sure(nn, l2);
+      if (!(verdict !== 0 && nn > TWO_M900 && l2 < TWO_450)) {
+        if (careful(V, i0, i1, i2, normals, 3 * f)) kind[f] = 2;
+      } else if (verdict < 0) {
         kind[f] = 2;
       } else if (normals) {
-        var m = Math.sqrt(ss); // N / |N|, correctly rounded, as Python divides
+        var m = Math.sqrt(nn); // N / |N|, correctly rounded, as Python divides
         normals[3 * f] = nx / m;
         normals[3 * f + 1] = ny / m;
         normals[3 * f + 2] = nz / m;

@@ -15,7 +15,7 @@
   var MeshError = base.MeshError;
   var message = base.message;
   var grouped = base.grouped;
-  var fileError = I.fileError, fail = I.fail, plural = I.plural, show = I.show;
+  var fileError = I.fileError, plural = I.plural, show = I.show;
   var splitlines = I.splitlines, tokens = I.tokens, pyFloat = I.pyFloat, pyInt = I.pyInt;
   var number = I.number, text = I.text, latin1 = I.latin1, Growable = I.Growable;
 
@@ -181,7 +181,13 @@
     var view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     if (bytes.length >= 84) {
       var n = view.getUint32(80, true);
-      if (bytes.length === 84 + 50 * n) {
+      var notes = [];
+      if (bytes.length !== 84 + 50 * n && !looksLikeText(bytes)) {
+        var held = recordsIn(bytes.length, n, name);
+        n = held.n;
+        notes = held.notes;
+      }
+      if (bytes.length === 84 + 50 * n || notes.length) {
         // a binary STL, even when its header starts with "solid"
         I.checkFaceCount(name, n);
         var corners = new Float64Array(9 * n);
@@ -195,21 +201,34 @@
           }
         }
         var merged = mergeCorners(corners, function (p) { progress(0.4 + 0.6 * p); });
-        return { vertices: merged.vertices, faces: merged.faces, polygons: n, split_polygons: 0, binary: true };
+        return { vertices: merged.vertices, faces: merged.faces, polygons: n, split_polygons: 0, binary: true, notes: notes };
       }
     }
+    if (!looksLikeText(bytes)) fileError(name, null, "stl_short", {});
+    return readStlAscii(bytes, name, progress);
+  }
+
+  /** Whether the file can be a text STL: it starts with "solid" and has no NUL byte. */
+  function looksLikeText(bytes) {
     var start = 0;
     while (start < bytes.length && (bytes[start] === 32 || (bytes[start] >= 9 && bytes[start] <= 13))) start++;
     var head = "";
     for (var j = start; j < Math.min(start + 5, bytes.length); j++) head += String.fromCharCode(bytes[j]);
-    if (head.toLowerCase() !== "solid" || bytes.indexOf(0) >= 0) {
-      if (bytes.length >= 84) {
-        var m = view.getUint32(80, true);
-        fileError(name, null, "stl_not_stl", { count: grouped(m), expected: grouped(84 + 50 * m), size: grouped(bytes.length) });
-      }
-      fileError(name, null, "stl_short", {});
+    return head.toLowerCase() === "solid" && bytes.indexOf(0) < 0;
+  }
+
+  /**
+   * How many triangles a binary STL of `size` bytes whose count `n` disagrees with its size
+   * holds, and the note (stl.py's _records_in): the bytes after the header are whole 50-byte
+   * records, or the n records and fewer than 50 bytes more; any other size is not an STL file.
+   */
+  function recordsIn(size, n, name) {
+    var whole = Math.floor((size - 84) / 50), extra = (size - 84) % 50;
+    if (extra === 0 && whole > 0) {
+      return { n: whole, notes: [name + ": " + message("stl_count", { count: grouped(n), records: grouped(whole), size: grouped(size - 84) })] };
     }
-    return readStlAscii(bytes, name, progress);
+    if (whole === n) return { n: n, notes: [name + ": " + message("stl_trailing", { extra: extra, bytes: extra === 1 ? "byte" : "bytes" })] };
+    fileError(name, null, "stl_not_stl", { count: grouped(n), expected: grouped(84 + 50 * n), size: grouped(size) });
   }
 
   function readStlAscii(bytes, name, progress) {
@@ -509,7 +528,7 @@
    * Read a mesh file. `buffer` is an ArrayBuffer (or Uint8Array), `name` the file name; the
    * format comes from the name's extension, as in Python's read_mesh. Returns {format, binary,
    * vertices: Float64Array (3 per vertex), faces: Uint32Array (3 per triangle), polygons,
-   * split_polygons}; throws MeshError with Python's sentence (or the page's own, for its limits).
+   * split_polygons, notes: Python's MeshData.notes}; throws MeshError with Python's sentence (or the page's own, for its limits).
    */
   function read(buffer, name, onProgress) {
     var bytes = buffer instanceof Uint8Array ? buffer : new Uint8Array(buffer);
@@ -518,10 +537,12 @@
     if (FORMATS.indexOf(ext) < 0) fileError(name, null, "unknown_format", { ext: ext ? "." + ext : message("no_extension", {}) });
     var tooLarge = base.sizeProblem(name, bytes.length);
     if (tooLarge) throw new MeshError(tooLarge);
+    if (bytes.length === 0) fileError(name, null, "no_faces", {});
     var mesh = ext === "obj" ? readObj(bytes, name, progress) : ext === "stl" ? readStl(bytes, name, progress) : readPly(bytes, name, progress);
     mesh.format = ext;
     mesh.name = name;
-    if (mesh.faces.length === 0) fail("no_faces", { name: name });
+    mesh.notes = mesh.notes || [];
+    if (mesh.faces.length === 0) fileError(name, null, "no_faces", {});
     I.checkFaceCount(name, mesh.faces.length / 3);
     return mesh;
   }

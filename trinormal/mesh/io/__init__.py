@@ -49,7 +49,7 @@ import os
 import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray, _check_faces, _check_vertices
-from trinormal.mesh.io.errors import OTHER_ERRORS, READ_ERRORS, MeshFileError
+from trinormal.mesh.io.errors import OTHER_ERRORS, READ_ERRORS, READ_NOTES, MeshFileError
 from trinormal.mesh.io.mesh_data import MeshData
 from trinormal.mesh.io.obj import _encode_obj, _read_obj
 from trinormal.mesh.io.ply import _encode_ply, _read_ply
@@ -59,6 +59,7 @@ __all__ = [
     "FORMATS",
     "OTHER_ERRORS",
     "READ_ERRORS",
+    "READ_NOTES",
     "SAMPLES",
     "MeshData",
     "MeshFileError",
@@ -158,6 +159,12 @@ def parse_mesh(data: bytes, format: str, name: str = "<bytes>") -> MeshData:
     -------
     MeshData
 
+    Raises
+    ------
+    MeshFileError
+        The bytes are not a valid file of the format, or hold no faces (an
+        empty file among them): there is no surface to check.
+
     Examples
     --------
     >>> m = parse_mesh(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "obj")
@@ -167,13 +174,19 @@ def parse_mesh(data: bytes, format: str, name: str = "<bytes>") -> MeshData:
     Traceback (most recent call last):
     ...
     trinormal.mesh.io.errors.MeshFileError: <bytes>, line 2: face 1 refers to vertex 2, but ...
+    >>> parse_mesh(b"", "stl", "empty.stl")
+    Traceback (most recent call last):
+    ...
+    trinormal.mesh.io.errors.MeshFileError: empty.stl: the file has no faces: there is no ...
     """
     fmt = _format_of(name, format)
-    if fmt == "obj":
-        return _read_obj(data, name)
-    if fmt == "stl":
-        return _read_stl(data, name)
-    return _read_ply(data, name)
+    if not data:
+        raise MeshFileError.of(name, "no_faces")
+    read = _read_obj if fmt == "obj" else _read_stl if fmt == "stl" else _read_ply
+    mesh = read(data, name)
+    if mesh.faces.shape[0] == 0:
+        raise MeshFileError.of(name, "no_faces")
+    return mesh
 
 
 def _format_of(name: str, format: str | None) -> str:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-__all__ = ["OTHER_ERRORS", "READ_ERRORS", "MeshFileError"]
+__all__ = ["OTHER_ERRORS", "READ_ERRORS", "READ_NOTES", "MeshFileError"]
 
 #: Why a file's content cannot be read, as templates: the one wording of every reason
 #: `MeshFileError` gives for a file's bytes, and (through `trinormal.mesh_page.MESSAGES`, which
@@ -32,6 +32,7 @@ READ_ERRORS: dict[str, str] = {
     "obj_statement": "{token} is not an OBJ statement",
     "obj_empty": "no vertices and no faces: not an OBJ mesh",
     "obj_index_range": "face {face} refers to vertex {index}, but the file has {count} {vertices}",
+    "no_faces": "the file has no faces: there is no surface to check",
     "stl_not_finite": "triangle {triangle} has a coordinate that is not finite",
     "stl_not_stl": (
         "not an STL file: a text STL starts with 'solid', and a binary STL's size follows from "
@@ -70,6 +71,17 @@ READ_ERRORS: dict[str, str] = {
     "ply_too_many": "this '{element}' row has {count} values too many",
     "ply_binary_short": "the file ends inside the '{element}' element ({rows} of {count} rows)",
     "ply_binary_row": "the file ends inside '{element}' row {row} of {count}",
+}
+
+#: What a reader says of a file it reads although it breaks its format where the format
+#: allows leniency, as templates. `MeshData.notes` holds them filled in, each as
+#: "NAME: NOTE"; the site's page says the same (`trinormal.mesh_page.MESSAGES` includes them).
+READ_NOTES: dict[str, str] = {
+    "stl_count": (
+        "the header's triangle count is {count}, but the file holds {records}: its {size} bytes "
+        "after the header are whole 50-byte triangle records, and all were read"
+    ),
+    "stl_trailing": "ignored the last {extra} {bytes}: fewer than the 50 of a triangle record",
 }
 
 #: What only Python says: about the path, the ``format`` argument and writing (the site's page

@@ -38,6 +38,10 @@ class MeshData:
         How many faces the file lists (before splitting).
     path : str
         The file's name.
+    notes : tuple of str
+        What the reader forgave, one sentence each ("NAME: NOTE", from
+        `trinormal.mesh.io.READ_NOTES`): a binary STL whose triangle count
+        disagrees with its size, for one. Empty for a file read as it is.
     """
 
     vertices: FloatArray = field(repr=False)
@@ -47,6 +51,7 @@ class MeshData:
     source_faces: IntArray = field(repr=False)
     n_polygons: int
     path: str
+    notes: tuple[str, ...] = ()
 
     @property
     def split_polygons(self) -> int:

@@ -9,11 +9,12 @@ the same edges, holes and pieces as the same model saved as OBJ.
 from __future__ import annotations
 
 import struct
+from dataclasses import replace
 
 import numpy as np
 
 from trinormal.mesh._arrays import FloatArray, IntArray
-from trinormal.mesh.io.errors import MeshFileError, _number, _show, _text
+from trinormal.mesh.io.errors import READ_NOTES, MeshFileError, _number, _show, _text
 from trinormal.mesh.io.mesh_data import MeshData
 from trinormal.mesh.normals import face_normals
 
@@ -21,28 +22,55 @@ _STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("a
 
 
 def _read_stl(data: bytes, name: str) -> MeshData:
-    """Read a binary STL (its size follows from its triangle count) or a text one."""
+    """Read a binary STL (its size follows from its triangle count) or a text one.
+
+    A binary STL whose count disagrees with its size is read anyway when the
+    bytes after the header say how many triangles it has (`_records_in`),
+    with a note in `MeshData.notes`.
+    """
+    notes: tuple[str, ...] = ()
     if len(data) >= 84:
         (n,) = struct.unpack_from("<I", data, 80)
-        if len(data) == 84 + 50 * n:  # a binary STL, even when its header starts with "solid"
+        if len(data) != 84 + 50 * n and not _looks_like_text(data):
+            n, notes = _records_in(data, n, name)
+        if len(data) == 84 + 50 * n or notes:  # binary, even when its header starts with "solid"
             rec = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)
             corners = rec["corners"].reshape(-1, 3)  # float32, as stored: merged before widening
             if not np.isfinite(corners).all():
                 bad = int(np.flatnonzero(~np.isfinite(corners).all(axis=1))[0]) // 3
                 raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
-            return _merge_corners(corners, name, "binary")
-    if data.lstrip()[:5].lower() != b"solid" or b"\0" in data:
-        if len(data) >= 84:
-            (n,) = struct.unpack_from("<I", data, 80)
-            raise MeshFileError.of(
-                name,
-                "stl_not_stl",
-                count=f"{n:,}",
-                expected=f"{84 + 50 * n:,}",
-                size=f"{len(data):,}",
-            )
+            return replace(_merge_corners(corners, name, "binary"), notes=notes)
+    if not _looks_like_text(data):
         raise MeshFileError.of(name, "stl_short")
     return _read_stl_ascii(data, name)
+
+
+def _looks_like_text(data: bytes) -> bool:
+    """Whether the file can be a text STL: it starts with 'solid' and has no NUL byte."""
+    return data.lstrip()[:5].lower() == b"solid" and b"\0" not in data
+
+
+def _records_in(data: bytes, n: int, name: str) -> tuple[int, tuple[str, ...]]:
+    """How many triangles a binary STL whose size disagrees with its count ``n`` holds; the note.
+
+    Lenient where the format allows: the bytes after the 84-byte header are
+    whole 50-byte records (the count is then 0, as some programs write it, or
+    wrong), or the ``n`` records the count gives and fewer than 50 bytes more.
+    Any other size is not an STL file.
+    """
+    whole, extra = divmod(len(data) - 84, 50)
+    if extra == 0 and whole > 0:
+        note = READ_NOTES["stl_count"].format(
+            count=f"{n:,}", records=f"{whole:,}", size=f"{len(data) - 84:,}"
+        )
+        return whole, (f"{name}: {note}",)
+    if whole == n:  # and 0 < extra < 50
+        word = "byte" if extra == 1 else "bytes"
+        note = READ_NOTES["stl_trailing"].format(extra=extra, bytes=word)
+        return n, (f"{name}: {note}",)
+    raise MeshFileError.of(
+        name, "stl_not_stl", count=f"{n:,}", expected=f"{84 + 50 * n:,}", size=f"{len(data):,}"
+    )
 
 
 def _read_stl_ascii(data: bytes, name: str) -> MeshData:
