@@ -3,11 +3,11 @@
 
 PYTHON ?= python3
 export UV_PYTHON_DOWNLOADS := never
-# No bytecode compiling when installing (44 s of CPU for every group here): Python compiles what
-# is imported, once, on first import, and keeps it. For that, PYTHONDONTWRITEBYTECODE (set on some
-# machines, this one included) is not passed on: with it, every process (each pytest worker, the
-# JupyterLab server, every kernel) compiled every module it imported from source, every time
-# (collecting the unit tests: 18 s of CPU against 5 s with the bytecode kept).
+# No bytecode compiling when installing (it would compile every module of every group, most never
+# imported): Python compiles what is imported, once, on first import, and keeps it. For that,
+# PYTHONDONTWRITEBYTECODE (set on some machines) is not passed on: with it, every process (each
+# pytest worker, the JupyterLab server, every kernel) would compile every module it imports from
+# source, every time.
 export UV_COMPILE_BYTECODE := 0
 unexport PYTHONDONTWRITEBYTECODE
 export NO_MKDOCS_2_WARNING := 1
@@ -27,8 +27,8 @@ RUN := $(UV) run --locked --no-sync
 PYTHON_EXE := $(shell $(PYTHON) -c 'import sys; print(sys.executable)' 2>/dev/null)
 UV_PYTHON_ARG := $(if $(PYTHON_EXE),--python "$(PYTHON_EXE)")
 
-# `uv sync`, skipped when a dry run says it would change nothing (so no second bytecode compile):
-# a second `make env` takes well under 2 s.
+# `uv sync`, skipped when a dry run says it would change nothing: an up-to-date .venv is left
+# as it is.
 SYNC := sh scripts/sync-env.sh $(UV)
 
 # Each stage of `make test` runs under this wrapper, which adds its time to .cache/stage-times.tsv;
@@ -85,7 +85,7 @@ types: env
 
 # In parallel on every core (pytest-xdist).
 unit: env
-	$(TIMED) $(RUN) pytest tests trinormal README.md --doctest-glob=README.md --ignore=tests/browser -q -n auto
+	$(TIMED) $(RUN) pytest tests trinormal docs/hooks README.md --doctest-glob=README.md --ignore=tests/browser -q -n auto
 
 ## nbval: the notebooks' stored outputs, re-run here (make test runs nbval on the wheel's copies)
 nbval: env

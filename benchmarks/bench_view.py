@@ -245,7 +245,13 @@ def previous_site(site: Path, rev: str) -> Iterator[Path | None]:
             check=True,
             capture_output=True,
         )
-        shutil.copy(work / "static" / "explorer.js", out / "assets" / "explorer" / "explorer.js")
+        # that commit's site modules (static/site-modules/) where it builds them, else its bundle
+        built, assets = work / "static" / "site-modules", out / "assets" / "explorer"
+        if built.is_dir():
+            shutil.rmtree(assets)
+            shutil.copytree(built, assets)
+        else:
+            shutil.copy(work / "static" / "explorer.js", assets / "explorer.js")
         shutil.copy(
             work / "src" / "docs" / "assets" / "javascripts" / "calculator.js",
             out / "assets" / "javascripts" / "calculator.js",

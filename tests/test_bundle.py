@@ -1,9 +1,11 @@
-"""The 3D view's bundle: committed output equals a fresh build from js/explorer/, and it is offline.
+"""The 3D views' bundles: committed output equals a fresh build from js/explorer/, and is offline.
 
-``trinormal/explorer/static/explorer.js`` (three.js bundled with the view) and its licence
-file are built by ``make js`` from ``js/explorer/src`` and ``package-lock.json``. These tests
-rebuild into a temporary directory and compare byte for byte, so a change to the sources
-without a rebuild (or a hand edit of the bundle) fails here.
+``make js`` builds from ``js/explorer/src`` and ``package-lock.json``, into
+``trinormal/explorer/static/``: ``explorer.js`` (the Jupyter widget: both views and three.js in
+one file) and ``site-modules/`` (the site's modules: ``explorer.js``, ``mesh.js`` and their shared
+chunk), each with its licence file. These tests rebuild into a temporary directory and compare
+every file byte for byte, so a change to the sources without a rebuild (or a hand edit of a
+bundle, or a file the build no longer writes) fails here.
 """
 
 from __future__ import annotations
@@ -20,7 +22,14 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 JS = ROOT / "js" / "explorer"
 STATIC = ROOT / "trinormal" / "explorer" / "static"
-OUTPUTS = ("explorer.js", "THIRD_PARTY_LICENSES.txt")
+#: The files the build writes whatever the sources (the shared chunk's name has a hash).
+OUTPUTS = (
+    "explorer.js",
+    "THIRD_PARTY_LICENSES.txt",
+    "site-modules/explorer.js",
+    "site-modules/mesh.js",
+    "site-modules/THIRD_PARTY_LICENSES.txt",
+)
 REBUILD = "run `make js` and commit trinormal/explorer/static/"
 
 
@@ -47,13 +56,24 @@ def fresh(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out
 
 
-@pytest.mark.parametrize("name", OUTPUTS)
-def test_committed_bundle_matches_a_fresh_build(fresh: Path, name: str) -> None:
-    committed = STATIC / name
-    assert committed.is_file(), f"{committed.relative_to(ROOT)} is missing: {REBUILD}"
-    assert committed.read_bytes() == (fresh / name).read_bytes(), (
-        f"{committed.relative_to(ROOT)} differs from a fresh build of js/explorer/: {REBUILD}"
-    )
+def _files(where: Path) -> list[str]:
+    return sorted(p.relative_to(where).as_posix() for p in where.rglob("*") if p.is_file())
+
+
+def test_the_build_writes_the_widget_and_the_sites_modules(fresh: Path) -> None:
+    names = _files(fresh)
+    assert set(OUTPUTS) <= set(names), names
+    chunks = [n for n in names if n not in OUTPUTS]
+    assert len(chunks) == 1 and re.fullmatch(r"site-modules/shared-\w+\.js", chunks[0]), chunks
+
+
+def test_committed_bundles_match_a_fresh_build(fresh: Path) -> None:
+    # every file the build writes, and no other (a shared chunk of an older build, say)
+    assert _files(STATIC) == _files(fresh), REBUILD
+    for name in _files(fresh):
+        assert (STATIC / name).read_bytes() == (fresh / name).read_bytes(), (
+            f"trinormal/explorer/static/{name} differs from a fresh build of js/explorer/: {REBUILD}"
+        )
 
 
 def test_the_build_is_pinned_and_locked() -> None:
@@ -66,21 +86,31 @@ def test_the_build_is_pinned_and_locked() -> None:
     assert "three" in package["dependencies"]
 
 
-def test_the_licence_names_the_bundled_three_version() -> None:
+def _scripts() -> list[Path]:
+    return sorted(STATIC.rglob("*.js"))
+
+
+@pytest.mark.parametrize("folder", ["", "site-modules"])
+def test_the_licences_beside_each_bundle_name_the_bundled_versions(folder: str) -> None:
     lock = json.loads((JS / "package-lock.json").read_text(encoding="utf-8"))
-    version = lock["packages"]["node_modules/three"]["version"]
-    text = (STATIC / "THIRD_PARTY_LICENSES.txt").read_text(encoding="utf-8")
-    assert f"three.js {version}" in text
+    versions = {
+        name: lock["packages"][f"node_modules/{name}"]["version"]
+        for name in ("three", "three-mesh-bvh", "meshoptimizer")
+    }
+    text = (STATIC / folder / "THIRD_PARTY_LICENSES.txt").read_text(encoding="utf-8")
+    assert f"three.js {versions['three']}" in text
     assert "Permission is hereby granted, free of charge" in text  # the MIT licence itself
-    assert f"three.js {version}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
     # the mesh view's picking (three-mesh-bvh) is bundled too: its licence travels with it
-    bvh = lock["packages"]["node_modules/three-mesh-bvh"]["version"]
-    assert f"three-mesh-bvh {bvh}" in text and "Copyright (c) 2018 Garrett Johnson" in text
-    assert f"three-mesh-bvh {bvh}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
+    assert f"three-mesh-bvh {versions['three-mesh-bvh']}" in text
+    assert "Copyright (c) 2018 Garrett Johnson" in text
     # and meshoptimizer, the coarser copy of a big model while it turns
-    meshopt = lock["packages"]["node_modules/meshoptimizer"]["version"]
-    assert f"meshoptimizer {meshopt}" in text and "Arseny Kapoulkine" in text
-    assert f"meshoptimizer {meshopt}" in (STATIC / "explorer.js").read_text(encoding="utf-8")[:300]
+    assert f"meshoptimizer {versions['meshoptimizer']}" in text and "Arseny Kapoulkine" in text
+    for script in (STATIC / folder).glob("*.js"):  # each file names what it bundles
+        head = script.read_text(encoding="utf-8")[:300]
+        assert f"three.js {versions['three']}" in head, script.name
+        assert f"three-mesh-bvh {versions['three-mesh-bvh']}" in head, script.name
+        assert f"meshoptimizer {versions['meshoptimizer']}" in head, script.name
+        assert "THIRD_PARTY_LICENSES.txt" in head, script.name
 
 
 # Ways a script could load code or data from another origin at run time.
@@ -108,14 +138,26 @@ def test_the_pattern_catches_remote_loads() -> None:
     assert not _REMOTE.search('createElementNS("http://www.w3.org/1999/xhtml", "img")')
 
 
-@pytest.mark.parametrize("name", ["explorer.js"])
-def test_the_bundle_loads_nothing_from_another_origin(name: str) -> None:
-    text = (STATIC / name).read_text(encoding="utf-8")
-    found = [m.group(0) for m in _REMOTE.finditer(text)]
-    assert found == [], f"{name} would load from another origin: {found[:5]}"
-    # one file: no relative imports left for anywidget's blob URL to fail on
-    assert not re.search(r"""\bfrom\s*["'`]\.{0,2}/""", text)
-    assert not re.search(r"""\bimport\s*\(\s*["'`]\.{0,2}/""", text)
+_RELATIVE = re.compile(r"""\b(?:from|import)\s*\(?\s*["'`](\.{0,2}/[^"'`]*)""")
+
+
+def test_the_bundles_load_nothing_from_another_origin() -> None:
+    scripts = _scripts()
+    assert len(scripts) == 4, scripts
+    for script in scripts:
+        found = [m.group(0) for m in _REMOTE.finditer(script.read_text(encoding="utf-8"))]
+        assert found == [], f"{script.name} would load from another origin: {found[:5]}"
+
+
+def test_the_widget_is_one_file_and_the_site_modules_import_only_their_chunk() -> None:
+    # anywidget loads the widget from a blob URL, where no relative import resolves
+    assert _RELATIVE.findall((STATIC / "explorer.js").read_text(encoding="utf-8")) == []
+    site = STATIC / "site-modules"
+    (chunk,) = site.glob("shared-*.js")
+    assert _RELATIVE.findall(chunk.read_text(encoding="utf-8")) == []
+    for entry in ("explorer.js", "mesh.js"):
+        imports = _RELATIVE.findall((site / entry).read_text(encoding="utf-8"))
+        assert imports == [f"./{chunk.name}"], (entry, imports)
 
 
 # The view writes a dragged or keyed vertex as grid text; the kernel's sliders and the

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 import subprocess
 import sys
@@ -242,3 +244,40 @@ def test_a_closed_output_stream_is_one_line_and_status_1():
     )
     assert p.returncode == 1
     assert p.stderr == "trinormal: error: cannot write the output: the output stream is closed\n"
+
+
+def _json_verdict(*args: str) -> tuple[bool, str]:
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        assert main([*args, "--json"]) == 0
+    out = json.loads(buf.getvalue())
+    return out["degenerate"], out["reason"]
+
+
+@pytest.mark.parametrize(
+    ("points", "tol", "degenerate"),
+    [
+        (("0,0,0", "1,0,0", "0,1e-13,0"), None, True),  # a right angle at A, 1e-13 high
+        (("0,0,0", "1,0,0", "1e-13,1e-13,0"), None, True),  # C within 1e-13 of A
+        (("0,0,0", "1,0,0", "0,1e-11,0"), None, False),
+        (("0,0,0", "4,0,0", "1,1,0"), "1/4", True),  # |N| / L² = 1/4 exactly
+        (("0,0,0", "4,0,0", "1,1,0"), "0.2499", False),
+    ],
+)
+def test_json_verdict_is_the_same_in_every_order_of_the_corners(points, tol, degenerate):
+    a, b, c = points
+    extra = [] if tol is None else ["--tol", tol]
+    verdicts = {
+        _json_verdict(p, q, r, "--winding", w, *extra)
+        for p, q, r in ((a, b, c), (b, c, a), (c, a, b))
+        for w in ("ABC", "ACB")
+    }
+    assert len(verdicts) == 1 and next(iter(verdicts))[0] is degenerate
+    # and as a user runs it
+    p = run(b, c, a, "--winding", "ACB", "--json", *extra)
+    assert json.loads(p.stdout)["degenerate"] is degenerate
+
+
+def test_help_states_the_rule():
+    p = run("--help")
+    assert "|N| <= tol · L², L the longest side" in " ".join(p.stdout.split())

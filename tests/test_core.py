@@ -88,11 +88,11 @@ def test_results_are_returned_not_built():
     ],
 )
 def test_the_fast_path_is_chosen_by_what_the_inputs_are(monkeypatch, tol, fast):
-    """Plain floats and the default tolerance's value take the fast path; the result is the same."""
+    """Plain floats and the default tolerance's value are read quickly; the result is the same."""
     from trinormal import core
 
     calls = []
-    real = core._fast_exact
+    real = core._plain_integers
 
     def spy(*args):
         calls.append(args)
@@ -100,7 +100,7 @@ def test_the_fast_path_is_chosen_by_what_the_inputs_are(monkeypatch, tol, fast):
 
     pts = ((0.1, 0.2, 0.3), (1.5, -2.0, 0.25), (-3.0, 0.5, 2.0))
     careful = triangle_normal(*[[Fraction(x) for x in p] for p in pts], tol=tol)  # never fast
-    monkeypatch.setattr(core, "_fast_exact", spy)
+    monkeypatch.setattr(core, "_plain_integers", spy)
     r = triangle_normal(*pts, tol=tol)
     assert bool(calls) is fast
     assert r == careful and r.exact == careful.exact and r.tol == careful.tol
@@ -276,21 +276,19 @@ def test_coincident_points():
     assert "Degenerate" in r.format()["status"]
 
 
-def test_degeneracy_is_a_sine_test_and_scale_invariant():
-    # sine of the angle between U = (1, 0, 0) and V = (1, t, 0) is t / sqrt(1 + t²)
+def test_degeneracy_is_thinness_against_the_longest_side_and_scale_invariant():
+    # |N| / L² for A = 0, B = (1, 0, 0), C = (1, t, 0) is t / (1 + t²)
     for s in (1e-150, 1.0, 1e150):
         thin = triangle_normal((0, 0, 0), (s, 0, 0), (s, s * 1e-13, 0))
         wide = triangle_normal((0, 0, 0), (s, 0, 0), (s, s * 1e-11, 0))
         assert thin.degenerate and not wide.degenerate
         assert thin.magnitude > 0 or s < 1e-100
-    # tol is the threshold on the sine: decided exactly on either side of it
-    t = Fraction(3, 5)  # U=(1,0,0), V=(4,3,0): sine 3/5
+    # tol is the threshold on |N| / L²: decided exactly on either side of it
+    t = Fraction(3, 25)  # |N| = 3, the longest side is C − A = (4, 3, 0), L² = 25
     r_at = triangle_normal((0, 0, 0), (1, 0, 0), (4, 3, 0), tol=t)
-    r_above = triangle_normal(
-        (0, 0, 0), (1, 0, 0), (4, 3, 0), tol=Fraction(3, 5) - Fraction(1, 10**30)
-    )
+    r_above = triangle_normal((0, 0, 0), (1, 0, 0), (4, 3, 0), tol=t - Fraction(1, 10**30))
     assert r_at.degenerate and not r_above.degenerate
-    assert math.isclose(r_at.sine, 0.6)
+    assert math.isclose(r_at.thickness, 0.12) and math.isclose(r_at.sine, 0.6)
 
 
 def test_degenerate_result_still_reports_edges_and_area():
@@ -395,8 +393,8 @@ def test_float_formats_scale_before_normalising():
     assert r.normal == (0.0, 0.0, 0.0) and r.degenerate
     r = triangle_normal((0, 0, 0), (1e-20, 0, 0), (0, 1e-20, 0), arithmetic="float32")
     assert r.unit_normal == (0.0, 0.0, 1.0)  # N = 1e-40 is subnormal; |N|² would underflow
-    r = triangle_normal((0, 0, 0), (1e-200, 0, 0), (0, 1e-100, 0), arithmetic="float64")
-    assert r.unit_normal == (0.0, 0.0, 1.0)
+    r = triangle_normal((0, 0, 0), (1e-160, 0, 0), (0, 1e-160, 0), arithmetic="float64")
+    assert r.unit_normal == (0.0, 0.0, 1.0)  # |N|² = 1e-640 would underflow
 
 
 def test_float_overflow_is_an_error_not_inf():
@@ -436,7 +434,7 @@ def test_fast_path_agrees_with_the_careful_path():
 
 
 def test_fast_path_degeneracy_verdict_at_the_tolerance():
-    """Sines from 1e-13 to 1e-11, at many scales: the fast verdict equals the exact one."""
+    """|N| / L² from about 2e-14 to 1e-11, at many scales: plain floats, same verdict as numpy's."""
     rng = random.Random(12)
     flips = 0
     for _ in range(2000):
@@ -513,3 +511,84 @@ def test_the_core_imports_only_the_standard_library():
 
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, timeout=60)
     assert p.returncode == 0, p.stderr
+
+
+# --------------------------------------------------------------------------- order of the corners
+
+ORDERS = [(0, 1, 2), (1, 2, 0), (2, 0, 1)]
+
+
+def _every_order(pts, **kwargs):
+    return [
+        triangle_normal(*(pts[i] for i in order), winding=winding, **kwargs)
+        for order in ORDERS
+        for winding in ("ABC", "ACB")
+    ]
+
+
+@pytest.mark.parametrize(
+    ("pts", "degenerate"),
+    [
+        # a right angle at A, 1e-13 high: thin compared with its longest side, however listed
+        (((0, 0, 0), (1, 0, 0), (0, 1e-13, 0)), True),
+        (((0, 0, 0), (1, 0, 0), (0, 1e-11, 0)), False),
+        # C within 1e-13 of A: nearly coincident points
+        (((0, 0, 0), (1, 0, 0), (1e-13, 1e-13, 0)), True),
+        (((0, 0, 0), (1, 0, 0), (1e-13, 0, 1e-13)), True),
+        (((5, 5, 5), (5.5, 5, 5), (5, 5, 5 + 2**-46)), True),
+        # a needle: the third corner far out along AB, just off the line
+        (((0, 0, 0), (1, 0, 0), (1000, 1e-8, 0)), True),
+        (((0, 0, 0), (1, 0, 0), (1000, 1e-4, 0)), False),
+        (((0, 0, 0), (1, 0, 0), (0, 1, 0)), False),
+    ],
+)
+def test_one_verdict_whatever_the_order_of_the_corners(pts, degenerate):
+    for arithmetic in ("exact", "float64", "float32"):
+        results = _every_order(pts, arithmetic=arithmetic)
+        assert [r.degenerate for r in results] == [degenerate] * 6, arithmetic
+    exact = _every_order(pts)
+    assert len({r.thickness for r in exact}) == 1
+    assert len({r.reason for r in exact}) == 1
+
+
+def test_the_issue_example_and_the_sine_at_a():
+    """The sine at A is 1 for this needle, which is still degenerate: the rule is |N| <= tol · L²."""
+    r = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1e-13, 0))
+    assert r.degenerate and r.sine == 1.0 and r.thickness == 1e-13
+    assert "too thin" in r.reason and "longest side" in r.reason
+    again = triangle_normal((1, 0, 0), (0, 1e-13, 0), (0, 0, 0))
+    assert again.degenerate and again.sine < 1e-12
+
+
+def test_thickness_is_the_height_over_the_longest_side():
+    r = triangle_normal((0, 0, 0), (4, 0, 0), (1, 1, 0))  # longest side 4, height 1
+    assert r.thickness == 0.25
+    equilateral = triangle_normal((1, 0, 0), (0, 1, 0), (0, 0, 1))
+    assert math.isclose(equilateral.thickness, math.sqrt(3) / 2)
+    assert triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).thickness == 0.0
+    assert triangle_normal((1, 1, 1), (1, 1, 1), (1, 1, 1)).thickness == 0.0
+
+
+def test_float_formats_judge_the_n_they_computed_against_the_longest_side():
+    # exactly |N| / L² = 1/4 in every format; tol 1/4 is on the line, just below it is not
+    pts = ((0, 0, 0), (4, 0, 0), (1, 1, 0))
+    for arithmetic in ("float64", "float32"):
+        assert all(r.degenerate for r in _every_order(pts, arithmetic=arithmetic, tol=0.25))
+        below = _every_order(pts, arithmetic=arithmetic, tol=Fraction(1, 4) - Fraction(1, 10**40))
+        assert not any(r.degenerate for r in below)
+
+
+def test_the_core_imports_no_formatter():
+    """core is the bottom layer: display and fields sit above it (format() imports them lazily)."""
+    import ast
+    import inspect
+
+    from trinormal import core
+
+    tree = ast.parse(inspect.getsource(core))
+    top = [n for n in tree.body if isinstance(n, ast.Import | ast.ImportFrom)]
+    names = {n.module for n in top if isinstance(n, ast.ImportFrom)} | {
+        a.name for n in top if isinstance(n, ast.Import) for a in n.names
+    }
+    assert "trinormal.validation" in names
+    assert not names & {"trinormal.display", "trinormal.fields", "trinormal"}

@@ -426,7 +426,7 @@ def test_a_needle_facing_down_is_right_and_not_called_zero_area():
     assert r.area > 0 and r.degenerate  # a real area, below the direction tolerance
     res = check("05-down-acb", needle)
     assert res and "zero area" not in res.message and "no triangle" not in res.message
-    assert f"its sine is {format_number(r.sine, 2)}" in res.message
+    assert f"its height is only {format_number(r.thickness, 2)} times" in res.message
     flat = check("05-down-acb", [(0, 0, 0), (1, 0, 0), (2, 0, 0)])
     assert not flat and "the area is exactly 0" in flat.message
 
@@ -609,7 +609,7 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         (lambda: (get("06-float64-bits").solution() - 1) * math.log10(2), "That counts the stored bits (nmant) only: p includes the implicit leading bit."),
     ],
     "07-needle-degenerate": [
-        (lambda: not _sol("07-needle-degenerate"), "Compute its sine, |N| / (|U| |V|), and compare it with DEFAULT_TOL = 1e-12: degenerate means sine <= tol."),
+        (lambda: not _sol("07-needle-degenerate"), "Compute |N| and the longest side L (here C − A), then compare |N| / L² with DEFAULT_TOL = 1e-12: degenerate means |N| <= tol · L², whichever corner comes first."),
         ("maybe", "Answer True or False."),
     ],
     "08-cube-corner-degrees": [

@@ -18,7 +18,6 @@ import pytest
 
 from trinormal import fields, triangle_normal
 from trinormal.cli import main
-from trinormal.core import TriangleNormal
 from trinormal.explorer.readout import readout_html, readout_rows, summary_text
 from trinormal.fields import FIELDS, Field, field_labels, fields_spec
 
@@ -44,18 +43,18 @@ def _cli(*args: str) -> str:
 def with_sine(monkeypatch: pytest.MonkeyPatch) -> None:
     """Add the field to the spec and its exact computation to the core, nothing else."""
     monkeypatch.setattr(fields, "FIELDS", (*FIELDS, SINE))
-    exact_fields = TriangleNormal._exact_fields
+    exact_values = fields.exact_values
 
-    def with_exact_sine(self: TriangleNormal) -> dict[str, Any]:
-        s = self._integers
+    def with_exact_sine(r: Any) -> dict[str, Any]:
+        s = r._integers
         uu = sum(i * i for i in s.u)
         vv = sum(i * i for i in s.v)
         return {
-            **exact_fields(self),
+            **exact_values(r),
             "sine": (False, s.norm_squared, uu * vv),
         }  # sin² = |N|²/(|U|²|V|²)
 
-    monkeypatch.setattr(TriangleNormal, "_exact_fields", with_exact_sine)
+    monkeypatch.setattr(fields, "exact_values", with_exact_sine)
 
 
 def test_every_surface_lists_the_spec_in_order():

@@ -2,13 +2,14 @@
 
 The wheel itself (built, installed into a fresh venv, its notebooks copied out and
 executed, the explorer rendered from it in JupyterLab and Notebook 7) is tested in
-tests/browser/test_wheel.py, with the slow tests.
+tests/browser/test_wheel.py, with the slow tests; what the lab group installs (uv's export
+of the lockfile) in tests/browser/test_dependency_groups.py, and the wheel built from the sdist
+in tests/browser/test_sdist.py.
 """
 
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 import sys
 import tomllib
@@ -21,8 +22,6 @@ from trinormal import notebooks
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted(p.name for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 INSTALL = 'pip install "trinormal[notebooks]"'
-#: The uv the Makefile would use: on PATH, or the one it bootstrapped into .tools/.
-UV = shutil.which("uv") or str(ROOT / ".tools" / "bin" / "uv")
 
 
 @pytest.mark.parametrize(
@@ -145,30 +144,3 @@ def test_data_files_beside_the_notebooks_travel_too(tmp_path: Path) -> None:
     (source / ".ipynb_checkpoints" / "01_a-checkpoint.ipynb").write_text("{}")
     files = notebooks.notebook_files(source)
     assert [p.as_posix() for p in files] == ["01_a.ipynb", "data/mesh.obj"]
-
-
-def test_the_lab_group_installs_the_lab_and_no_development_tools() -> None:
-    # what `uv run jupyter lab notebooks` (the default group) and `make lab` install
-    def exported(*groups: str) -> set[str]:
-        out = subprocess.run(
-            [UV, "export", "--frozen", "--no-hashes", "--no-header", "--no-annotate",
-             "--format", "requirements-txt", "--no-emit-project", *groups],
-            cwd=ROOT, capture_output=True, text=True, check=True,
-        ).stdout  # fmt: skip
-        return {line.split("==")[0].lower() for line in out.splitlines() if "==" in line}
-
-    default = exported()
-    assert default == exported("--no-default-groups", "--group", "lab")
-    assert {"jupyterlab", "notebook", "ipykernel", "anywidget", "ipywidgets", "numpy"} <= default
-    tools = {
-        "pytest",
-        "playwright",
-        "mkdocs",
-        "mkdocs-material",
-        "trimesh",
-        "scipy",
-        "mypy",
-        "ruff",
-    }
-    assert not tools & default
-    assert tools <= exported("--all-groups")

@@ -61,7 +61,7 @@ def test_scaling_scales_n_by_s_squared(a, b, c, s):
     m = triangle_normal(mul(a), mul(b), mul(c))
     assert m.exact.normal == tuple(s * s * x for x in r.exact.normal)
     if s != 0:
-        assert m.degenerate == r.degenerate  # the sine test does not depend on scale
+        assert m.degenerate == r.degenerate  # |N| <= tol · L² does not depend on scale
 
 
 @settings(max_examples=300)
@@ -81,3 +81,66 @@ def test_unit_normal_has_length_one(a, b, c):
 def test_strings_read_like_fractions(a, b, c):
     as_text = [tuple(f"{x.numerator}/{x.denominator}" for x in p) for p in (a, b, c)]
     assert triangle_normal(*as_text).exact == triangle_normal(a, b, c).exact
+
+
+# --------------------------------------------------------------------------- order of the corners
+
+
+def _orders(a, b, c):
+    """The six ways to list one triangle: three rotations, each in both windings."""
+    for p, q, r in ((a, b, c), (b, c, a), (c, a, b)):
+        for winding in ("ABC", "ACB"):
+            yield p, q, r, winding
+
+
+def _thin_near(a, b, t, k):
+    """A third corner at height about t·|B − A| off the line AB, a fraction k along it."""
+    d = tuple(y - x for x, y in zip(a, b, strict=True))
+    # a direction across AB (any vector not parallel to it, made orthogonal exactly)
+    w = (-d[1], d[0], 0) if d[0] or d[1] else (0, -d[2], d[1])
+    return tuple(x + k * e + t * f for x, e, f in zip(a, d, w, strict=True))
+
+
+tols = st.sampled_from([Fraction(0), Fraction(1, 10**12), Fraction(1, 1000), Fraction(1, 3)])
+
+
+@given(point, point, point, tols)
+def test_every_order_of_the_corners_gives_one_verdict(a, b, c, tol):
+    verdicts = {
+        triangle_normal(p, q, r, winding=w, tol=tol).degenerate for p, q, r, w in _orders(a, b, c)
+    }
+    assert len(verdicts) == 1
+
+
+@given(
+    point,
+    point,
+    st.fractions(min_value=Fraction(1, 10**14), max_value=Fraction(1, 10**10)),
+    st.fractions(min_value=-2, max_value=3, max_denominator=1000),
+)
+@settings(max_examples=200)
+def test_borderline_triangles_get_one_verdict_in_every_order(a, b, t, k):
+    """Thin triangles whose |N| / L² is within a few powers of ten of the default tol."""
+    c = _thin_near(a, b, t, k)
+    results = [triangle_normal(p, q, r, winding=w) for p, q, r, w in _orders(a, b, c)]
+    assert len({r.degenerate for r in results}) == 1
+    assert len({r.thickness for r in results}) == 1
+    # plain floats are read on the quick path: the same verdict
+    floats = [tuple(float(x) for x in p) for p in (a, b, c)]
+    quick = {triangle_normal(p, q, r, winding=w).degenerate for p, q, r, w in _orders(*floats)}
+    assert len(quick) == 1
+
+
+@given(
+    st.integers(min_value=0, max_value=2**300),
+    st.integers(min_value=0, max_value=2**200),
+    st.fractions(min_value=0, max_value=1, max_denominator=2**100),
+)
+def test_the_degenerate_test_s_shortcut_never_changes_the_answer(norm_squared, longest, tol):
+    """_thin may decide from bit lengths alone; it must agree with the products every time."""
+    from trinormal.core import _thin
+
+    tn, td = tol.numerator, tol.denominator
+    want = norm_squared * td * td <= tn * tn * longest * longest
+    assert _thin(norm_squared, longest, tn, td) is want
+    assert _thin(0, longest, tn, td) is True

@@ -289,7 +289,7 @@ def test_tolerance_has_one_check_and_one_message():
         1,
         3,
     )
-    rule = r"tol must be >= 0 and <= 1 \(it bounds the sine of an angle\)"
+    rule = r"tol must be >= 0 and <= 1 \(it bounds \|N\| / L², L the longest side\)"
     for bad in (-1e-3, 2, Decimal("1e400"), Fraction(10**400 - 1, 1), "1.5"):
         with pytest.raises(ValueError, match=rule):
             triangle_normal(ORIGIN, X, Y, tol=bad)

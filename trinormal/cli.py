@@ -149,8 +149,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--tol",
         default=None,
-        help="degeneracy threshold on the sine of the angle between U and V "
-        f"(default {DEFAULT_TOL})",
+        help="degeneracy threshold: degenerate when |N| <= tol · L², L the longest side, "
+        f"in any order of the corners (default {DEFAULT_TOL})",
     )
     p.add_argument(
         "--arithmetic",

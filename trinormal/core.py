@@ -12,17 +12,16 @@ The standard library is all this module needs.
 """
 
 # How it is built (for maintainers; the API reference shows only the docstring above):
-# two paths compute the same result. The common call (plain tuples or lists of floats and
-# ints, the default tolerance, exact arithmetic) takes a fast path written out in one
-# function; it hands anything else (other types, strings, a degenerate or out-of-range
-# triangle) to the careful path, which validates every input and explains degenerate
-# triangles. The choice depends only on what the inputs are, and both paths build their
-# result with the one constructor, ``_result``.
+# the inputs are read into nine integers over one denominator, either quickly
+# (_plain_integers: plain tuples or lists of floats and ints, the default tolerance) or by
+# trinormal.validation (anything else, with errors that name the coordinate); then one
+# exact path, _exact, computes the result and builds it with the one constructor,
+# ``_result``. Formatting (format, to_dict, repr) lives in trinormal.fields, which the
+# methods below import when called: the core imports no formatter.
 
 from __future__ import annotations
 
 import math
-import struct
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from decimal import Decimal
@@ -30,16 +29,11 @@ from fractions import Fraction
 from functools import cached_property
 from typing import Any, Literal, NamedTuple
 
-from trinormal import fields
-from trinormal.display import exact_literal, exact_literals, format_surd
-from trinormal.fields import Surd
 from trinormal.tolerances import DEFAULT_TOL
 from trinormal.validation import (
-    _LIMIT as _INT_LIMIT,  # the size limit: the fast path takes plain ints below it
+    _LIMIT as _INT_LIMIT,  # the size limit: _plain_integers takes plain ints below it
 )
 from trinormal.validation import (
-    AXES,
-    VERTICES,
     Winding,
     _show,
     check_common,
@@ -130,46 +124,6 @@ def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
 _PLAIN = frozenset((float, int))
 
 
-# --------------------------------------------------------------------------- float formats
-
-_F32_MAX = struct.unpack("f", b"\xff\xff\x7f\x7f")[0]
-
-
-def _f32(x: float) -> float:
-    """Round a float64 to the nearest float32 (ties to even), as a Python float.
-
-    For +, −, ×, ÷ and √ of float32 operands, computing in float64 and rounding
-    once to float32 gives the correctly rounded float32 result (53 ≥ 2·24 + 2),
-    so float32 arithmetic needs no numpy here; the tests compare it with
-    ``numpy.float32`` step by step.
-    """
-    try:
-        return float(struct.unpack("f", struct.pack("f", x))[0])
-    except OverflowError:
-        return math.copysign(math.inf, x)
-
-
-def _ratio_to_f32(n: int, d: int) -> float:
-    """Correctly round the rational n/d to float32 (one rounding, no double rounding)."""
-    if n == 0:
-        return 0.0
-    sign = -1.0 if n < 0 else 1.0
-    n = abs(n)
-    # exponent e with 2**e <= n/d < 2**(e+1)
-    e = n.bit_length() - d.bit_length()
-    if (n << -e if e < 0 else n) < (d << e if e > 0 else d):
-        e -= 1
-    if e > 127:
-        return sign * math.inf
-    q = max(e, -126) - 23  # quantum: ulp of float32 at this exponent (subnormals below 2**-126)
-    num, den = (n, d << q) if q >= 0 else (n << -q, d)
-    m, r = divmod(num, den)
-    if 2 * r > den or (2 * r == den and m & 1):
-        m += 1
-    value = math.ldexp(float(m), q)
-    return sign * (math.inf if value > _F32_MAX else value)
-
-
 # --------------------------------------------------------------------------- the result
 
 
@@ -217,8 +171,11 @@ class TriangleNormal:
     unit_normal : tuple of float or None
         N / |N|; ``None`` when the triangle is degenerate.
     degenerate : bool
-        True when ``|N| <= tol · |U| · |V|``: the sine of the angle between the
-        edges is at most ``tol``. Coincident and collinear points are degenerate.
+        True when ``|N| <= tol · L²``, L the longest side: the triangle is thin
+        compared with its longest side (the rule of
+        [`trinormal.tolerances`][trinormal.tolerances]). Coincident and collinear
+        points are degenerate. The verdict is the same whichever corner is A and
+        for both windings.
     plane : Plane or None
         ``(n, d)``: the plane ``n · x = d`` with ``n`` the unit normal and
         ``d = n · A``; ``None`` when degenerate.
@@ -227,7 +184,7 @@ class TriangleNormal:
     arithmetic : str
         ``"exact"``, ``"float64"`` or ``"float32"``.
     tol : float
-        The sine threshold used for `degenerate`.
+        The threshold used for `degenerate`.
     """
 
     a: Vec3
@@ -266,7 +223,8 @@ class TriangleNormal:
 
         Exact values are written as Python literals: integers bare, anything else
         quoted (``'1/3'``, ``'0.1'``), the form `triangle_normal` reads exactly. In
-        ``float64``/``float32`` arithmetic N is the computed floats.
+        ``float64``/``float32`` arithmetic N is the computed floats. Written by
+        [`trinormal.fields.result_repr`][trinormal.fields.result_repr].
 
         Examples
         --------
@@ -279,18 +237,9 @@ class TriangleNormal:
         TriangleNormal(a=(0, 0, 0), b=(1, 1, 1), c=(2, 2, 2), winding='ABC', arithmetic='exact',
                        normal=(0, 0, 0), magnitude_squared=0, degenerate=True)
         """
-        e = self.exact
-        if self.arithmetic == "exact":
-            normal = exact_literals(e.normal)
-            squared = exact_literal(e.magnitude_squared)
-            tail = f"normal={normal}, magnitude_squared={squared}"
-        else:
-            tail = f"normal={self.normal!r}"
-        return (
-            f"TriangleNormal(a={exact_literals(e.a)}, b={exact_literals(e.b)}, "
-            f"c={exact_literals(e.c)}, winding={self.winding.value!r}, "
-            f"arithmetic={self.arithmetic!r}, {tail}, degenerate={self.degenerate})"
-        )
+        from trinormal.fields import result_repr  # the formatter sits above the core
+
+        return result_repr(self)
 
     @cached_property
     def exact(self) -> Exact:
@@ -323,13 +272,41 @@ class TriangleNormal:
         )
 
     @property
+    def thickness(self) -> float:
+        """|N| / L², L the longest side: the number the degenerate test compares with ``tol``.
+
+        |N| / L is the triangle's height over its longest side, so this is that
+        height as a fraction of the longest side: 0 for points on one line (or
+        on one spot), √3/2 ≈ 0.866 at most (an equilateral triangle). It does not
+        depend on which corner is A or on the winding, nor on the scale. In
+        ``float64``/``float32`` arithmetic it is still the exact value for the
+        inputs as given (the verdict there uses the N that format computed).
+
+        Examples
+        --------
+        >>> triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).thickness
+        0.5
+        >>> triangle_normal((0, 1e-13, 0), (0, 0, 0), (1, 0, 0)).thickness
+        1e-13
+        """
+        s = self._integers
+        return _sqrt_ratio(s.norm_squared, _longest_squared(s.u, s.v) ** 2)
+
+    @property
     def sine(self) -> float:
-        """Sine of the angle between U and V: |N| / (|U| |V|), 0.0 if an edge is zero.
+        """Sine of the angle at A between U and V: |N| / (|U| |V|), 0.0 if an edge is zero.
+
+        It describes the corner A only, so it changes when another corner comes
+        first; the degenerate verdict does not use it (see
+        [`thickness`][trinormal.core.TriangleNormal.thickness]). A right angle at
+        A has sine 1 however thin the triangle is.
 
         Examples
         --------
         >>> round(triangle_normal((0, 0, 0), (1, 0, 0), (1, 1, 0)).sine, 12)
         0.707106781187
+        >>> triangle_normal((0, 0, 0), (1, 0, 0), (0, 1e-13, 0)).sine
+        1.0
         """
         s = self._integers
         uu = sum(i * i for i in s.u)
@@ -343,6 +320,7 @@ class TriangleNormal:
 
         In ``float64``/``float32`` arithmetic the strings are those of the
         computed floats, written exactly before rounding to ``precision``.
+        Written by [`trinormal.fields.format_fields`][trinormal.fields.format_fields].
 
         Parameters
         ----------
@@ -372,54 +350,16 @@ class TriangleNormal:
         >>> triangle_normal((0, 0, 0), (1, 1, 1), (2, 2, 2)).format()["unit_normal"]
         'undefined'
         """
-        spec = fields.FIELDS
-        if self.arithmetic == "exact":
-            values = self._exact_fields()
-        else:
-            values = {f.key: _float_surds(f.kind, getattr(self, f.key)) for f in spec}
-        written: dict[Surd, str] = {}  # the unit normal's numbers recur in the plane
+        from trinormal.fields import format_fields  # the formatter sits above the core
 
-        def number(x: Surd) -> str:
-            text = written.get(x)
-            if text is None:
-                text = written[x] = format_surd(x[0], x[1], x[2], precision, trim)
-            return text
-
-        out = {f.key: f.write(values[f.key], number) for f in spec}
-        if self.degenerate:
-            out["status"] = VERDICTS["degenerate"].format(reason=self.reason)
-        else:
-            out["status"] = VERDICTS["proper"]
-        return out
-
-    def _exact_fields(self) -> dict[str, Any]:
-        """Compute the exact value of every output field, in the form its kind takes.
-
-        Vectors are three `trinormal.fields.Surd`, scalars one, the plane
-        ``(unit normal, offset)``; ``None`` where the value is undefined.
-        """
-        s = self._integers
-        D, D2, S = s.denominator, s.denominator * s.denominator, s.norm_squared
-        unit = plane = None
-        if not self.degenerate:
-            unit = tuple([(i < 0, i * i, S) for i in s.normal])
-            dot = sum(i * j for i, j in zip(s.normal, s.coords[0:3], strict=True))
-            plane = (unit, (dot < 0, dot * dot, S * D2))
-        return {
-            "u": tuple([_rational_surd(i, D) for i in s.u]),
-            "v": tuple([_rational_surd(i, D) for i in s.v]),
-            "normal": tuple([_rational_surd(i, D2) for i in s.normal]),
-            "magnitude": (False, S, D2 * D2),
-            "area": (False, S, 4 * D2 * D2),
-            "unit_normal": unit,
-            "plane": plane,
-        }
+        return format_fields(self, precision, trim)
 
     def to_dict(self) -> dict[str, Any]:
         """Every field as JSON-ready values: floats (non-finite as strings) and exact strings.
 
         The output fields (`trinormal.fields.FIELDS`) appear under their
-        keys, between the inputs and the verdict.
+        keys, between the inputs and the verdict. Written by
+        [`trinormal.fields.result_dict`][trinormal.fields.result_dict].
 
         Examples
         --------
@@ -427,71 +367,9 @@ class TriangleNormal:
         >>> d["normal"], d["plane"], d["exact"]["area_squared"]
         ([0.0, 0.0, 1.0], {'normal': [0.0, 0.0, 1.0], 'offset': 0.0}, '1/4')
         """
-        e = self.exact
-        out: dict[str, Any] = {
-            "a": _json_vector(self.a),
-            "b": _json_vector(self.b),
-            "c": _json_vector(self.c),
-            "winding": self.winding.value,
-            "arithmetic": self.arithmetic,
-            "tol": self.tol,
-        }
-        for f in fields.FIELDS:
-            out[f.key] = _json_value(f.kind, getattr(self, f.key))
-        out["degenerate"] = self.degenerate
-        out["reason"] = self.reason
-        out["exact"] = {
-            "a": _exact_strings(e.a),
-            "b": _exact_strings(e.b),
-            "c": _exact_strings(e.c),
-            "u": _exact_strings(e.u),
-            "v": _exact_strings(e.v),
-            "normal": _exact_strings(e.normal),
-            "magnitude_squared": str(e.magnitude_squared),
-            "area_squared": str(e.magnitude_squared / 4),
-        }
-        return out
+        from trinormal.fields import result_dict  # the formatter sits above the core
 
-
-def _rational_surd(n: int, d: int) -> Surd:
-    """Write the rational ``n / d`` as a `Surd`."""
-    return (n < 0, n * n, d * d)
-
-
-def _float_surds(kind: str, value: Any) -> Any:
-    """Write a field's float value (by its kind) as exact `Surd`."""
-    if value is None:
-        return None
-    if kind == "scalar":
-        return _rational_surd(*value.as_integer_ratio())
-    if kind == "vector":
-        return tuple([_rational_surd(*x.as_integer_ratio()) for x in value])
-    normal, offset = value
-    return (_float_surds("vector", normal), _rational_surd(*offset.as_integer_ratio()))
-
-
-def _json_number(x: float) -> float | str:
-    return x if math.isfinite(x) else str(x)
-
-
-def _json_vector(xs: Iterable[float]) -> list[float | str]:
-    return [_json_number(x) for x in xs]
-
-
-def _json_value(kind: str, value: Any) -> Any:
-    """Write a field's float value (by its kind) as JSON-ready numbers; keep ``None``."""
-    if value is None:
-        return None
-    if kind == "scalar":
-        return _json_number(value)
-    if kind == "vector":
-        return _json_vector(value)
-    normal, offset = value
-    return {"normal": _json_vector(normal), "offset": _json_number(offset)}
-
-
-def _exact_strings(xs: Iterable[Fraction]) -> list[str]:
-    return [str(x) for x in xs]
+        return result_dict(self)
 
 
 # --------------------------------------------------------------------------- arithmetic
@@ -523,20 +401,29 @@ def _sqrt_ratio(num: int, den: int) -> float:
     return _div(r, 1 << k)
 
 
-def _exact_integers(ratios: list[tuple[int, int]], winding: Winding) -> _Integers:
-    """Bring the nine ``(numerator, denominator)`` coordinates to one denominator; form U, V, N."""
-    coords, D = check_common(ratios)
-    ax, ay, az, bx, by, bz, cx, cy, cz = coords
-    if winding is Winding.ABC:
-        ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
-    else:
-        ux, uy, uz, vx, vy, vz = cx - ax, cy - ay, cz - az, bx - ax, by - ay, bz - az
-    nx = uy * vz - uz * vy
-    ny = uz * vx - ux * vz
-    nz = ux * vy - uy * vx
-    return _Integers(
-        coords, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), nx * nx + ny * ny + nz * nz
+def _longest_squared(u: tuple[int, ...], v: tuple[int, ...]) -> int:
+    """L², the squared length of the longest side, from the edges U and V (V − U is the third)."""
+    ux, uy, uz = u
+    vx, vy, vz = v
+    wx, wy, wz = vx - ux, vy - uy, vz - uz
+    return max(
+        ux * ux + uy * uy + uz * uz, vx * vx + vy * vy + vz * vz, wx * wx + wy * wy + wz * wz
     )
+
+
+def _thin(norm_squared: int, longest_squared: int, tn: int, td: int) -> bool:
+    """Decide |N| <= tol · L² (the degenerate test) squared, in exact integers (tol = tn / td).
+
+    ``norm_squared`` and ``longest_squared`` must be over the same denominator
+    (|N|² over D⁴ and L² over D², as `_Integers` holds them).
+    """
+    # 2**(bits − 1) <= x < 2**bits: when the bit lengths alone put the left side above the
+    # right one, the products are not needed (the usual case, a triangle far from thin)
+    # (N = 0 is always degenerate: it has no lower bound to compare)
+    bits = td.bit_length() - tn.bit_length() - longest_squared.bit_length()
+    if norm_squared and norm_squared.bit_length() + 2 * bits >= 3:
+        return False
+    return norm_squared * td * td <= tn * tn * longest_squared * longest_squared
 
 
 #: The verdict sentences, as ``str.format`` templates: the status line of every result
@@ -549,8 +436,7 @@ VERDICTS: dict[str, str] = {
     "coincide": "{names} coincide, so the triangle has no area.",
     "collinear": "A, B and C are collinear{where} (they lie on one line), so the area is zero.",
     "too_thin": (
-        "the angle between the edges is too small to trust: "
-        "the sine of it is at most the tolerance."
+        "it is too thin to trust (its height is at most the tolerance times its longest side)."
     ),
 }
 
@@ -592,9 +478,10 @@ def triangle_normal(
         ``"ABC"``: U = B − A, V = C − A. ``"ACB"``: U = C − A, V = B − A.
         N = U × V, so the two orders give opposite normals.
     tol : real, default 1e-12
-        Degeneracy threshold on the sine of the angle between U and V, from 0
-        to 1 (see [`trinormal.tolerances`][trinormal.tolerances]). ``0`` flags only exactly
-        collinear or coincident points.
+        Degeneracy threshold, from 0 to 1: the triangle is degenerate when
+        ``|N| <= tol · L²``, L its longest side (see
+        [`trinormal.tolerances`][trinormal.tolerances]), whichever corner is A.
+        ``0`` flags only exactly collinear or coincident points.
     arithmetic : {"exact", "float64", "float32"}, default "exact"
         ``"exact"`` computes with rationals and rounds once at the end.
         ``"float64"``/``"float32"`` evaluate the textbook formula step by step in
@@ -656,7 +543,9 @@ def triangle_normal(
     ValueError: B.y is NaN
     """
     # The common call (plain tuples or lists of floats and ints, the default tolerance,
-    # exact arithmetic) takes the fast path; it hands anything unusual to the careful one.
+    # exact arithmetic) is read by _plain_integers, without the careful checks; anything
+    # it cannot read is read by validation. Both hand the one exact path, _exact, the same
+    # integers, so the result depends only on the values.
     if (
         arithmetic == "exact"
         and type(tol) is float
@@ -667,9 +556,12 @@ def triangle_normal(
         and type(b) in _SEQ
         and type(c) in _SEQ
     ):
-        r = _fast_exact(a, b, c, winding == "ABC")
-        if r is not None:
-            return r
+        plain = _plain_integers(a, b, c)
+        if plain is not None:
+            ints, D, pinv = plain
+            w = Winding.ABC if winding == "ABC" else Winding.ACB
+            points = (a, b, c) if pinv and type(a) is type(b) is type(c) is tuple else None
+            return _exact(ints, D, w, _TN, _TD, DEFAULT_TOL, pinv, points)
     coords = check_vertex(a, "A") + check_vertex(b, "B") + check_vertex(c, "C")
     w = check_winding(winding)
     tn, td = check_tolerance(tol)
@@ -678,8 +570,11 @@ def triangle_normal(
             f"arithmetic must be one of {', '.join(ARITHMETICS)}; got {_show(arithmetic)}"
         )
     if arithmetic == "exact":
-        return _exact(coords, w, tn, td)
-    return _floating(coords, w, tn, td, arithmetic)
+        ints, D = check_common(coords)
+        return _exact(ints, D, w, tn, td, tn / td)
+    from trinormal._float_arithmetic import floating  # the rarer path, read when used
+
+    return floating(coords, w, tn, td, arithmetic)
 
 
 _SEQ = (tuple, list)
@@ -690,29 +585,27 @@ _pow2 = math.ldexp
 _new_tuple = tuple.__new__  # builds a NamedTuple without its Python-level __new__
 _new_object = object.__new__
 _set = object.__setattr__
-#: The fast float path handles nonzero coordinates in [2**-400, 2**400): U, V, N and
-#: |N| then stay normal floats, so power-of-two scaling of them is exact.
+#: Plain floats with every nonzero coordinate in [2**-400, 2**400): U, V, N and |N|
+#: then stay normal floats, so power-of-two scaling of them is exact.
 _LOW, _HIGH = 2.0**-400, 2.0**400
 _TN, _TD = DEFAULT_TOL.as_integer_ratio()
-_tn_sq, _td_sq = _TN * _TN, _TD * _TD
 
 
-def _fast_exact(a: Any, b: Any, c: Any, abc: bool) -> TriangleNormal | None:
-    """Compute the exact path for plain tuples/lists of floats and ints, with the default tol.
+def _plain_integers(a: Any, b: Any, c: Any) -> tuple[tuple[int, ...], int, float] | None:
+    """Read three plain vertices of floats and ints as integers over one denominator.
 
-    Returns None (and the careful path takes over) for anything else: other
-    types, NaN or infinities, wrong lengths, degenerate triangles, results
-    beyond the float range. This is the same arithmetic as `_exact` (and
-    repeats the cross product of `_exact_integers` on purpose), written out
-    in one function because most calls look like this and each extra Python
-    function call is a visible share of its few microseconds.
+    Returns ``(ints, D, pinv)``, the nine coordinates times ``D``; ``pinv`` is
+    ``1 / D`` when D is a power of two and every nonzero coordinate is a float in
+    [2**-400, 2**400) (then ``float(i) * pinv`` is ``i / D`` correctly rounded),
+    else ``0.0``. Returns None, and validation reads the vertices, for anything
+    else: other types, wrong lengths, NaN or infinities, ints beyond the size
+    limit.
     """
     if len(a) != 3 or len(b) != 3 or len(c) != 3:
         return None
     vals = (*a, *b, *c)
     types = set(map(type, vals))
-    floats = types == _FLOAT_ONLY and type(a) is type(b) is type(c) is tuple
-    scaled = False  # True: U, V, N convert as float(int) * 2**-s, exactly rounded
+    pinv = 0.0
     try:
         if types == _FLOAT_ONLY:
             mags = list(map(abs, vals))
@@ -724,35 +617,45 @@ def _fast_exact(a: Any, b: Any, c: Any, abc: bool) -> TriangleNormal | None:
                 shift = 53 - _frexp(lo)[1]
                 if shift > 0:
                     p = _pow2(1.0, shift)
-                    ints = tuple([int(x * p) for x in vals])
-                    D = 1 << shift
-                    pinv = 1.0 / p
-                else:
-                    ints = tuple([int(x) for x in vals])
-                    D, pinv = 1, 1.0
-                scaled = True
-            else:  # extreme exponents: one exponent for all nine, via frexp
-                fe = list(map(_frexp, vals))
-                emin = min([e for _, e in fe])
-                ints = tuple([int(f * _TWO53) << (e - emin) for f, e in fe])
-                if emin <= 53:
-                    D = 1 << (53 - emin)
-                else:
-                    D = 1
-                    ints = tuple([i << (emin - 53) for i in ints])
-        elif _PLAIN.issuperset(types):
+                    return tuple([int(x * p) for x in vals]), 1 << shift, 1.0 / p
+                return tuple([int(x) for x in vals]), 1, 1.0
+            # extreme exponents: one exponent for all nine, via frexp
+            fe = list(map(_frexp, vals))
+            emin = min([e for _, e in fe])
+            ints = tuple([int(f * _TWO53) << (e - emin) for f, e in fe])
+            if emin <= 53:
+                return ints, 1 << (53 - emin), pinv
+            return tuple([i << (emin - 53) for i in ints]), 1, pinv
+        if _PLAIN.issuperset(types):
             if max(map(abs, vals)) >= _INT_LIMIT:
-                return None  # the careful path refuses it, naming the coordinate
+                return None  # validation refuses it, naming the coordinate
             ratios = [x.as_integer_ratio() for x in vals]
             D = max([d for _, d in ratios])
             top = D.bit_length()
-            ints = tuple([n << (top - d.bit_length()) for n, d in ratios])
-        else:
-            return None
+            return tuple([n << (top - d.bit_length()) for n, d in ratios]), D, pinv
     except (ValueError, OverflowError):  # NaN or an infinity
         return None
+    return None
+
+
+def _exact(
+    ints: tuple[int, ...],
+    D: int,
+    w: Winding,
+    tn: int,
+    td: int,
+    tol: float,
+    pinv: float = 0.0,
+    points: tuple[Any, Any, Any] | None = None,
+) -> TriangleNormal:
+    """Compute the result exactly from the nine coordinates ``ints / D``: the one exact path.
+
+    ``tol`` is ``tn / td`` as a float (the result's ``tol``). ``pinv`` is
+    ``1 / D`` when `_plain_integers` found the scaled floats exact (else 0.0);
+    ``points`` are the vertices when they are already tuples of floats.
+    """
     ax, ay, az, bx, by, bz, cx, cy, cz = ints
-    if abc:
+    if w is Winding.ABC:
         ux, uy, uz, vx, vy, vz = bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az
     else:
         ux, uy, uz, vx, vy, vz = cx - ax, cy - ay, cz - az, bx - ax, by - ay, bz - az
@@ -760,94 +663,51 @@ def _fast_exact(a: Any, b: Any, c: Any, abc: bool) -> TriangleNormal | None:
     ny = uz * vx - ux * vz
     nz = ux * vy - uy * vx
     S = nx * nx + ny * ny + nz * nz
-    uu = ux * ux + uy * uy + uz * uz
-    vv = vx * vx + vy * vy + vz * vz
-    # sine² = S / (|U|²|V|²) > 2**(bits(S) − 1 − bits(|U|²) − bits(|V|²)) when S > 0: when
-    # that bound is far above tol² (about 2**-79.7), the exact comparison is not needed.
-    if not S or (
-        S.bit_length() - uu.bit_length() - vv.bit_length() < -75 and S * _td_sq <= _tn_sq * uu * vv
-    ):
-        return None  # degenerate: the careful path explains why
-    k = max(0, 67 - (S.bit_length() >> 1))
-    r = math.isqrt(S << (k << 1))
-    try:
-        if scaled:
-            # float(int) rounds correctly and a power-of-two factor is exact while the
-            # result stays a normal float, which the bounds _LOW and _HIGH guarantee.
-            f = float
-            p2 = pinv * pinv
-            u = (f(ux) * pinv, f(uy) * pinv, f(uz) * pinv)
-            v = (f(vx) * pinv, f(vy) * pinv, f(vz) * pinv)
-            normal = (f(nx) * p2, f(ny) * p2, f(nz) * p2)
-            magnitude = r / (1 << k) * p2  # r / 2**k is correctly rounded; then exact
-        else:
-            D2 = D * D
-            u = (ux / D, uy / D, uz / D)
-            v = (vx / D, vy / D, vz / D)
-            normal = (nx / D2, ny / D2, nz / D2)
-            magnitude = r / (D2 << k)
-        unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)
-        return _result(
-            a if floats else (float(a[0]), float(a[1]), float(a[2])),
-            b if floats else (float(b[0]), float(b[1]), float(b[2])),
-            c if floats else (float(c[0]), float(c[1]), float(c[2])),
-            Winding.ABC if abc else Winding.ACB,
-            u,
-            v,
-            normal,
-            magnitude,
-            magnitude * 0.5 if scaled else r / (D * D << (k + 1)),
-            unit,
-            False,
-            _new_tuple(Plane, (unit, ((nx * ax + ny * ay + nz * az) << k) / (r * D))),
-            "",
-            "exact",
-            DEFAULT_TOL,
-            _new_tuple(_Integers, (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S)),
-        )
-    except OverflowError:  # an int or a result beyond the float range
-        return None
-
-
-def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> TriangleNormal:
-    s = _exact_integers(coords, w)
-    ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S = s
-    D2 = D * D
-    # degenerate <=> |N| <= tol |U||V| <=> S td² <= tn² |U|²|V|²  (all exact integers)
-    degenerate = S * td * td <= tn * tn * (ux * ux + uy * uy + uz * uz) * (
-        vx * vx + vy * vy + vz * vz
-    )
-    floats = _divide(ints, D)
-    try:  # int / int is correctly rounded; it raises only beyond the float range
-        u = (ux / D, uy / D, uz / D)
-        v = (vx / D, vy / D, vz / D)
-        normal = (nx / D2, ny / D2, nz / D2)
-    except OverflowError:
-        u, v, normal = _divide(s.u, D), _divide(s.v, D), _divide(s.normal, D2)
-    unit = plane = None
-    reason = ""
-    if S == 0:
-        magnitude = area = 0.0
-    else:
+    s = _new_tuple(_Integers, (ints, D, (ux, uy, uz), (vx, vy, vz), (nx, ny, nz), S))
+    degenerate = _thin(S, _longest_squared(s.u, s.v), tn, td)
+    if points is None:
+        f = _divide(ints, D)
+        points = ((f[0], f[1], f[2]), (f[3], f[4], f[5]), (f[6], f[7], f[8]))
+    k = r = 0
+    if S:
         # r ≈ sqrt(S)·2**k with at least 66 correct bits, so each division below
         # is within 1 ulp of the exact value, at any scale
         k = max(0, 67 - (S.bit_length() >> 1))
         r = math.isqrt(S << (k << 1))
-        scale = D2 << k
+    if pinv:
+        # float(int) rounds correctly and a power-of-two factor is exact while the
+        # result stays a normal float, which _plain_integers's bounds guarantee; it
+        # overflows only when the coordinates span more than about 2**±500 together.
         try:
-            magnitude = r / scale
-            area = r / (scale << 1)
+            p2 = pinv * pinv
+            u = (float(ux) * pinv, float(uy) * pinv, float(uz) * pinv)
+            v = (float(vx) * pinv, float(vy) * pinv, float(vz) * pinv)
+            normal = (float(nx) * p2, float(ny) * p2, float(nz) * p2)
+            magnitude = r / (1 << k) * p2  # r / 2**k is correctly rounded; then exact
+            area = magnitude * 0.5
         except OverflowError:
-            magnitude, area = _div(r, scale), _div(r, scale << 1)
+            pinv = 0.0
+    if not pinv:
+        D2 = D * D
+        try:  # int / int is correctly rounded; it raises only beyond the float range
+            u = (ux / D, uy / D, uz / D)
+            v = (vx / D, vy / D, vz / D)
+            normal = (nx / D2, ny / D2, nz / D2)
+        except OverflowError:
+            u, v, normal = _divide(s.u, D), _divide(s.v, D), _divide(s.normal, D2)
+        magnitude, area = _div(r, D2 << k), _div(r, D2 << (k + 1))
+    unit = plane = None
+    reason = ""
     if degenerate:
         reason = _reason(ints, S == 0)
     else:
         unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)  # |unit| <= 1: no overflow
-        plane = Plane(unit, _div((nx * ints[0] + ny * ints[1] + nz * ints[2]) << k, r * D))
+        offset = _div((nx * ax + ny * ay + nz * az) << k, r * D)
+        plane = _new_tuple(Plane, (unit, offset))
     return _result(
-        (floats[0], floats[1], floats[2]),
-        (floats[3], floats[4], floats[5]),
-        (floats[6], floats[7], floats[8]),
+        points[0],
+        points[1],
+        points[2],
         w,
         u,
         v,
@@ -859,7 +719,7 @@ def _exact(coords: list[tuple[int, int]], w: Winding, tn: int, td: int) -> Trian
         plane,
         reason,
         "exact",
-        tn / td,
+        tol,
         s,
     )
 
@@ -886,7 +746,7 @@ def _result(
 
     The arguments are the fields in order. The result is frozen: its attributes
     are set once, here, as one dictionary (the dataclass's field-by-field
-    ``__init__`` would cost about 3 µs a call, a third of the whole calculation).
+    ``__init__`` is a large share of the time of one call, and it is refused).
     """
     r = _new_object(TriangleNormal)
     _set(
@@ -912,108 +772,3 @@ def _result(
         },
     )
     return r
-
-
-def _floating(
-    coords: list[tuple[int, int]], w: Winding, tn: int, td: int, fmt: str
-) -> TriangleNormal:
-    """Evaluate the textbook formula with every operation rounded in float64 or float32."""
-    if fmt == "float32":
-        rnd = _f32
-        vals = [_ratio_to_f32(n, d) for n, d in coords]
-        limit = "±3.4e38"
-    else:
-
-        def rnd(x: float) -> float:
-            return x
-
-        vals = [_div(n, d) for n, d in coords]
-        limit = "±1.8e308"
-    for x, i in zip(vals, range(9), strict=True):
-        if math.isinf(x):
-            raise FloatRangeError(
-                f"{VERTICES[i // 3]}.{AXES[i % 3]} is outside the {fmt} range ({limit}); "
-                "use arithmetic='exact'"
-            )
-    A, B, C = vals[0:3], vals[3:6], vals[6:9]
-    P, Q = (B, C) if w is Winding.ABC else (C, B)
-    u = (rnd(P[0] - A[0]), rnd(P[1] - A[1]), rnd(P[2] - A[2]))
-    v = (rnd(Q[0] - A[0]), rnd(Q[1] - A[1]), rnd(Q[2] - A[2]))
-    n = (
-        rnd(rnd(u[1] * v[2]) - rnd(u[2] * v[1])),
-        rnd(rnd(u[2] * v[0]) - rnd(u[0] * v[2])),
-        rnd(rnd(u[0] * v[1]) - rnd(u[1] * v[0])),
-    )
-    for q, name in ((u, "U"), (v, "V"), (n, "N")):
-        if not all(math.isfinite(x) for x in q):
-            raise FloatRangeError(
-                f"{name} overflows the {fmt} range ({limit}) for these points; "
-                "use arithmetic='exact'"
-            )
-    degenerate = _degenerate_floats(u, v, n, tn, td)
-    # |N| in this format, scaled by a power of two so squares neither overflow nor underflow
-    m = max(abs(x) for x in n)
-    unit = plane = None
-    reason = ""
-    if m == 0.0:
-        magnitude = 0.0
-    else:
-        e = math.frexp(m)[1]
-        sx, sy, sz = (rnd(math.ldexp(x, -e)) for x in n)
-        ss = rnd(rnd(rnd(sx * sx) + rnd(sy * sy)) + rnd(sz * sz))
-        root = rnd(math.sqrt(ss))
-        magnitude = rnd(_ldexp(root, e))
-        if math.isinf(magnitude):
-            raise FloatRangeError(
-                f"|N| overflows the {fmt} range ({limit}) for these points; use arithmetic='exact'"
-            )
-    area = rnd(magnitude / 2)
-    if degenerate:
-        ints = check_common([x.as_integer_ratio() for x in vals])[0]
-        nr = [x.as_integer_ratio() for x in n]
-        reason = _reason(ints, all(p == 0 for p, _ in nr), fmt)
-    else:
-        unit = (rnd(sx / root), rnd(sy / root), rnd(sz / root))
-        d = rnd(rnd(rnd(unit[0] * A[0]) + rnd(unit[1] * A[1])) + rnd(unit[2] * A[2]))
-        if math.isinf(d):
-            raise FloatRangeError(
-                f"the plane's offset n̂ · A overflows the {fmt} range ({limit}) for these "
-                "points; use arithmetic='exact'"
-            )
-        plane = Plane(unit, d)
-    return _result(
-        (A[0], A[1], A[2]),
-        (B[0], B[1], B[2]),
-        (C[0], C[1], C[2]),
-        w,
-        u,
-        v,
-        n,
-        magnitude,
-        area,
-        unit,
-        degenerate,
-        plane,
-        reason,
-        fmt,
-        tn / td,
-        _exact_integers(coords, w),
-    )
-
-
-def _ldexp(x: float, e: int) -> float:
-    try:
-        return math.ldexp(x, e)
-    except OverflowError:
-        return math.copysign(math.inf, x)
-
-
-def _degenerate_floats(u: Vec3, v: Vec3, n: Vec3, tn: int, td: int) -> bool:
-    """Apply the sine test to float-computed U, V and N, evaluated exactly."""
-    uv, D = check_common([x.as_integer_ratio() for x in (*u, *v)])
-    ni, Dn = check_common([x.as_integer_ratio() for x in n])
-    uu = sum(i * i for i in uv[0:3])
-    vv = sum(i * i for i in uv[3:6])
-    Sn = sum(i * i for i in ni)
-    # |N| <= tol |U||V|  with N = ni / Dn and U, V = uv / D
-    return Sn * td * td * D**4 <= tn * tn * uu * vv * Dn * Dn

@@ -9,12 +9,17 @@ Each field's value is the string ``TriangleNormal.format(precision)[key]``;
 its ``kind`` says how that string is written ([`Field.text`][trinormal.fields.Field.text]), and the
 same key names the float value in ``TriangleNormal.to_dict()``.
 
-Adding an output is one entry in `FIELDS` plus its computation in
-[`trinormal.core`][trinormal.core]: the attribute of
-[`TriangleNormal`][trinormal.core.TriangleNormal] of
-the same name (the float value) and its entry in ``TriangleNormal._exact_fields``
-(the exact value the text is rounded from). Code that reads the fields looks
-them up as ``fields.FIELDS`` when it runs, never copies them.
+This module also writes a whole result: [`format_fields`][trinormal.fields.format_fields]
+(the strings behind ``TriangleNormal.format``), [`result_dict`][trinormal.fields.result_dict]
+(``to_dict``) and [`result_repr`][trinormal.fields.result_repr] (``repr``). The core
+computes; it imports nothing from here.
+
+Adding an output is one entry in `FIELDS` plus its computation: the attribute of
+[`TriangleNormal`][trinormal.core.TriangleNormal] of the same name (the float value,
+in [`trinormal.core`][trinormal.core]) and its entry in
+[`exact_values`][trinormal.fields.exact_values] (the exact value the text is rounded
+from). Code that reads the fields looks them up as ``fields.FIELDS`` when it runs,
+never copies them.
 
 Examples
 --------
@@ -26,13 +31,35 @@ Examples
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import math
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from typing import Any
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
 
-from trinormal.display import format_surd, join_vector, plane_equation
+from trinormal.display import (
+    exact_literal,
+    exact_literals,
+    format_surd,
+    join_vector,
+    plane_equation,
+)
 
-__all__ = ["FIELDS", "KINDS", "Field", "Surd", "field_labels", "fields_spec"]
+if TYPE_CHECKING:
+    from trinormal.core import TriangleNormal
+
+__all__ = [
+    "FIELDS",
+    "KINDS",
+    "Field",
+    "Surd",
+    "exact_values",
+    "field_labels",
+    "fields_spec",
+    "format_fields",
+    "result_dict",
+    "result_repr",
+]
 
 #: An exact number as ``(negative, num, den)``: the value ``±sqrt(num / den)``.
 #: A rational ``p/q`` is ``(p < 0, p*p, q*q)``; |N| is ``(False, |N|², 1)``.
@@ -200,3 +227,172 @@ def fields_spec() -> list[dict[str, str]]:
         }
         for f in FIELDS
     ]
+
+
+# --------------------------------------------------------------------------- one result
+
+
+def exact_values(r: TriangleNormal) -> dict[str, Any]:
+    """Compute the exact value of every output field of an exact result, as its kind takes it.
+
+    Vectors are three `Surd`, scalars one, the plane ``(unit normal, offset)``;
+    ``None`` where the value is undefined.
+
+    Examples
+    --------
+    >>> from trinormal import triangle_normal
+    >>> exact_values(triangle_normal((0, 0, 0), (2, 0, 0), (0, 1, 0)))["area"]
+    (False, 4, 4)
+    """
+    s = r._integers
+    D, D2, S = s.denominator, s.denominator * s.denominator, s.norm_squared
+    unit = plane = None
+    if not r.degenerate:
+        unit = tuple([(i < 0, i * i, S) for i in s.normal])
+        dot = sum(i * j for i, j in zip(s.normal, s.coords[0:3], strict=True))
+        plane = (unit, (dot < 0, dot * dot, S * D2))
+    return {
+        "u": tuple([_rational_surd(i, D) for i in s.u]),
+        "v": tuple([_rational_surd(i, D) for i in s.v]),
+        "normal": tuple([_rational_surd(i, D2) for i in s.normal]),
+        "magnitude": (False, S, D2 * D2),
+        "area": (False, S, 4 * D2 * D2),
+        "unit_normal": unit,
+        "plane": plane,
+    }
+
+
+def format_fields(r: TriangleNormal, precision: int = 4, trim: bool = False) -> dict[str, str]:
+    """Display strings for every output field of a result, and its ``status`` sentence.
+
+    This is ``TriangleNormal.format`` (documented there). Exact results are
+    rounded from [`exact_values`][trinormal.fields.exact_values]; ``float64``/``float32``
+    results from the computed floats, written exactly.
+
+    Examples
+    --------
+    >>> from trinormal import triangle_normal
+    >>> format_fields(triangle_normal((0, 0, 0), (2, 0, 0), (0, 3, 0)), 2)["area"]
+    '3.00'
+    """
+    from trinormal.core import VERDICTS
+
+    spec = FIELDS
+    if r.arithmetic == "exact":
+        values = exact_values(r)
+    else:
+        values = {f.key: _float_surds(f.kind, getattr(r, f.key)) for f in spec}
+    written: dict[Surd, str] = {}  # the unit normal's numbers recur in the plane
+
+    def number(x: Surd) -> str:
+        text = written.get(x)
+        if text is None:
+            text = written[x] = format_surd(x[0], x[1], x[2], precision, trim)
+        return text
+
+    out = {f.key: f.write(values[f.key], number) for f in spec}
+    if r.degenerate:
+        out["status"] = VERDICTS["degenerate"].format(reason=r.reason)
+    else:
+        out["status"] = VERDICTS["proper"]
+    return out
+
+
+def result_dict(r: TriangleNormal) -> dict[str, Any]:
+    """Every field of a result as JSON-ready values: ``TriangleNormal.to_dict`` (documented there).
+
+    Examples
+    --------
+    >>> from trinormal import triangle_normal
+    >>> result_dict(triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)))["exact"]["normal"]
+    ['0', '0', '1']
+    """
+    e = r.exact
+    out: dict[str, Any] = {
+        "a": _json_vector(r.a),
+        "b": _json_vector(r.b),
+        "c": _json_vector(r.c),
+        "winding": r.winding.value,
+        "arithmetic": r.arithmetic,
+        "tol": r.tol,
+    }
+    for f in FIELDS:
+        out[f.key] = _json_value(f.kind, getattr(r, f.key))
+    out["degenerate"] = r.degenerate
+    out["reason"] = r.reason
+    out["exact"] = {
+        "a": _exact_strings(e.a),
+        "b": _exact_strings(e.b),
+        "c": _exact_strings(e.c),
+        "u": _exact_strings(e.u),
+        "v": _exact_strings(e.v),
+        "normal": _exact_strings(e.normal),
+        "magnitude_squared": str(e.magnitude_squared),
+        "area_squared": str(e.magnitude_squared / 4),
+    }
+    return out
+
+
+def result_repr(r: TriangleNormal) -> str:
+    """Write the inputs and N of a result exactly, as Python literals: ``repr(TriangleNormal)``.
+
+    Examples
+    --------
+    >>> from trinormal import triangle_normal
+    >>> result_repr(triangle_normal((0, 0, 0), (1, 0, 0), (0, "1/2", 0), arithmetic="float64"))
+    "TriangleNormal(a=(0, 0, 0), b=(1, 0, 0), c=(0, '0.5', 0), winding='ABC', \
+arithmetic='float64', normal=(0.0, 0.0, 0.5), degenerate=False)"
+    """
+    e = r.exact
+    if r.arithmetic == "exact":
+        normal = exact_literals(e.normal)
+        squared = exact_literal(e.magnitude_squared)
+        tail = f"normal={normal}, magnitude_squared={squared}"
+    else:
+        tail = f"normal={r.normal!r}"
+    return (
+        f"TriangleNormal(a={exact_literals(e.a)}, b={exact_literals(e.b)}, "
+        f"c={exact_literals(e.c)}, winding={r.winding.value!r}, "
+        f"arithmetic={r.arithmetic!r}, {tail}, degenerate={r.degenerate})"
+    )
+
+
+def _rational_surd(n: int, d: int) -> Surd:
+    """Write the rational ``n / d`` as a `Surd`."""
+    return (n < 0, n * n, d * d)
+
+
+def _float_surds(kind: str, value: Any) -> Any:
+    """Write a field's float value (by its kind) as exact `Surd`."""
+    if value is None:
+        return None
+    if kind == "scalar":
+        return _rational_surd(*value.as_integer_ratio())
+    if kind == "vector":
+        return tuple([_rational_surd(*x.as_integer_ratio()) for x in value])
+    normal, offset = value
+    return (_float_surds("vector", normal), _rational_surd(*offset.as_integer_ratio()))
+
+
+def _json_number(x: float) -> float | str:
+    return x if math.isfinite(x) else str(x)
+
+
+def _json_vector(xs: Iterable[float]) -> list[float | str]:
+    return [_json_number(x) for x in xs]
+
+
+def _json_value(kind: str, value: Any) -> Any:
+    """Write a field's float value (by its kind) as JSON-ready numbers; keep ``None``."""
+    if value is None:
+        return None
+    if kind == "scalar":
+        return _json_number(value)
+    if kind == "vector":
+        return _json_vector(value)
+    normal, offset = value
+    return {"normal": _json_vector(normal), "offset": _json_number(offset)}
+
+
+def _exact_strings(xs: Iterable[Fraction]) -> list[str]:
+    return [str(x) for x in xs]

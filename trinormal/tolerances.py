@@ -1,13 +1,24 @@
 """Every tolerance trinormal uses, in one place.
 
-A triangle is *degenerate* when the sine of the angle between its two edge
-vectors is at most a tolerance ``tol``::
+A triangle is *degenerate* when it is thin compared with its longest side::
 
-    |N| <= tol * |U| * |V|
+    |N| <= tol * L**2,   L**2 = max(|B - A|**2, |C - A|**2, |C - B|**2)
+
+|N| is twice the area, so |N| / L is the height of the triangle over its
+longest side and the rule reads: the height is at most ``tol`` times the
+longest side. The rule is the same for every order of the corners (each
+rotation, both windings), so a needle is degenerate whichever corner is A,
+and so are nearly coincident points (L is then a side the third point is
+close to, or the height over it is tiny).
 
 The test is scale-invariant: multiplying every coordinate by the same factor
 never changes the verdict, so a valid triangle with edges of length 1e-200 keeps
 its normal. ``tol = 0`` is the exact collinearity test (N is exactly zero).
+``|N| / L**2`` is at most √3/2 (an equilateral triangle), so ``tol = 1`` marks
+every triangle degenerate. The core decides it in exact integers; results show
+the measured value as ``TriangleNormal.thickness``. This docstring is the one
+statement of the rule; the core, the mesh kernel, the command line and the
+site's calculator apply it.
 
 Examples
 --------
@@ -25,7 +36,7 @@ __all__ = [
     "UNIT_NORMAL_ULPS",
 ]
 
-#: Default sine threshold below which a triangle counts as degenerate.
+#: Default threshold on |N| / L² at or below which a triangle counts as degenerate.
 #: About 10 000 times the double-precision unit roundoff: a triangle this thin
 #: has a normal that float64 arithmetic cannot be trusted to orient.
 DEFAULT_TOL: float = 1e-12

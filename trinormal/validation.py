@@ -33,7 +33,8 @@ The rules
   indexed. Sets, dictionaries, strings, bytes and iterators (whose length is
   unknown) are refused without reading any item from them.
 * **winding** is ``"ABC"`` or ``"ACB"``; **precision** is a whole number from
-  0 to 15; **tol** (a bound on the sine of an angle) is from 0 to 1.
+  0 to 15; **tol** (a bound on how thin a triangle may be compared with its
+  longest side, `trinormal.tolerances`) is from 0 to 1.
 
 Examples
 --------
@@ -152,7 +153,7 @@ MESSAGES: dict[str, str] = {
         "{name} must be a whole number from {min_precision} to {max_precision}, got {shown}"
     ),
     "precision_range": "{name} must be from {min_precision} to {max_precision}, got {shown}",
-    "tolerance_rule": "{name} must be >= 0 and <= 1 (it bounds the sine of an angle)",
+    "tolerance_rule": "{name} must be >= 0 and <= 1 (it bounds |N| / L², L the longest side)",
 }
 
 
@@ -697,7 +698,8 @@ def check_precision(precision: object, name: str = "precision") -> int:
 def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     """Read a degeneracy tolerance exactly: a number from 0 to 1, as ``(n, d)``.
 
-    ``tol`` bounds the sine of the angle between a triangle's edges, so 1
+    ``tol`` bounds |N| / L², L the longest side (the rule of
+    [`trinormal.tolerances`][trinormal.tolerances]), which is at most √3/2, so 1
     already marks every triangle degenerate; larger values are refused.
 
     Parameters
@@ -728,11 +730,11 @@ def check_tolerance(tol: object, name: str = "tol") -> tuple[int, int]:
     >>> check_tolerance(-1)
     Traceback (most recent call last):
     ...
-    ValueError: tol must be >= 0 and <= 1 (it bounds the sine of an angle), got -1
+    ValueError: tol must be >= 0 and <= 1 (it bounds |N| / L², L the longest side), got -1
     >>> check_tolerance(float("nan"))
     Traceback (most recent call last):
     ...
-    ValueError: tol is NaN; tol must be >= 0 and <= 1 (it bounds the sine of an angle)
+    ValueError: tol is NaN; tol must be >= 0 and <= 1 (it bounds |N| / L², L the longest side)
     """
     rule = message("tolerance_rule", name=name)
     try:

@@ -1,18 +1,28 @@
-// Build trinormal's 3D views into one ES module for JupyterLab (anywidget) and the site:
+// Build trinormal's 3D views (the triangle explorer and the mesh view) from src/:
 //   node build.mjs [OUTDIR]      (default: ../../trinormal/explorer/static)
-// Writes explorer.js, the explorer and the mesh view from src/main.js (three.js bundled in once,
-// CSS as a string, minified, deterministic), and THIRD_PARTY_LICENSES.txt (the licences of
-// three.js, three-mesh-bvh and meshoptimizer, copied from node_modules, with their versions).
 //
-// One three.js per page: anywidget imports the module afresh for every widget (and again
-// when a cell is re-run), and each import would evaluate three.js again (three warns about
-// "multiple instances"). So the bundle is an IIFE wrapped in a small ES module that keeps
-// the evaluated runtime on globalThis, keyed by a hash of the code: the first import runs
-// it, every later import of the same build reuses it. Inside the bundle three.js itself is
-// shared too (sharedThree below), so even two builds on one page (a notebook's old output
-// beside a new one) run one three.js of a version.
+// Two outputs, for two kinds of host, each with THIRD_PARTY_LICENSES.txt beside it (the
+// licences of three.js, three-mesh-bvh and meshoptimizer, copied from node_modules with their
+// versions). Both are minified, deterministic, CSS bundled as a string, nothing loaded at run
+// time from another origin.
+//
+// OUTDIR/explorer.js, the Jupyter widget (anywidget): ONE self-contained ES module holding both
+// views (src/main.js), because anywidget loads `_esm` from a blob URL where no relative import
+// resolves, and a notebook showing an Explorer and a MeshView must run three.js once. anywidget
+// imports the module afresh for every widget (and again when a cell is re-run), so the bundle is
+// an IIFE wrapped in a small ES module that keeps the evaluated runtime on globalThis, keyed by a
+// hash of the code: the first import runs it, every later import of the same build reuses it.
+// Inside it three.js is shared as well (sharedThree below), so even two builds on one page (a
+// notebook's old output beside a new one) run one three.js of a version.
+//
+// OUTDIR/site-modules/, the site (copied to assets/explorer/ by docs/hooks): a page loads only
+// the view it shows, so the calculator does not carry the mesh view's code, picking and simplifier.
+// esbuild's code splitting makes one ES module per view, explorer.js (src/index.js) and mesh.js
+// (src/mesh/view.js), and one shared chunk, shared-HASH.js, with three.js and the code both
+// views use. The entries import the chunk by a relative URL; the browser's module map evaluates
+// a URL once per page, so three.js runs once however often an entry is imported.
 import { createHash } from "node:crypto";
-import { mkdirSync, readdirSync, readFileSync, writeFileSync } from "node:fs";
+import { mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { build, transform } from "esbuild";
@@ -103,45 +113,84 @@ const sharedThree = {
 };
 
 
-const result = await build({
+const VERSIONS = `three.js ${three.version}, three-mesh-bvh ${bvh.version} and meshoptimizer ${meshopt.version}`;
+const COMMON = {
   absWorkingDir: here,
-  entryPoints: ["src/main.js"], // both views: the explorer and the mesh view
-  outfile: join(out, "explorer.js"),
   write: false,
   bundle: true,
-  format: "iife",
-  globalName: "tnxModule",
   target: "es2020",
   minify: true,
   legalComments: "none", // the licences travel in THIRD_PARTY_LICENSES.txt next to the bundle
   charset: "utf8",
-  plugins: [cssAsText, sharedThree],
   sourcemap: false,
   metafile: false,
   logLevel: "warning",
-});
-const inner = result.outputFiles[0].text.trim();
-const key = createHash("sha256").update(inner).digest("hex").slice(0, 16);
-writeFileSync(
-  join(out, "explorer.js"),
-  `/* trinormal 3D views (the explorer and the mesh view). Bundles three.js ${three.version}, three-mesh-bvh ${bvh.version} and meshoptimizer ${meshopt.version} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */\n` +
-    `const G=globalThis.__trinormalExplorer||(globalThis.__trinormalExplorer={});\n` +
-    `const R=G["${key}"]||(G["${key}"]=(()=>{${inner}\nreturn tnxModule})());\n` +
-    `export default R.default;\nexport const explorer=R.explorer,mesh=R.mesh;\n`,
-);
+};
+
+/** The widget: both views in one file (see the header). */
+async function buildWidget() {
+  const result = await build({
+    ...COMMON,
+    entryPoints: ["src/main.js"],
+    outfile: join(out, "explorer.js"),
+    format: "iife",
+    globalName: "tnxModule",
+    plugins: [cssAsText, sharedThree],
+  });
+  const inner = result.outputFiles[0].text.trim();
+  const key = createHash("sha256").update(inner).digest("hex").slice(0, 16);
+  writeFileSync(
+    join(out, "explorer.js"),
+    `/* trinormal 3D views (the explorer and the mesh view). Bundles ${VERSIONS} (MIT licences, see THIRD_PARTY_LICENSES.txt). Built by js/explorer/build.mjs. */\n` +
+      `const G=globalThis.__trinormalExplorer||(globalThis.__trinormalExplorer={});\n` +
+      `const R=G["${key}"]||(G["${key}"]=(()=>{${inner}\nreturn tnxModule})());\n` +
+      `export default R.default;\nexport const explorer=R.explorer,mesh=R.mesh;\n`,
+  );
+  writeLicences(out, "explorer.js (the explorer and the mesh view) bundles the following third-party software.");
+}
+
+/** The site: one module per view and their shared chunk (see the header). */
+async function buildSite() {
+  const dir = join(out, "site-modules");
+  mkdirSync(dir, { recursive: true });
+  // files of an earlier build (a chunk's name changes with its content)
+  for (const name of readdirSync(dir)) if (name.endsWith(".js")) rmSync(join(dir, name));
+  const result = await build({
+    ...COMMON,
+    entryPoints: { explorer: "src/index.js", mesh: "src/mesh/view.js" },
+    outdir: dir,
+    format: "esm",
+    splitting: true,
+    chunkNames: "shared-[hash]",
+    banner: { js: `/* trinormal 3D views for the site, built by js/explorer/build.mjs from ${VERSIONS} (MIT licences, see THIRD_PARTY_LICENSES.txt). */` },
+    plugins: [cssAsText],
+  });
+  for (const file of result.outputFiles) writeFileSync(file.path, file.text);
+  writeLicences(
+    dir,
+    "explorer.js (the explorer), mesh.js (the mesh view) and shared-*.js (three.js and the code both use) bundle the following third-party software.",
+  );
+}
 
 const licenceOf = (pkg, file = "LICENSE") => readFileSync(join(here, "node_modules", pkg, file), "utf8").replace(/\r\n/g, "\n").trimEnd();
-writeFileSync(
-  join(out, "THIRD_PARTY_LICENSES.txt"),
-  "explorer.js (the explorer and the mesh view) bundles the following third-party software.\n\n" +
-    `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
-    licenceOf("three") +
-    "\n\n" +
-    `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", the mesh view's picking), MIT licence:\n\n` +
-    licenceOf("three-mesh-bvh") +
-    "\n\n" +
-    `meshoptimizer ${meshopt.version} (npm package "meshoptimizer", the mesh view's coarser copy of a big model while it turns), MIT licence:\n\n` +
-    licenceOf("meshoptimizer", "LICENSE.md") +
-    "\n",
-);
-console.log(`built ${join(out, "explorer.js")} (the explorer and the mesh view) with three ${three.version}`);
+
+function writeLicences(dir, first) {
+  writeFileSync(
+    join(dir, "THIRD_PARTY_LICENSES.txt"),
+    first +
+      "\n\n" +
+      `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
+      licenceOf("three") +
+      "\n\n" +
+      `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", the mesh view's picking), MIT licence:\n\n` +
+      licenceOf("three-mesh-bvh") +
+      "\n\n" +
+      `meshoptimizer ${meshopt.version} (npm package "meshoptimizer", the mesh view's coarser copy of a big model while it turns), MIT licence:\n\n` +
+      licenceOf("meshoptimizer", "LICENSE.md") +
+      "\n",
+  );
+}
+
+await buildWidget();
+await buildSite();
+console.log(`built ${join(out, "explorer.js")} (the widget, both views) and ${join(out, "site-modules")} (one module per view) with three ${three.version}`);

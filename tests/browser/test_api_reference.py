@@ -9,6 +9,7 @@ words (the guide's pages carry ``search: boost: 10``, the API's ``0.001``: an AP
 
 from __future__ import annotations
 
+import html as html_lib
 import importlib
 import json
 import re
@@ -34,6 +35,13 @@ def _documented(html: str, module: str) -> set[str]:
     return set(ids)
 
 
+def _module_pages(site_dir: Path, module: str) -> dict[str, str]:
+    """A module's API pages: ``api/MODULE/`` and, for a module split by topic, its sub-pages."""
+    folder = site_dir / "api" / module
+    pages = [folder / "index.html", *sorted(folder.glob("*/index.html"))]
+    return {p.parent.relative_to(site_dir).as_posix(): p.read_text(encoding="utf-8") for p in pages}
+
+
 def _article_text(html: str) -> str:
     article = html[html.index("<article") : html.index("</article>")]
     return re.sub(r"\s+", " ", re.sub(r"<[^>]+>", " ", article))
@@ -50,31 +58,46 @@ def test_one_page_per_public_module(site_dir: Path) -> None:
 
 @pytest.mark.parametrize("module", MODULES)
 def test_a_module_page_lists_its_public_names_only(site_dir: Path, module: str) -> None:
-    html = (site_dir / "api" / module / "index.html").read_text(encoding="utf-8")
     public = set(importlib.import_module(f"trinormal.{module}").__all__)
-    documented = _documented(html, module)
-    assert documented, module
-    assert documented <= public, documented - public
-    assert not any(name.startswith("_") for name in documented)
-    text = _article_text(html)
-    assert [w for w in INTERNALS if w in text] == []
-    # public names first: the summary of them comes before the first documented object
-    first = min(html.index(f'id="trinormal.{module}.{name}"') for name in documented)
-    summary = re.search(r"(Classes|Functions|Attributes|Modules):", text)
-    assert summary is not None, f"no summary of the public names on {module}"
-    assert html.index(">" + summary.group(1) + ":") < first
+    everywhere: set[str] = set()
+    for rel, html in _module_pages(site_dir, module).items():
+        documented = _documented(html, module)
+        everywhere |= documented
+        assert documented <= public, (rel, documented - public)
+        text = _article_text(html)
+        assert [w for w in INTERNALS if w in text] == [], rel
+        if not documented:
+            continue
+        # public names first: each is linked from a summary above the first documented object
+        first = min(html.index(f'id="trinormal.{module}.{name}"') for name in documented)
+        summary = html[:first]
+        assert [n for n in documented if f'#trinormal.{module}.{n}"' not in summary] == [], rel
+    assert everywhere, module
 
 
 def test_every_public_function_and_class_is_documented(site_dir: Path) -> None:
     undocumented = {}
     for module in MODULES:
         mod = importlib.import_module(f"trinormal.{module}")
-        html = (site_dir / "api" / module / "index.html").read_text(encoding="utf-8")
+        documented: set[str] = set()
+        for html in _module_pages(site_dir, module).values():
+            documented |= _documented(html, module)
         wanted = {n for n in mod.__all__ if callable(getattr(mod, n)) and getattr(mod, n).__doc__}
-        lost = wanted - _documented(html, module)
+        lost = wanted - documented
         if lost:
             undocumented[module] = sorted(lost)
     assert undocumented == {}
+
+
+def test_a_name_split_by_topic_is_on_one_page_only(site_dir: Path) -> None:
+    pages = _module_pages(site_dir, "mesh")
+    assert len(pages) >= 4, pages.keys()
+    where: dict[str, list[str]] = {}
+    for rel, html in pages.items():
+        for name in _documented(html, "mesh"):
+            where.setdefault(name, []).append(rel)
+    assert {n: r for n, r in where.items() if len(r) != 1} == {}
+    assert set(where) == set(importlib.import_module("trinormal.mesh").__all__)
 
 
 def test_the_search_index_weights_the_guide_above_the_api(site_dir: Path) -> None:
@@ -82,7 +105,7 @@ def test_the_search_index_weights_the_guide_above_the_api(site_dir: Path) -> Non
     boost = {d["location"]: d.get("boost", 1) for d in docs["docs"] if "#" not in d["location"]}
     guide = {k: v for k, v in boost.items() if k.startswith("guide/")}
     api = {k: v for k, v in boost.items() if k.startswith("api/")}
-    assert len(guide) >= 6 and len(api) == len(MODULES) + 1
+    assert len(guide) >= 6 and len(api) == len(_api_pages(site_dir))
     assert min(guide.values()) > max(api.values()), (guide, api)
 
 
@@ -106,3 +129,97 @@ def test_searching_the_guide_s_words_lists_the_guide_first(
     assert "guide" in kinds, where
     assert kinds == sorted(kinds, key=lambda k: k != "guide"), where
     assert not traffic.problems()
+
+
+# ----------------------------------------------------------------------------- public names only
+
+#: The tallest an API page may be at 1280 px wide, in CSS pixels: a reader finds a name by
+#: scrolling, so a module with many names is split over several pages (api/mesh/).
+MAX_HEIGHT = 30_000
+#: A private name in text: ``_x`` or ``a._x`` (not a path such as ``trinormal/_notebooks``, not
+#: a dunder such as ``__init__``).
+PRIVATE = re.compile(r"(?<![\w/])(?:\w+\.)*_(?!_)[A-Za-z]\w*")
+
+
+def _api_pages(site_dir: Path) -> list[str]:
+    return sorted(
+        p.parent.relative_to(site_dir).as_posix() + "/"
+        for p in (site_dir / "api").rglob("index.html")
+    )
+
+
+def _public_names() -> set[str]:
+    """Every public name of the package, as a docstring may write it.
+
+    ``name``, ``module.name`` and ``trinormal.module.name`` for each name in a public module's
+    ``__all__``; ``Class.member`` for each public member of a public class; the modules.
+    """
+    names = set()
+    for module in MODULES:
+        mod = importlib.import_module(f"trinormal.{module}")
+        names |= {module, f"trinormal.{module}"}
+        for name in mod.__all__:
+            names |= {name, f"{module}.{name}", f"trinormal.{module}.{name}"}
+            obj = getattr(mod, name)
+            if isinstance(obj, type):
+                names |= {f"{name}.{m}" for m in vars(obj) if not m.startswith("_")}
+    return names
+
+
+def _prose(html: str) -> str:
+    """The article without its code blocks, links and headings: the text a mention sits in."""
+    article = html[html.index("<article") : html.index("</article>")]
+    return re.sub(r"<(pre|a|h[1-6])\b[^>]*>.*?</\1>", "", article, flags=re.S)
+
+
+def test_no_api_page_shows_a_private_name(site_dir: Path) -> None:
+    # signatures (defaults), attribute values and docstrings: the whole text of each page
+    found = {}
+    for rel in _api_pages(site_dir):
+        text = html_lib.unescape(_article_text((site_dir / rel / "index.html").read_text()))
+        private = sorted(set(PRIVATE.findall(text)))
+        if private:
+            found[rel] = private
+    assert found == {}
+    # a private default is shown as Python shows it (its repr), not by its name
+    exercises = (site_dir / "api" / "exercises" / "index.html").read_text(encoding="utf-8")
+    assert "<code>&lt;missing&gt;</code>" in exercises
+
+
+def test_every_mention_of_a_public_name_is_a_link(site_dir: Path) -> None:
+    public = _public_names()
+    assert {"triangle_normal", "TriangleNormal.format", "trinormal.mesh.check"} <= public
+    unlinked, linked = {}, 0
+    for rel in _api_pages(site_dir):
+        html = (site_dir / rel / "index.html").read_text(encoding="utf-8")
+        article = html[html.index("<article") : html.index("</article>")]
+        linked += len(re.findall(r'<a class="autorefs autorefs-internal"[^>]*><code>', article))
+        for code in re.findall(r"<code>([^<>]+)</code>", _prose(html)):
+            name = re.match(r"[A-Za-z_][\w.]*", code.strip())
+            rest = code.strip()[name.end() :] if name else ""
+            if name and name.group() in public and (not rest or rest[0] in "(["):
+                unlinked.setdefault(rel, []).append(code)
+    assert unlinked == {}
+    assert linked >= 100, linked
+
+
+def test_a_mention_links_to_the_name_s_own_entry(site_dir: Path) -> None:
+    fields = (site_dir / "api" / "fields" / "index.html").read_text(encoding="utf-8")
+    # the module docstring of trinormal.fields names FIELDS in plain code
+    hrefs = re.findall(
+        r'<a class="autorefs autorefs-internal"[^>]*href="([^"]+)"[^>]*><code>FIELDS<', fields
+    )
+    assert hrefs and all(h.endswith("#trinormal.fields.FIELDS") for h in hrefs), hrefs
+
+
+def test_every_api_page_is_at_most_30000_px_tall_at_1280_px(
+    page: Any, server: str, site_dir: Path
+) -> None:
+    page.set_viewport_size({"width": 1280, "height": 800})
+    heights = {}
+    for rel in _api_pages(site_dir):
+        page.goto(server + rel)
+        page.wait_for_load_state("load")
+        heights[rel] = page.evaluate("document.documentElement.scrollHeight")
+    assert len(heights) >= len(MODULES) + 1
+    assert {rel: h for rel, h in heights.items() if h > MAX_HEIGHT} == {}, heights

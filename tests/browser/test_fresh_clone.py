@@ -1,13 +1,12 @@
 """From a fresh copy of the repository: `uv run jupyter lab notebooks` and `make lab`.
 
-The copy holds the files git knows (committed or not yet committed, none it ignores), in a
-temporary folder, with no .venv. uv's cache makes the installs quick and offline.
+The copy (checkout_support.fresh_clone) holds the files git knows, in a temporary folder, with
+no .venv. uv's cache makes the installs quick and offline.
 """
 
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import subprocess
 import time
@@ -15,7 +14,7 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-from browser_support import ROOT
+from checkout_support import clean_env, fresh_clone
 from install_support import base_python, uv
 from jupyterlab_support import free_port
 
@@ -25,27 +24,7 @@ TOOLS = {"pytest", "playwright", "mkdocs", "mkdocs-material", "trimesh", "scipy"
 
 @pytest.fixture(scope="module")
 def clone(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    dest = tmp_path_factory.mktemp("clone") / "trinormal"
-    files = subprocess.run(
-        ["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
-        cwd=ROOT, capture_output=True, check=True,
-    ).stdout.decode().split("\0")  # fmt: skip
-    for name in filter(None, files):
-        source = ROOT / name
-        if source.is_file() and not source.is_symlink():
-            (dest / name).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(source, dest / name)
-        elif source.is_symlink():
-            (dest / name).parent.mkdir(parents=True, exist_ok=True)
-            (dest / name).symlink_to(os.readlink(source))
-    return dest
-
-
-def env() -> dict[str, str]:
-    out = {**os.environ, "UV_PYTHON_DOWNLOADS": "never"}
-    for name in ("VIRTUAL_ENV", "UV_PROJECT_ENVIRONMENT", "MAKEFLAGS", "MAKELEVEL", "MFLAGS"):
-        out.pop(name, None)
-    return out
+    return fresh_clone(tmp_path_factory.mktemp("clone") / "trinormal")
 
 
 def installed(venv: Path) -> set[str]:
@@ -57,7 +36,7 @@ def test_uv_run_then_make_lab_from_a_fresh_clone(clone: Path) -> None:
     # 1. uv run: the lab's packages only
     done = subprocess.run(
         [uv(), "run", "--locked", "--python", base_python(), "jupyter", "lab", "--version"],
-        cwd=clone, env=env(), capture_output=True, text=True,
+        cwd=clone, env=clean_env(), capture_output=True, text=True,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
     packages = installed(clone / ".venv")
@@ -72,7 +51,7 @@ def test_uv_run_then_make_lab_from_a_fresh_clone(clone: Path) -> None:
         proc = subprocess.Popen(
             ["make", "lab", f"LAB_ARGS=--no-browser --port={port} --ServerApp.ip=127.0.0.1 "
              "--ServerApp.token= --ServerApp.port_retries=0"],
-            cwd=clone, env=env(), stdout=out, stderr=subprocess.STDOUT, start_new_session=True,
+            cwd=clone, env=clean_env(), stdout=out, stderr=subprocess.STDOUT, start_new_session=True,
         )  # fmt: skip
     try:
         deadline = time.monotonic() + 120
@@ -100,6 +79,6 @@ def test_uv_run_then_make_lab_from_a_fresh_clone(clone: Path) -> None:
     # make lab's environment gives Notebook 7 too (the README says the explorer works there)
     notebook = subprocess.run(
         [str(clone / ".venv" / "bin" / "jupyter"), "notebook", "--version"],
-        cwd=clone, env=env(), capture_output=True, text=True,
+        cwd=clone, env=clean_env(), capture_output=True, text=True,
     )  # fmt: skip
     assert notebook.returncode == 0 and notebook.stdout.startswith("7."), notebook

@@ -3,7 +3,8 @@
 The session fixtures (conftest.py) build the wheel once, install ``wheel[notebooks]``
 into a fresh venv in a temporary folder, and start the run's one JupyterLab server
 from that venv. Here: the wheel carries the licences, the explorer's bundle, the
-notebooks and the typing marker; ``trinormal-notebooks`` copies the notebooks out, and
+notebooks and the typing marker (and so does the wheel ``uv build`` makes from the sdist of
+a fresh clone, as ``python -m build`` does); ``trinormal-notebooks`` copies the notebooks out, and
 nbval runs them there, in a kernel of that venv, against the outputs stored in them (this
 is the run's one nbval check of the notebooks: ``make test`` does not run them a second
 time in the development environment); a core-only install runs the CLI and names the
@@ -17,13 +18,15 @@ import json
 import os
 import subprocess
 import sys
+import tarfile
 import xml.etree.ElementTree as ET
 import zipfile
 from pathlib import Path
 from typing import Any
 
 from browser_support import ROOT
-from install_support import install
+from checkout_support import clean_env, fresh_clone
+from install_support import install, uv
 
 NOTEBOOKS = sorted(p.name for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 
@@ -45,7 +48,8 @@ def run(args: list[Any], cwd: Path) -> subprocess.CompletedProcess[str]:
     return subprocess.run([str(a) for a in args], cwd=cwd, capture_output=True, text=True)
 
 
-def test_the_wheel_carries_licences_bundle_notebooks_and_types(wheel: Path) -> None:
+def check_contents(wheel: Path) -> None:
+    """The wheel carries the licences, the explorer's bundle, every notebook and py.typed."""
     names = set(zipfile.ZipFile(wheel).namelist())
     info = next(n.split("/")[0] for n in names if n.endswith(".dist-info/METADATA"))
     assert f"{info}/licenses/LICENSE" in names
@@ -65,6 +69,30 @@ def test_the_wheel_carries_licences_bundle_notebooks_and_types(wheel: Path) -> N
     assert "Provides-Extra: notebooks" in metadata
     assert "trinormal-notebooks = trinormal.notebooks:main" in scripts
     assert bundle == (ROOT / "trinormal" / "explorer" / "static" / "explorer.js").read_bytes()
+
+
+def test_the_wheel_carries_licences_bundle_notebooks_and_types(wheel: Path) -> None:
+    check_contents(wheel)
+
+
+def test_uv_build_makes_the_wheel_from_the_sdist_of_a_fresh_clone(tmp_path: Path) -> None:
+    """`uv build` (as `python -m build`) makes the sdist, then the wheel from the sdist alone."""
+    clone = fresh_clone(tmp_path / "trinormal")
+    out = tmp_path / "dist"
+    done = subprocess.run(
+        [uv(), "build", "--out-dir", str(out), str(clone)],
+        cwd=tmp_path, env=clean_env(), capture_output=True, text=True,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stdout + done.stderr[-3000:]
+    assert "Building wheel from source distribution" in done.stdout + done.stderr
+    (sdist,) = out.glob("trinormal-*.tar.gz")
+    (wheel,) = out.glob("trinormal-*.whl")
+    with tarfile.open(sdist) as tar:
+        names = tar.getnames()
+    top = names[0].split("/")[0]
+    notebooks = [n.split("/")[-1] for n in names if n.startswith(f"{top}/notebooks/")]
+    assert sorted(n for n in notebooks if n.endswith(".ipynb")) == NOTEBOOKS
+    check_contents(wheel)
 
 
 def test_copied_notebooks_execute_in_the_installed_package(wheel_env: Path, tmp_path: Path) -> None:

@@ -17,7 +17,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from trinormal import triangle_normal
+from trinormal import DEFAULT_TOL, triangle_normal
 from trinormal.fields import FIELDS
 
 OUTPUT_KEYS = tuple(f.key for f in FIELDS)
@@ -194,6 +194,39 @@ CASES: list[tuple[str, Point, Point, Point, str, int]] = [
         "ABC",
         4,
     ),
+]
+
+
+# Thin and nearly coincident triangles, each listed in every order of its corners (three
+# rotations, both windings): the verdict is |N| <= tol · L², L the longest side, so it is
+# the same in every order, and the site's JavaScript must agree with Python on each.
+_TOL_N, _TOL_D = DEFAULT_TOL.as_integer_ratio()
+THIN: list[tuple[str, Point, Point, Point]] = [
+    ("needle, right angle at A", ("0", "0", "0"), ("1", "0", "0"), ("0", "1e-13", "0")),
+    ("needle above tol", ("0", "0", "0"), ("1", "0", "0"), ("0", "1e-11", "0")),
+    ("needle far along AB", ("0", "0", "0"), ("1", "0", "0"), ("1000", "1e-8", "0")),
+    ("C within 1e-13 of A", ("0", "0", "0"), ("1", "0", "0"), ("1e-13", "1e-13", "0")),
+    (
+        "C within 1e-13 of A, tilted",
+        ("2", "-1", "3"),
+        ("3", "1", "5"),
+        ("2", "-1", "3.0000000000001"),
+    ),
+    # |N| / L² exactly the default tol (the float 1e-12), and a hair above it
+    ("on the tolerance", ("0", "0", "0"), ("1", "0", "0"), ("1/2", f"{_TOL_N}/{_TOL_D}", "0")),
+    (
+        "just above the tolerance",
+        ("0", "0", "0"),
+        ("1", "0", "0"),
+        ("1/2", f"{_TOL_N + 1}/{_TOL_D}", "0"),
+    ),
+]
+ROTATIONS = (("A first", (0, 1, 2)), ("B first", (1, 2, 0)), ("C first", (2, 0, 1)))
+CASES += [
+    (f"{label}, {name}, {winding}", *(pts[i] for i in order), winding, 4)  # type: ignore[misc]
+    for label, *pts in THIN
+    for name, order in ROTATIONS
+    for winding in ("ABC", "ACB")
 ]
 
 

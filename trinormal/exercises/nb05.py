@@ -56,9 +56,10 @@ def _check_down_acb(answer: Any) -> Verdict:
         note = ""
         if r.degenerate:
             note = (
-                f"Exactly, it faces straight down; but its sine is {format_number(r.sine, 2)}, at "
-                f"most trinormal's tolerance {format_number(DEFAULT_TOL, 0)}, so "
-                "triangle_normal calls it degenerate: a fatter triangle is safer."
+                "Exactly, it faces straight down; but its height is only "
+                f"{format_number(r.thickness, 2)} times its longest side, at most trinormal's "
+                f"tolerance {format_number(DEFAULT_TOL, 0)}, so triangle_normal calls it "
+                "degenerate: a fatter triangle is safer."
             )
         return Verdict(True, note=note)
     off = _angle_from_down(nx, ny, nz)
@@ -149,7 +150,8 @@ EXERCISES = (
         "05-collinear",
         f"A = {COLLINEAR_AB[0]} and B = {COLLINEAR_AB[1]}. Give a point C, different from both, "
         "that makes the area 0 (exact numbers must be exactly on the line; floats count when "
-        "the sine of the angle at A is at most trinormal's default tolerance, 1e-12).",
+        "the triangle is thin compared with its longest side: its height at most "
+        "trinormal's default tolerance, 1e-12, times that side).",
         checker=_check_collinear,
         example=_on_the_line,
     ),

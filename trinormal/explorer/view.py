@@ -2,7 +2,7 @@
 
 [`ExplorerView`][trinormal.explorer.ExplorerView] holds state and nothing else; the ES module
 ``trinormal/explorer/static/explorer.js`` (built from ``js/explorer/`` with
-three.js) renders it. The same module renders the site's calculator with a small
+three.js) renders it. The same sources render the site's calculator with a small
 model object fed by the site's JavaScript core, so the view is written once.
 
 State flows one way, kernel → traitlets → view. The browser never writes a

@@ -1,6 +1,6 @@
 """The 3D view of a whole mesh in Jupyter: an anywidget on the site's mesh view.
 
-[`MeshView`][trinormal.mesh.widget.MeshView] draws a mesh with the same ES module as the
+[`MeshView`][trinormal.mesh.widget.MeshView] draws a mesh with the same view as the
 site's "Check a mesh" page (the mesh view in ``trinormal/explorer/static/explorer.js``, the
 one bundle of both 3D views, built from ``js/explorer/src/`` with three.js) and the same
 colour code: the front of each face in the ``front`` colour, its back in the ``back`` colour,

@@ -231,9 +231,8 @@
   /*
    * While a vertex is dragged in the 3D view the boxes change every frame; the address then
    * follows once the pointer rests for URL_QUIET ms (and always ends on the last value). Each
-   * history update makes Chromium fetch the page's icon again: written every frame (as on a
-   * slow machine) it took close to a third of the CPU time of a drag frame (measured with
-   * Chromium's tracing and benchmarks/bench_view.py).
+   * history update makes Chromium fetch the page's icon again, too much work to do on every
+   * frame of a drag.
    */
   var URL_QUIET = 200;
   var urlTimer = 0;
@@ -300,11 +299,5 @@
     $("tn-calculator").setAttribute("data-ready", "true");
   }
 
-  if (window.document$ && typeof window.document$.subscribe === "function") {
-    window.document$.subscribe(init);
-  } else if (document.readyState === "loading") {
-    document.addEventListener("DOMContentLoaded", init);
-  } else {
-    init();
-  }
+  window.TrinormalSite.onEachPage(init);
 })();

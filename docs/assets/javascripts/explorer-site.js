@@ -1,6 +1,6 @@
 /*
- * The 3D view on the site: the same ES module JupyterLab runs (assets/explorer/explorer.js),
- * driven by a small model object instead of a Python kernel. The model's `state` is computed
+ * The 3D view on the site: the explorer view (assets/explorer/explorer.js, built from the same
+ * sources as JupyterLab's widget), driven by a small model object instead of a Python kernel. The model's `state` is computed
  * by TrinormalCore (exact, the same strings as the Python package); labels and colours come
  * from window.TRINORMAL_CONSTANTS, which the build writes from the package.
  *
@@ -85,11 +85,11 @@ export function createModel(initial, onEdit, maxPrecision) {
     last_edit: {},
     ...initial,
   };
-  const listeners = new Map();
+  const events = modelEvents();
   let answering = false; // applying an edit: the changes answer it, they are no new version
 
   function emit(key) {
-    for (const cb of [...(listeners.get("change:" + key) || [])]) cb({ name: key, new: data[key] });
+    events.emit(key, data[key]);
   }
 
   function same(x, y) {
@@ -154,6 +154,22 @@ export function createModel(initial, onEdit, maxPrecision) {
   return {
     get: (key) => data[key],
     send,
+    on: events.on,
+    off: events.off,
+    update,
+  };
+}
+
+/**
+ * The change events of a model with anywidget's API, for this page's explorer and the mesh
+ * page's view: the view listens with on("change:key", cb) and off, the host calls emit.
+ */
+export function modelEvents() {
+  const listeners = new Map();
+  return {
+    emit(key, value) {
+      for (const cb of [...(listeners.get("change:" + key) || [])]) cb({ name: key, new: value });
+    },
     on(event, cb) {
       if (!listeners.has(event)) listeners.set(event, new Set());
       listeners.get(event).add(cb);
@@ -163,7 +179,6 @@ export function createModel(initial, onEdit, maxPrecision) {
       else if (!cb) listeners.delete(event);
       else listeners.get(event)?.delete(cb);
     },
-    update,
   };
 }
 
@@ -277,10 +292,4 @@ function init() {
   }
 }
 
-if (window.document$ && typeof window.document$.subscribe === "function") {
-  window.document$.subscribe(init);
-} else if (document.readyState === "loading") {
-  document.addEventListener("DOMContentLoaded", init);
-} else {
-  init();
-}
+window.TrinormalSite.onEachPage(init);

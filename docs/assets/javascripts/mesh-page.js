@@ -2,14 +2,16 @@
  * The "Check a mesh" page: choose or drop an OBJ, STL or PLY file, or an example; a Web Worker
  * (mesh-worker.js, running trinormal-mesh-*.js) reads it, checks it and fixes its winding, with a
  * progress bar; the page shows the report (rows and sentences from the package, through
- * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view of assets/explorer/explorer.js) and offers the
+ * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view, assets/explorer/mesh.js) and offers the
  * repaired file for download. A face picked in the view (a click, or its number typed) is
  * answered here as the kernel answers it in Jupyter: its three vertices, its exact normal and
  * its area from the calculator's core (TrinormalCore), with the package's wording
  * (TRINORMAL_CONSTANTS.mesh.selection, trinormal.mesh.selection). Nothing leaves the browser.
  */
+import { modelEvents } from "./explorer-site.js"; // the calculator's 3D view, on every page
+
 const WORKER = new URL("mesh-worker.js", import.meta.url).href;
-const VIEW = new URL("../explorer/explorer.js", import.meta.url).href; // both 3D views, one three.js
+const VIEW = new URL("../explorer/mesh.js", import.meta.url).href; // the mesh view (three.js in its shared chunk)
 const SHOWN = 12; // list at most this many indices in a row of the report
 
 const $ = (id) => document.getElementById(id);
@@ -62,23 +64,16 @@ function createWorker() {
 /** A tiny model with anywidget's API for the mesh view. */
 function createModel(initial) {
   const data = { ...initial };
-  const listeners = new Map();
+  const events = modelEvents();
   return {
     get: (key) => data[key],
     set(key, value) {
       data[key] = value;
-      for (const cb of listeners.get("change:" + key) || []) cb({ name: key, new: value });
+      events.emit(key, value);
     },
     save_changes() {},
-    on(event, cb) {
-      if (!listeners.has(event)) listeners.set(event, new Set());
-      listeners.get(event).add(cb);
-    },
-    off(event, cb) {
-      if (!event) listeners.clear();
-      else if (!cb) listeners.delete(event);
-      else listeners.get(event)?.delete(cb);
-    },
+    on: events.on,
+    off: events.off,
   };
 }
 
@@ -167,6 +162,128 @@ function show(value, key = "") {
   return String(value);
 }
 
+/** Fill the report's tables, notes and summary from the worker's report. */
+function renderReport(r) {
+  const tbody = $("tn-mesh-rows");
+  tbody.textContent = "";
+  const rows = (constants().mesh || {}).rows || [];
+  for (const [key, label] of rows) {
+    const tr = document.createElement("tr");
+    tr.append(cell("th", label, { scope: "row" }), cell("td", show(r[key], key)));
+    tr.dataset.key = key;
+    tbody.appendChild(tr);
+  }
+  const pieces = $("tn-mesh-pieces");
+  pieces.textContent = "";
+  // each cell carries its column's heading: on a phone the table is a list of cards
+  const heads = [...pieces.closest("table").querySelectorAll("thead th")].map((th) => th.textContent);
+  let dash = false;
+  r.components.forEach((c, i) => {
+    const tr = document.createElement("tr");
+    const values = [c.faces, c.closed, c.consistent, c.orientable, c.outward, c.faces_to_flip];
+    dash = dash || values.some((v) => v === null || v === undefined);
+    tr.append(
+      cell("th", String(i + 1), { scope: "row", "data-label": heads[0] }),
+      ...values.map((v, k) => cell("td", typeof v === "number" ? String(v) : show(v), { "data-label": heads[k + 1] })),
+    );
+    pieces.appendChild(tr);
+  });
+  const dashNote = $("tn-mesh-pieces-note");
+  dashNote.textContent = dash ? message("pieces_dash") : "";
+  dashNote.hidden = !dash;
+  // beside "Fix winding": what it mends and what it leaves
+  const others = ["degenerate_faces", "duplicate_faces", "reversed_duplicate_faces", "boundary_edges", "non_manifold_edges"];
+  const fixNote = $("tn-mesh-fix-note");
+  fixNote.textContent = others.some((k) => (r[k] || []).length)
+    ? message("fix_only_winding")
+    : r.faces_to_flip.length ? "" : message("fix_nothing");
+  fixNote.hidden = !fixNote.textContent;
+  const summary = $("tn-mesh-summary");
+  summary.textContent = "";
+  for (const line of window.TrinormalMesh.summary(r)) summary.appendChild(cell("li", line));
+}
+
+/**
+ * The 3D view of the checked model in #tn-mesh-view, on `model`: the returned showModel(res) draws
+ * a result (a model above the page's limit once the reader asks), mounting the view once.
+ */
+function createViewHost(model) {
+  let view = null; // the mounted view's cleanup
+  async function showModel(res) {
+    const host = $("tn-mesh-view");
+    const limit = ((constants().mesh || {}).limits || {}).max_view_faces || Infinity;
+    const nf = res.faces.length / 3;
+    if (nf > limit && !host.dataset.asked) {
+      // a big model is drawn when the reader asks: its first frame can take seconds
+      if (view) {
+        view();
+        view = null;
+      }
+      host.textContent = "";
+      host.dataset.ready = "false";
+      const note = cell("p", message("view_big", { count: window.TrinormalMesh.grouped(nf) }), { class: "tn-mesh-view-note" });
+      const draw = cell("button", message("view_draw"), { type: "button", class: "md-button", id: "tn-mesh-draw" });
+      draw.addEventListener("click", () => {
+        host.dataset.asked = "true";
+        showModel(res);
+      });
+      host.append(note, draw);
+      return;
+    }
+    delete host.dataset.asked;
+    model.set("picked", -1);
+    model.set("mesh", {
+      positions: res.positions,
+      faces: res.faces,
+      flipped: res.flipped,
+      boundary: res.boundary,
+      non_manifold: res.non_manifold,
+    });
+    if (!view) {
+      const module = await import(VIEW);
+      host.textContent = "";
+      view = module.default.render({ model, el: host });
+    }
+    host.dataset.ready = "true";
+  }
+  return showModel;
+}
+
+/** The repaired file's name: "-fixed" before the extension. */
+function fixedName(name) {
+  const m = /^(.*?)(\.[^.]*)?$/.exec(name);
+  return `${m[1]}-fixed${m[2] || ""}`;
+}
+
+/** Offer the repaired file ({ bytes, name }) for download. */
+function saveFile(fixedFile) {
+  const blob = new Blob([fixedFile.bytes], { type: "application/octet-stream" });
+  const url = URL.createObjectURL(blob);
+  const a = document.createElement("a");
+  a.href = url;
+  a.download = fixedFile.name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+/** A file dropped anywhere on the box goes to onFile (the file input stays the keyboard's way in). */
+function acceptDrops(root, drop, onFile) {
+  root.addEventListener("dragover", (e) => {
+    e.preventDefault();
+    drop.dataset.over = "true";
+  });
+  root.addEventListener("dragleave", () => {
+    drop.dataset.over = "false";
+  });
+  root.addEventListener("drop", (e) => {
+    e.preventDefault();
+    drop.dataset.over = "false";
+    onFile(e.dataTransfer && e.dataTransfer.files[0]);
+  });
+}
+
 function mount(root) {
   const input = $("tn-mesh-file");
   const status = $("tn-mesh-status");
@@ -180,7 +297,6 @@ function mount(root) {
   let current = null; // the last result from the worker
   let fixedFile = null;
   let busy = false;
-  let view = null;
   const model = createModel({ palette: constants().palette || {}, mesh: null, picked: -1, selection: {} });
   // a face picked in the view: answered as the kernel answers it in Jupyter
   model.on("change:picked", () => {
@@ -213,83 +329,7 @@ function mount(root) {
     return !!current && current.report.faces_to_flip.length > 0;
   }
 
-  function renderReport(r) {
-    const tbody = $("tn-mesh-rows");
-    tbody.textContent = "";
-    const rows = (constants().mesh || {}).rows || [];
-    for (const [key, label] of rows) {
-      const tr = document.createElement("tr");
-      tr.append(cell("th", label, { scope: "row" }), cell("td", show(r[key], key)));
-      tr.dataset.key = key;
-      tbody.appendChild(tr);
-    }
-    const pieces = $("tn-mesh-pieces");
-    pieces.textContent = "";
-    // each cell carries its column's heading: on a phone the table is a list of cards
-    const heads = [...pieces.closest("table").querySelectorAll("thead th")].map((th) => th.textContent);
-    let dash = false;
-    r.components.forEach((c, i) => {
-      const tr = document.createElement("tr");
-      const values = [c.faces, c.closed, c.consistent, c.orientable, c.outward, c.faces_to_flip];
-      dash = dash || values.some((v) => v === null || v === undefined);
-      tr.append(
-        cell("th", String(i + 1), { scope: "row", "data-label": heads[0] }),
-        ...values.map((v, k) => cell("td", typeof v === "number" ? String(v) : show(v), { "data-label": heads[k + 1] })),
-      );
-      pieces.appendChild(tr);
-    });
-    const dashNote = $("tn-mesh-pieces-note");
-    dashNote.textContent = dash ? message("pieces_dash") : "";
-    dashNote.hidden = !dash;
-    // beside "Fix winding": what it mends and what it leaves
-    const others = ["degenerate_faces", "duplicate_faces", "reversed_duplicate_faces", "boundary_edges", "non_manifold_edges"];
-    const fixNote = $("tn-mesh-fix-note");
-    fixNote.textContent = others.some((k) => (r[k] || []).length)
-      ? message("fix_only_winding")
-      : r.faces_to_flip.length ? "" : message("fix_nothing");
-    fixNote.hidden = !fixNote.textContent;
-    const summary = $("tn-mesh-summary");
-    summary.textContent = "";
-    for (const line of window.TrinormalMesh.summary(r)) summary.appendChild(cell("li", line));
-  }
-
-  async function showView(res) {
-    const host = $("tn-mesh-view");
-    const limit = ((constants().mesh || {}).limits || {}).max_view_faces || Infinity;
-    const nf = res.faces.length / 3;
-    if (nf > limit && !host.dataset.asked) {
-      // a big model is drawn when the reader asks: its first frame can take seconds
-      if (view) {
-        view();
-        view = null;
-      }
-      host.textContent = "";
-      host.dataset.ready = "false";
-      const note = cell("p", message("view_big", { count: window.TrinormalMesh.grouped(nf) }), { class: "tn-mesh-view-note" });
-      const draw = cell("button", message("view_draw"), { type: "button", class: "md-button", id: "tn-mesh-draw" });
-      draw.addEventListener("click", () => {
-        host.dataset.asked = "true";
-        showView(res);
-      });
-      host.append(note, draw);
-      return;
-    }
-    delete host.dataset.asked;
-    model.set("picked", -1);
-    model.set("mesh", {
-      positions: res.positions,
-      faces: res.faces,
-      flipped: res.flipped,
-      boundary: res.boundary,
-      non_manifold: res.non_manifold,
-    });
-    if (!view) {
-      const module = await import(VIEW);
-      host.textContent = "";
-      view = module.mesh.render({ model, el: host });
-    }
-    host.dataset.ready = "true";
-  }
+  const showView = createViewHost(model);
 
   function showResult(res, note) {
     current = res;
@@ -349,24 +389,6 @@ function mount(root) {
     }
   }
 
-  function fixedName(name) {
-    const m = /^(.*?)(\.[^.]*)?$/.exec(name);
-    return `${m[1]}-fixed${m[2] || ""}`;
-  }
-
-  function save() {
-    if (!fixedFile) return;
-    const blob = new Blob([fixedFile.bytes], { type: "application/octet-stream" });
-    const url = URL.createObjectURL(blob);
-    const a = document.createElement("a");
-    a.href = url;
-    a.download = fixedFile.name;
-    document.body.appendChild(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 10_000);
-  }
-
   // A file beyond the page's limit is refused on its size alone, before any of it is read.
   async function openFile(file) {
     if (!file || busy) return;
@@ -384,7 +406,7 @@ function mount(root) {
 
   input.addEventListener("change", () => openFile(input.files && input.files[0]));
   fixButton.addEventListener("click", fix);
-  download.addEventListener("click", save);
+  download.addEventListener("click", () => fixedFile && saveFile(fixedFile));
   for (const b of root.querySelectorAll("button[data-example]")) {
     b.addEventListener("click", async () => {
       const url = new URL(b.dataset.example, document.baseURI);
@@ -397,19 +419,7 @@ function mount(root) {
       }
     });
   }
-  // dropping a file anywhere on the box (the file input stays the keyboard's way in)
-  root.addEventListener("dragover", (e) => {
-    e.preventDefault();
-    drop.dataset.over = "true";
-  });
-  root.addEventListener("dragleave", () => {
-    drop.dataset.over = "false";
-  });
-  root.addEventListener("drop", (e) => {
-    e.preventDefault();
-    drop.dataset.over = "false";
-    openFile(e.dataTransfer && e.dataTransfer.files[0]);
-  });
+  acceptDrops(root, drop, openFile);
   setBusy(false);
   root.dataset.ready = "true";
 }

@@ -413,6 +413,17 @@
     });
   }
 
+  /* L^2, the squared length of the longest side, from the edges U and V (V - U is the third). */
+  function longestSquared(u, v) {
+    var t = [v[0] - u[0], v[1] - u[1], v[2] - u[2]];
+    var best = 0n;
+    [u, v, t].forEach(function (e) {
+      var q = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+      if (q > best) best = q;
+    });
+    return best;
+  }
+
   function reason(ints, zeroNormal) {
     var ab = sameInts(ints, 0, 3);
     var ac = sameInts(ints, 0, 6);
@@ -470,11 +481,11 @@
     var w = [ints[Q] - ints[0], ints[Q + 1] - ints[1], ints[Q + 2] - ints[2]];
     var n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
     var S = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    var uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
-    var ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
     var tn = TOL[0];
     var td = TOL[1];
-    var degenerate = S * td * td <= tn * tn * uu * ww;
+    // degenerate when |N| <= tol * L^2, L the longest side (trinormal/tolerances.py), squared
+    var L2 = longestSquared(u, w);
+    var degenerate = S * td * td <= tn * tn * L2 * L2;
     var D2 = D * D;
     var fmt = function (x, d) {
       return formatRatio(x, d, p);

@@ -1,10 +1,34 @@
 /*
- * Writes to the page that change it only when the value is new. The view re-applies its whole
- * state on every change (a drag: every frame); writing an attribute, a text or a style to the
- * value it already has still makes the browser recompute styles and repaint, which on a
- * software renderer (SwiftShader) was a measurable part of every drag frame
- * (benchmarks/bench_view.py).
+ * Small helpers for the views' HTML. `element` makes one; the others write to the page only
+ * when the value is new. The view re-applies its whole state on every change (a drag: every
+ * frame), and writing an attribute, a text or a style to the value it already has still makes
+ * the browser recompute styles and repaint.
  */
+
+/** A new element of the document with a class and a text (either may be left out). */
+export function element(tag, className, text) {
+  const e = document.createElement(tag);
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+/** Add listeners ({ type: handler }) to a target; returns the function that removes them. */
+export function listen(target, handlers) {
+  const pairs = Object.entries(handlers);
+  for (const [type, handler] of pairs) target.addEventListener(type, handler);
+  return () => {
+    for (const [type, handler] of pairs) target.removeEventListener(type, handler);
+  };
+}
+
+/** A toolbar (the ARIA pattern: its buttons are one group, named by `label`). */
+export function toolbarElement(className, label) {
+  const bar = element("div", className);
+  bar.setAttribute("role", "toolbar");
+  bar.setAttribute("aria-label", label);
+  return bar;
+}
 
 /** Set an element's text, if it differs. */
 export function setText(el, text) {

@@ -26,8 +26,9 @@ import { createControls } from "./controls.js";
 import { createReadout } from "./readout.js";
 import { createStage, DEFAULT_DIRECTION } from "./scene.js";
 import { injectStyle } from "./style.js";
+import CSS from "./style.css";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
-import { setAttr, setHidden, setStyle, setText } from "./dom.js";
+import { element, setAttr, setHidden, setStyle, setText, toolbarElement } from "./dom.js";
 import { touchGate } from "./touch.js";
 
 const KEYS = [
@@ -100,13 +101,6 @@ function startDirection(normal) {
   return best;
 }
 
-function element(tag, className, text) {
-  const e = document.createElement(tag);
-  if (className) e.className = className;
-  if (text !== undefined) e.textContent = text;
-  return e;
-}
-
 function button(text, label, onClick) {
   const b = element("button", "tnx-button", text);
   b.type = "button";
@@ -121,18 +115,16 @@ function button(text, label, onClick) {
 let views = 0;
 
 function render({ model, el }) {
-  injectStyle(el.ownerDocument || document);
+  injectStyle(el.ownerDocument || document, "trinormal-explorer-style", CSS);
   const viewId = `v${++views}-${Math.random().toString(36).slice(2, 8)}`;
-  const root = element("div", "tnx-root");
+  const root = element("div", "tn-view tnx-root");
   // keys pressed in the explorer (arrows on a vertex, typing a value) are the explorer's, not
   // JupyterLab's or Notebook 7's shortcuts: Lumino skips an element with this attribute (it
   // must be on the focused element itself, which a selector such as ":focus" matches)
   root.dataset.lmSuppressShortcuts = "true";
   const main = element("div", "tnx-main");
   const side = element("div", "tnx-side");
-  const toolbar = element("div", "tnx-toolbar");
-  toolbar.setAttribute("role", "toolbar");
-  toolbar.setAttribute("aria-label", "3D view");
+  const toolbar = toolbarElement("tnx-toolbar", "3D view");
   const stageEl = element("div", "tnx-stage");
   // the banner, the refusal of an edit (`error`) and the legend sit under the view, never
   // over a label or an arrow
@@ -465,7 +457,7 @@ function render({ model, el }) {
   }
 
   function repaint() {
-    root.classList.toggle("tnx-dark", dark);
+    root.classList.toggle("tn-dark", dark);
     stage.setBackground(surface(dark).background);
     drawing.paint(colors);
     if (frame) {

@@ -1,16 +1,17 @@
 /*
- * The view's CSS (style.css, bundled as a string by build.mjs) is injected once per
- * document, so the bundle stays one file. Text is at least 14 px; the colours of the
- * roles come from the host's palette at run time.
+ * The views' CSS (base.css, which both share, and each view's own sheet, bundled as strings
+ * by build.mjs) is injected once per document, so a bundle stays one file. Text is at least
+ * 14 px; the colours of the roles come from the host's palette at run time.
  */
-import CSS from "./style.css";
+import BASE from "./base.css";
 
-const ID = "trinormal-explorer-style";
-
-export function injectStyle(doc = document) {
-  if (doc.getElementById(ID)) return;
-  const style = doc.createElement("style");
-  style.id = ID;
-  style.textContent = CSS;
-  doc.head.appendChild(style);
+/** Add a view's sheet (`css`, under the element id `id`) and the shared base, each once. */
+export function injectStyle(doc, id, css) {
+  for (const [key, text] of [["trinormal-view-base", BASE], [id, css]]) {
+    if (doc.getElementById(key)) continue;
+    const style = doc.createElement("style");
+    style.id = key;
+    style.textContent = text;
+    doc.head.appendChild(style);
+  }
 }

@@ -1,0 +1,210 @@
+"""``{{ trinormal:NAME ARGS }}`` in a page: text written by the package at build time.
+
+The guide's tables and worked example, single values, CLI sessions, the calculator's result
+rows, the input limits, the mesh page's examples and limits, the notebook list: generated
+from the package, so a page can never disagree with the code.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import html
+import io
+import os
+import re
+import shlex
+from collections.abc import Callable
+
+from api_reference import mesh_api_markdown
+from explorer_picture import explorer_alt
+from mkdocs.config.defaults import MkDocsConfig
+from mkdocs.structure.pages import Page
+from notebook_pages import notebook_paths, notebook_summary, notebook_title
+from site_paths import MESH_EXAMPLES, relative_root
+
+PLACEHOLDER = re.compile(r"\{\{\s*trinormal:(\w+)((?:\s+[^}]*?)?)\s*\}\}")
+
+
+def _comparison_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    from trinormal.guide import comparison_table_markdown
+
+    return str(comparison_table_markdown(escape_pipes=True))
+
+
+def _precision_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    from trinormal.guide import precision_table_markdown
+
+    return str(precision_table_markdown())
+
+
+def _worked_example(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    from trinormal.guide import worked_example_markdown
+
+    return str(worked_example_markdown())
+
+
+def _mistakes(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    from trinormal.guide import MISTAKES
+
+    return "\n".join(f"- **{name[:1].upper()}{name[1:]}.** {text}" for name, text in MISTAKES)
+
+
+def _normalising_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    from trinormal.guide import normalising_table_markdown
+
+    return str(normalising_table_markdown())
+
+
+def _value(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``value KEY A B C [winding] [precision] [trim]``: one formatted output of the package."""
+    from trinormal import triangle_normal
+
+    key, a, b, c, *rest = args
+    winding = rest[0] if rest else "ABC"
+    precision = int(rest[1]) if len(rest) > 1 else 4
+    trim = len(rest) > 2 and rest[2] == "trim"
+    pa, pb, pc = (tuple(p.split(",")) for p in (a, b, c))
+    return str(triangle_normal(pa, pb, pc, winding=winding).format(precision, trim=trim)[key])
+
+
+def _cli(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """Run ``trinormal ARGS`` through the CLI's main() and show the session as a console block."""
+    from trinormal.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    columns = os.environ.get("COLUMNS")
+    os.environ["COLUMNS"] = "88"  # argparse wraps --help to the terminal: keep builds reproducible
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            status = main(args)
+        except SystemExit as exc:  # argparse's --help exits
+            status = exc.code if isinstance(exc.code, int) else 0
+        finally:
+            if columns is None:
+                os.environ.pop("COLUMNS", None)
+            else:
+                os.environ["COLUMNS"] = columns
+    text = out.getvalue() + err.getvalue()
+    lines = ["```console", "$ trinormal " + shlex.join(args), text.rstrip("\n")]
+    if status:
+        lines.append(f"$ echo $?\n{status}")
+    lines.append("```")
+    return "\n".join(lines)
+
+
+def _notebook_list(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    rows = []
+    for path in notebook_paths():
+        title = notebook_title(path)
+        summary = notebook_summary(path)
+        link = f"notebooks/{path.name}"
+        href = f"{path.stem}/{path.name}"
+        download = f'<a href="{href}" download>download <code>{path.name}</code></a>'
+        rows.append(
+            f"- **[{title}]({link})** ({download})" + (f"  \n  {summary}" if summary else "")
+        )
+    if not rows:
+        return "*No notebooks yet.*"
+    return "\n".join(rows)
+
+
+def _explorer_alt(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    return explorer_alt().replace("[", "(").replace("]", ")")
+
+
+def _config_url(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``config_url repo_url|site_url [suffix]``: a URL from mkdocs.yml (no page hard-codes one)."""
+    key, *rest = args
+    url = str(config[key] or "").rstrip("/")
+    if not url:
+        raise ValueError(f"{page.file.src_uri}: mkdocs.yml sets no {key}")
+    return url + (rest[0] if rest else "")
+
+
+def _result_rows(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``result_rows``: the calculator's results, one row per output field of the package.
+
+    Each row's heading and ``<output>`` id come from ``trinormal.fields.FIELDS``; the
+    values are the package's own for the page's starting triangle, so the table is
+    right before any script runs.
+    """
+    from trinormal import triangle_normal
+    from trinormal.fields import FIELDS
+
+    start = triangle_normal((0, 0, 0), (1, 0, 0), (0, 1, 0)).format(4)
+    inputs = "ax ay az bx by bz cx cy cz winding precision"
+    rows = []
+    for i, field in enumerate(FIELDS):
+        linked = f' for="{inputs}"' if i == 0 else ""
+        rows.append(
+            f'<tr><th scope="row">{html.escape(field.page_label)}</th>'
+            f'<td><output id="{field.output_id}"{linked}>'
+            f"{html.escape(start[field.key])}</output></td></tr>"
+        )
+    return "\n".join(rows)
+
+
+def _limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``limit NAME``: one of the package's input limits, such as ``MAX_PRECISION``."""
+    from trinormal.validation import limits
+
+    (name,) = args
+    return str(limits()[name])
+
+
+def _mesh_examples(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_examples``: one button per example model of the mesh page (list items)."""
+    from trinormal.mesh_page import EXAMPLES
+
+    root = relative_root(page)
+    return "\n".join(
+        f'<li><button type="button" class="md-button" data-example="{root}{MESH_EXAMPLES}/'
+        f'{html.escape(name)}">{html.escape(label)}</button></li>'
+        for name, label in EXAMPLES
+    )
+
+
+def _mesh_limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_limit NAME``: one of the mesh page's limits: a size in MB, a count grouped."""
+    from trinormal.mesh_page import LIMITS, file_size
+
+    (name,) = args
+    if name == "max_bytes":
+        return file_size(LIMITS[name])
+    return f"{LIMITS[name]:,}".replace(",", "\u202f")
+
+
+def _mesh_api(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_api PART...``: the trinormal.mesh names those modules define, documented."""
+    return mesh_api_markdown(args)
+
+
+HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
+    "explorer_alt": _explorer_alt,
+    "comparison_table": _comparison_table,
+    "precision_table": _precision_table,
+    "worked_example": _worked_example,
+    "mistakes": _mistakes,
+    "normalising_table": _normalising_table,
+    "value": _value,
+    "cli": _cli,
+    "notebook_list": _notebook_list,
+    "config_url": _config_url,
+    "result_rows": _result_rows,
+    "limit": _limit,
+    "mesh_examples": _mesh_examples,
+    "mesh_limit": _mesh_limit,
+    "mesh_api": _mesh_api,
+}
+
+
+def fill_placeholders(markdown: str, page: Page, config: MkDocsConfig) -> str:
+    """Replace every ``{{ trinormal:NAME ARGS }}`` in a page with what :data:`HANDLERS` writes."""
+
+    def replace(m: re.Match[str]) -> str:
+        name, rest = m.group(1), m.group(2).strip()
+        if name not in HANDLERS:
+            raise KeyError(f"{page.file.src_uri}: unknown placeholder trinormal:{name}")
+        return HANDLERS[name](shlex.split(rest), page, config)
+
+    return PLACEHOLDER.sub(replace, markdown)
