@@ -111,7 +111,7 @@ browser: env docs-build
 bench: env
 	for f in benchmarks/bench_*.py; do $(RUN) python $$f || exit 1; done
 
-## js: rebuild the 3D view (trinormal/explorer/static/explorer.js) from js/explorer/ and its lockfile
+## js: rebuild the 3D views (trinormal/explorer/static/: explorer.js, the widget, and site-modules/, the site's) from js/explorer/ and its lockfile
 js:
 	cd js/explorer && npm ci --no-audit --no-fund && node build.mjs
 

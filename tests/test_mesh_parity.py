@@ -16,9 +16,12 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 from mesh_corpus import corpus, outcome
 
+from trinormal.mesh import degenerate_faces, face_normals
 from trinormal.mesh.io import READ_ERRORS
+from trinormal.tolerances import DEFAULT_TOL
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
@@ -81,3 +84,73 @@ def test_the_page_gives_pythons_answer_and_file_for_every_corpus_file(tmp_path):
     assert result["checked"] == len(manifest)
     assert result["mismatches"] == []
     assert run.returncode == 0, run.stderr
+
+
+def _faces_near_the_threshold(rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+    """Faces on, just off and far from the threshold |N| = tol · L², in every corner order.
+
+    Needles, slivers and faces whose float |N| / L² falls inside the band the exact
+    arithmetic decides, tilted at random, at scales from subnormal to 1e300.
+    """
+    corners = []
+    for _ in range(300):
+        b = rng.normal(size=3)
+        side = np.cross(b, rng.normal(size=3))
+        h = DEFAULT_TOL * (b @ b) / np.linalg.norm(np.cross(side, b))
+        factor = rng.choice(
+            [1.0, 1 + 2.0**-50, 1 - 2.0**-50, 1 + 2.0**-45, 0.5, 3.0, 1e-3, 1e6, 1e12]
+        )
+        c = rng.uniform(0, 1) * b + h * factor * side
+        if rng.uniform() < 0.3:  # two corners nearly coincident
+            c = b + h * factor * side
+        face = np.array([rng.normal(size=3) * rng.choice([0.0, 1.0]), b, c])
+        face[1:] += face[0]
+        scale = rng.choice([1.0, 2.0**-1040, 1e-300, 1e-150, 1e150, 1e300, 1e307])
+        for order in ((0, 1, 2), (1, 2, 0), (2, 0, 1), (0, 2, 1), (2, 1, 0), (1, 0, 2)):
+            corners.append(face[list(order)] * scale)
+    v = np.concatenate(corners)
+    return v, np.arange(v.shape[0], dtype=np.uint32).reshape(-1, 3)
+
+
+def test_the_pages_normals_and_verdicts_are_pythons_bit_for_bit_near_the_threshold(tmp_path):
+    """Random faces around the degenerate threshold: the same verdicts and the same normals."""
+    v, f = _faces_near_the_threshold(np.random.default_rng(32))
+    want_normals = face_normals(v, f)
+    coincident = (v[f[:, 0]] == v[f[:, 1]]).all(1) | (v[f[:, 1]] == v[f[:, 2]]).all(1)
+    coincident |= (v[f[:, 2]] == v[f[:, 0]]).all(1)
+    want_kind = np.where(coincident, 1, np.where(degenerate_faces(v, f), 2, 0))
+    assert 100 < (want_kind == 2).sum() < len(f) - 100  # both verdicts, plenty of each
+    (tmp_path / "v.bin").write_bytes(v.astype("<f8").tobytes())
+    (tmp_path / "f.bin").write_bytes(f.astype("<u4").tobytes())
+    constants = tmp_path / "constants.json"
+    constants.write_text(json.dumps(trinormal_site.site_constants()), encoding="utf-8")
+    script = """
+        const fs = require("fs"), path = require("path");
+        const [checker, dir, constants] = process.argv.slice(1);
+        const M = require(checker).loadMesh(JSON.parse(fs.readFileSync(constants, "utf8")));
+        const read = (n) => fs.readFileSync(path.join(dir, n));
+        const vb = read("v.bin"), fb = read("f.bin");
+        const v = new Float64Array(vb.buffer, vb.byteOffset, vb.length / 8);
+        const f = new Uint32Array(fb.buffer, fb.byteOffset, fb.length / 4);
+        fs.writeFileSync(path.join(dir, "n.bin"), M.internal.faceNormals(v, f));
+        fs.writeFileSync(path.join(dir, "k.bin"), M.degenerateFaces(v, f));
+    """
+    run = subprocess.run(
+        [
+            _node(),
+            "-e",
+            script,
+            str(ROOT / "tests" / "mesh_parity_check.js"),
+            str(tmp_path),
+            str(constants),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert run.returncode == 0, run.stderr
+    got_kind = np.frombuffer((tmp_path / "k.bin").read_bytes(), dtype=np.uint8)
+    got_normals = np.frombuffer((tmp_path / "n.bin").read_bytes(), dtype="<f8").reshape(-1, 3)
+    assert np.flatnonzero(got_kind != want_kind).tolist() == []
+    differ = (got_normals.view(np.uint64) != want_normals.view(np.uint64)).any(axis=1)
+    assert np.flatnonzero(differ).tolist() == []

@@ -163,7 +163,9 @@ def _owner(name: str, obj: Any) -> str:
     home = getattr(obj, "__module__", None)
     for part in MESH_PARTS:
         module = importlib.import_module(f"{PACKAGE}.mesh.{part}")
-        if home == module.__name__ or (home is None and vars(module).get(name) is obj):
+        if home is not None and (home == module.__name__ or home.startswith(module.__name__ + ".")):
+            return part  # defined in the module or in a module of its package (io/mesh_data.py)
+        if home is None and vars(module).get(name) is obj:
             return part
     raise LookupError(f"{PACKAGE}.mesh.{name} is defined in none of {MESH_PARTS}")
 

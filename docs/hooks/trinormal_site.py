@@ -17,9 +17,9 @@ modules beside it import by their names; each is named for what it answers:
 * ``api_reference`` — the API pages link every mention of a public name;
 * ``site_paths`` — where files come from and go.
 
-Here: the 3D view (``trinormal/explorer/static/``: the bundle built from ``js/explorer/``
-and its licence file) is copied to ``assets/explorer/``, with the constants file and the
-mesh page's example models.
+Here: the site's build of the 3D views (``trinormal/explorer/static/site-modules/``: one
+module per view, their shared chunk and the licence file, built from ``js/explorer/``) is
+copied to ``assets/explorer/``, with the constants file and the mesh page's example models.
 """
 
 from __future__ import annotations
@@ -64,7 +64,7 @@ def on_files(files: Files, config: MkDocsConfig) -> Files:
 
 
 def add_explorer_assets(files: Files, config: MkDocsConfig) -> None:
-    """The 3D view's bundle and licence under ``assets/explorer/``, and the constants file."""
+    """The 3D views' site modules and licence under ``assets/explorer/``, and the constants file."""
     site = EXPLORER_STATIC / "site-modules"  # the site's build of the views (js/explorer/build.mjs)
     static = sorted(p for p in site.glob("*") if p.is_file())
     if not any(p.name == "explorer.js" for p in static):

@@ -23,6 +23,57 @@ const KEYS = {
   PageDown: [2, -1],
 };
 
+/** The vertex whose point is within PICK_PX of the pointer, nearest first (null: none). */
+function pick(view, clientX, clientY) {
+  const rect = view.canvas.getBoundingClientRect();
+  let best = null;
+  let bestD = PICK_PX;
+  for (const name of "ABC") {
+    const p = view.position(name);
+    if (!p) continue;
+    const q = p.clone().project(view.camera);
+    const x = rect.left + ((q.x + 1) / 2) * rect.width;
+    const y = rect.top + ((1 - q.y) / 2) * rect.height;
+    const d = Math.hypot(x - clientX, y - clientY);
+    if (d < bestD) [best, bestD] = [name, d];
+  }
+  return best;
+}
+
+/**
+ * What a drag moved by `delta` (data units) writes: the axes it has moved (drag.moved, which
+ * this adds to), each snapped to the grid and clamped to the bounds, where they differ from
+ * the values `now`.
+ */
+function dragChanges(drag, delta, grid, bounds, now) {
+  const changes = {};
+  drag.strings.forEach((s, i) => {
+    let next = s; // not moved along this axis (or clamped back to where it was): its exact text
+    const d = delta.getComponent(i);
+    if (Math.abs(d) >= grid.value / 2) {
+      const k = gridIndex(drag.start[i] + d, grid, bounds);
+      if (!onGridAt(drag.start[i], k, grid)) next = gridText(k, grid);
+    }
+    if (next !== s) drag.moved.add(i);
+    // an axis the drag moved is written, also back to its first text; no other axis is
+    if (drag.moved.has(i) && next !== now[i]) changes[coordinateKey(drag.name, i)] = next;
+  });
+  return changes;
+}
+
+/** What an arrow or page key on vertex `name` writes (one grid step along its axis), or null. */
+function keyChange(view, name, key) {
+  const [axis, sign] = KEYS[key];
+  const now = view.values(name)[axis];
+  const grid = view.grid();
+  let x = parseCoordinate(now);
+  if (!Number.isFinite(x)) x = (view.position(name)?.getComponent(axis) ?? 0) * view.scale();
+  const k = gridIndex(x + sign * grid.value, grid, view.bounds());
+  if (onGridAt(x, k, grid)) return null; // at the edge of the range: nothing moves, nothing is written
+  const text = gridText(k, grid);
+  return text !== now ? { [coordinateKey(name, axis)]: text } : null;
+}
+
 /**
  * view: { container, canvas, camera, size(), scale(), grid(), bounds(), values(name),
  *         position(name) -> display Vector3, write(changes), dragging(bool),
@@ -47,23 +98,6 @@ export function setupInteraction(view) {
 
   function hitPlane(clientX, clientY) {
     return rayAt(clientX, clientY).intersectPlane(plane, new Vector3());
-  }
-
-  /** The vertex whose point is within PICK_PX of the pointer, nearest first. */
-  function pick(clientX, clientY) {
-    const rect = view.canvas.getBoundingClientRect();
-    let best = null;
-    let bestD = PICK_PX;
-    for (const name of "ABC") {
-      const p = view.position(name);
-      if (!p) continue;
-      const q = p.clone().project(view.camera);
-      const x = rect.left + ((q.x + 1) / 2) * rect.width;
-      const y = rect.top + ((1 - q.y) / 2) * rect.height;
-      const d = Math.hypot(x - clientX, y - clientY);
-      if (d < bestD) [best, bestD] = [name, d];
-    }
-    return best;
   }
 
   function start(name, event) {
@@ -98,20 +132,7 @@ export function setupInteraction(view) {
     pending = null;
     if (!hit) return;
     const delta = hit.sub(drag.hit).multiplyScalar(view.scale());
-    const grid = view.grid();
-    const now = view.values(drag.name);
-    const changes = {};
-    drag.strings.forEach((s, i) => {
-      let next = s; // not moved along this axis (or clamped back to where it was): its exact text
-      const d = delta.getComponent(i);
-      if (Math.abs(d) >= grid.value / 2) {
-        const k = gridIndex(drag.start[i] + d, grid, view.bounds());
-        if (!onGridAt(drag.start[i], k, grid)) next = gridText(k, grid);
-      }
-      if (next !== s) drag.moved.add(i);
-      // an axis the drag moved is written, also back to its first text; no other axis is
-      if (drag.moved.has(i) && next !== now[i]) changes[coordinateKey(drag.name, i)] = next;
-    });
+    const changes = dragChanges(drag, delta, view.grid(), view.bounds(), view.values(drag.name));
     if (Object.keys(changes).length) view.write(changes);
   }
 
@@ -120,7 +141,7 @@ export function setupInteraction(view) {
     // a finger on an inactive view scrolls the page (see index.js: a tap activates the view)
     if (event.pointerType === "touch" && view.touchActive && !view.touchActive()) return;
     const target = event.target.closest?.("[data-vertex]");
-    const name = target ? target.dataset.vertex : event.target === view.canvas ? pick(event.clientX, event.clientY) : null;
+    const name = target ? target.dataset.vertex : event.target === view.canvas ? pick(view, event.clientX, event.clientY) : null;
     if (!name) return;
     if (start(name, event)) {
       event.preventDefault();
@@ -132,7 +153,7 @@ export function setupInteraction(view) {
   function onPointerMove(event) {
     if (!drag) {
       if (event.target === view.canvas && event.buttons === 0) {
-        view.canvas.style.cursor = pick(event.clientX, event.clientY) ? "grab" : "";
+        view.canvas.style.cursor = pick(view, event.clientX, event.clientY) ? "grab" : "";
       }
       return;
     }
@@ -173,16 +194,8 @@ export function setupInteraction(view) {
     const target = event.target.closest?.("[data-vertex]");
     if (!target || !(event.key in KEYS) || event.altKey || event.ctrlKey || event.metaKey) return;
     event.preventDefault();
-    const name = target.dataset.vertex;
-    const [axis, sign] = KEYS[event.key];
-    const now = view.values(name)[axis];
-    const grid = view.grid();
-    let x = parseCoordinate(now);
-    if (!Number.isFinite(x)) x = (view.position(name)?.getComponent(axis) ?? 0) * view.scale();
-    const k = gridIndex(x + sign * grid.value, grid, view.bounds());
-    if (onGridAt(x, k, grid)) return; // at the edge of the range: nothing moves, nothing is written
-    const text = gridText(k, grid);
-    if (text !== now) view.write({ [coordinateKey(name, axis)]: text });
+    const changes = keyChange(view, target.dataset.vertex, event.key);
+    if (changes) view.write(changes);
   }
 
   const c = view.container;

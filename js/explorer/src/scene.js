@@ -25,7 +25,96 @@ function softwareRendering() {
   }
 }
 
-export function createStage(container, { onRender }) {
+/** The camera's axes looking from `direction` (z towards the camera, x to the right, y up). */
+function basis(up, direction) {
+  const z = direction.clone().normalize();
+  const x = new Vector3().crossVectors(up, z);
+  if (x.lengthSq() < 1e-12) x.set(1, 0, 0);
+  x.normalize();
+  return { x, y: new Vector3().crossVectors(z, x), z };
+}
+
+/** Where to look so the framed points sit in the middle of the picture (not just of a box). */
+function fitTarget(camera, home, direction) {
+  const { x, y } = basis(camera.up, direction);
+  const xs = home.points.map((p) => p.clone().sub(home.center).dot(x));
+  const ys = home.points.map((p) => p.clone().sub(home.center).dot(y));
+  const cx = (Math.min(...xs) + Math.max(...xs)) / 2;
+  const cy = (Math.min(...ys) + Math.max(...ys)) / 2;
+  return home.center.clone().addScaledVector(x, cx).addScaledVector(y, cy);
+}
+
+/**
+ * The distance from home's target, looking from `direction`, at which every framed point
+ * projects inside a view of `width` x `height` px with LABEL_MARGIN px to spare on each side
+ * (for the labels beyond the points and the arrow heads). Exact for the perspective camera.
+ */
+function fitDistance(camera, home, { width, height }, direction) {
+  const { x, y, z } = basis(camera.up, direction);
+  const tanV = Math.tan(((FOV / 2) * Math.PI) / 180);
+  const tanH = tanV * camera.aspect;
+  const sx = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(width, 1));
+  const sy = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(height, 1));
+  let distance = 1e-6;
+  for (const p of home.points) {
+    const q = p.clone().sub(home.target);
+    const depth = q.dot(z);
+    distance = Math.max(
+      distance,
+      depth + Math.abs(q.dot(x)) / (tanH * sx),
+      depth + Math.abs(q.dot(y)) / (tanV * sy),
+    );
+  }
+  // never so close that a point is near the camera
+  return Math.max(distance * 1.02, home.radius * 1.2);
+}
+
+/** Make `points` (display units) home's framing: what it keeps in view, their box's centre and radius. */
+function setHomePoints(home, points) {
+  home.points = points.map((p) => p.clone());
+  const lo = points[0].clone();
+  const hi = points[0].clone();
+  for (const p of points) {
+    lo.min(p);
+    hi.max(p);
+  }
+  home.center.copy(lo).add(hi).multiplyScalar(0.5);
+  home.target.copy(home.center);
+  home.radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+}
+
+/**
+ * Turn the camera about the controls' target, as a drag does: `around` radians about the up
+ * axis (z), `over` radians towards it (stopping short of straight above or below).
+ */
+function turnCamera(camera, controls, around, over) {
+  const offset = camera.position.clone().sub(controls.target);
+  const r = offset.length();
+  const azimuth = Math.atan2(offset.y, offset.x) + around;
+  const limit = Math.PI / 2 - 0.01;
+  const elevation = Math.max(-limit, Math.min(limit, Math.asin(Math.max(-1, Math.min(1, offset.z / r))) + over));
+  offset.set(Math.cos(elevation) * Math.cos(azimuth), Math.cos(elevation) * Math.sin(azimuth), Math.sin(elevation)).multiplyScalar(r);
+  camera.position.copy(controls.target).add(offset);
+}
+
+/** Move the camera `factor` times its distance from the controls' target (below 1: closer). */
+function zoomCamera(camera, controls, factor) {
+  const offset = camera.position.clone().sub(controls.target).multiplyScalar(factor);
+  const r = Math.min(Math.max(offset.length(), camera.near * 2), camera.far / 2);
+  camera.position.copy(controls.target).addScaledVector(offset.normalize(), r);
+}
+
+/** True when every point (display units) projects inside the camera's view, with a margin. */
+function inCameraView(camera, points, margin) {
+  camera.updateMatrixWorld();
+  return points.every((p) => {
+    const q = p.clone().project(camera);
+    return Math.abs(q.x) <= margin && Math.abs(q.y) <= margin && q.z < 1;
+  });
+}
+
+/** The renderer, its canvas in `container`, the scene, the camera (z up) and the orbit controls. */
+function createParts(container) {
   const renderer = new WebGLRenderer({ antialias: !softwareRendering() });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
   const canvas = renderer.domElement;
@@ -40,7 +129,16 @@ export function createStage(container, { onRender }) {
   const controls = new OrbitControls(camera, canvas);
   controls.enableDamping = false;
   controls.zoomToCursor = false;
+  return { renderer, canvas, scene, camera, controls };
+}
 
+/**
+ * The stage in `container`; `onRender` runs before each picture is drawn. It renders on
+ * demand (requestRender), keeps a home framing (framePoints, reset, along) and follows the
+ * container's size.
+ */
+export function createStage(container, { onRender }) {
+  const { renderer, canvas, scene, camera, controls } = createParts(container);
   let frame = 0;
   let width = 1;
   let height = 1;
@@ -84,49 +182,6 @@ export function createStage(container, { onRender }) {
     requestRender();
   }
 
-  /**
-   * The distance from home's target, looking from `direction`, at which every framed point
-   * projects inside the view with LABEL_MARGIN px to spare on each side (for the labels
-   * beyond the points and the arrow heads). Exact for the perspective camera.
-   */
-  function basis(direction) {
-    const z = direction.clone().normalize();
-    const x = new Vector3().crossVectors(camera.up, z);
-    if (x.lengthSq() < 1e-12) x.set(1, 0, 0);
-    x.normalize();
-    return { x, y: new Vector3().crossVectors(z, x), z };
-  }
-
-  /** Where to look so the framed points sit in the middle of the picture (not just of a box). */
-  function fitTarget(direction) {
-    const { x, y } = basis(direction);
-    const xs = home.points.map((p) => p.clone().sub(home.center).dot(x));
-    const ys = home.points.map((p) => p.clone().sub(home.center).dot(y));
-    const cx = (Math.min(...xs) + Math.max(...xs)) / 2;
-    const cy = (Math.min(...ys) + Math.max(...ys)) / 2;
-    return home.center.clone().addScaledVector(x, cx).addScaledVector(y, cy);
-  }
-
-  function fitDistance(direction) {
-    const { x, y, z } = basis(direction);
-    const tanV = Math.tan(((FOV / 2) * Math.PI) / 180);
-    const tanH = tanV * camera.aspect;
-    const sx = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(width, 1));
-    const sy = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(height, 1));
-    let distance = 1e-6;
-    for (const p of home.points) {
-      const q = p.clone().sub(home.target);
-      const depth = q.dot(z);
-      distance = Math.max(
-        distance,
-        depth + Math.abs(q.dot(x)) / (tanH * sx),
-        depth + Math.abs(q.dot(y)) / (tanV * sy),
-      );
-    }
-    // never so close that a point is near the camera
-    return Math.max(distance * 1.02, home.radius * 1.2);
-  }
-
   const observer = new ResizeObserver(resize);
   observer.observe(container);
   controls.addEventListener("change", requestRender);
@@ -140,52 +195,9 @@ export function createStage(container, { onRender }) {
    */
   function framePoints(points, go = true, start = null) {
     if (start) home.start.copy(start);
-    home.points = points.map((p) => p.clone());
-    const lo = points[0].clone();
-    const hi = points[0].clone();
-    for (const p of points) {
-      lo.min(p);
-      hi.max(p);
-    }
-    home.center.copy(lo).add(hi).multiplyScalar(0.5);
-    home.target.copy(home.center);
-    home.radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+    setHomePoints(home, points);
     if (go === "keep") look(camera.position.clone().sub(controls.target));
     else if (go) look(home.start);
-  }
-
-  /**
-   * Turn the camera about the target, as a drag does: `around` radians about the up axis (z),
-   * `over` radians towards it (stopping short of straight above or below). For the keyboard.
-   */
-  function turn(around, over) {
-    const offset = camera.position.clone().sub(controls.target);
-    const r = offset.length();
-    const azimuth = Math.atan2(offset.y, offset.x) + around;
-    const limit = Math.PI / 2 - 0.01;
-    const elevation = Math.max(-limit, Math.min(limit, Math.asin(Math.max(-1, Math.min(1, offset.z / r))) + over));
-    offset.set(Math.cos(elevation) * Math.cos(azimuth), Math.cos(elevation) * Math.sin(azimuth), Math.sin(elevation)).multiplyScalar(r);
-    camera.position.copy(controls.target).add(offset);
-    atHome = false;
-    controls.update();
-  }
-
-  /** Move the camera `factor` times its distance from the target (below 1: closer). */
-  function zoom(factor) {
-    const offset = camera.position.clone().sub(controls.target).multiplyScalar(factor);
-    const r = Math.min(Math.max(offset.length(), camera.near * 2), camera.far / 2);
-    camera.position.copy(controls.target).addScaledVector(offset.normalize(), r);
-    atHome = false;
-    controls.update();
-  }
-
-  /** True when every point (display units) projects inside the view, with a margin. */
-  function inView(points, margin = 0.92) {
-    camera.updateMatrixWorld();
-    return points.every((p) => {
-      const q = p.clone().project(camera);
-      return Math.abs(q.x) <= margin && Math.abs(q.y) <= margin && q.z < 1;
-    });
   }
 
   /** Look at home's centre from a direction (unit vector), at home's distance. */
@@ -194,8 +206,8 @@ export function createStage(container, { onRender }) {
     atHome = true;
     const d = direction.clone().normalize();
     if (Math.abs(d.z) > 0.999) d.set(0, -1e-3, Math.sign(d.z)).normalize();
-    home.target.copy(fitTarget(d));
-    home.distance = fitDistance(d);
+    home.target.copy(fitTarget(camera, home, d));
+    home.distance = fitDistance(camera, home, { width, height }, d);
     camera.near = home.distance / 200;
     camera.far = home.distance * 50;
     camera.updateProjectionMatrix();
@@ -204,6 +216,13 @@ export function createStage(container, { onRender }) {
     camera.lookAt(home.target);
     controls.update();
     requestRender();
+  }
+
+  /** Move the camera by hand (a key), as the user: it is no longer at home. */
+  function moveBy(move) {
+    move();
+    atHome = false;
+    controls.update();
   }
 
   return {
@@ -216,10 +235,13 @@ export function createStage(container, { onRender }) {
     renderNow,
     resize,
     framePoints,
-    inView,
+    /** True when every point (display units) projects inside the view, with a margin. */
+    inView: (points, margin = 0.92) => inCameraView(camera, points, margin),
     reset: () => look(home.start),
-    turn,
-    zoom,
+    /** Turn about the target: `around` radians about z, `over` towards it. For the keyboard. */
+    turn: (around, over) => moveBy(() => turnCamera(camera, controls, around, over)),
+    /** Move `factor` times the distance from the target (below 1: closer). For the keyboard. */
+    zoom: (factor) => moveBy(() => zoomCamera(camera, controls, factor)),
     atHome: () => atHome,
     // along x: y to the right; along y: x to the right; along z: from above, x right, y up
     along: (axis) => look(new Vector3(axis === "x" ? 1 : 0, axis === "y" ? -1 : 0, axis === "z" ? 1 : 0)),

@@ -1,0 +1,63 @@
+/*
+ * The explorer's edit protocol, on the view's side.
+ *
+ * The view never writes the host's values. A learner's move (drag, arrow key, slider, typed
+ * value, toolbar toggle) is sent as an identified edit naming only what the learner changed,
+ *   model.send({ edit: { cx: "0.4", cy: "1.1" }, seq, view, base: version }),
+ * made against the host's `version` (which counts the host's own changes). A coordinate is
+ * named by its key ("ax" … "cz"), so two views of one explorer editing different coordinates
+ * of one vertex at once do not undo each other. The host refuses an edit made against an
+ * older version, so a late edit never overwrites what a cell set, and answers with its values
+ * and `last_edit` ({ view, seq, ok }). Until that answer the view draws its own edit, per
+ * coordinate (so a drag follows the pointer); a new `version` from the host ends a drag in
+ * progress and drops whatever the view had not yet had answered (index.js).
+ */
+import { parseCoordinate } from "./numbers.js";
+
+// a vertex's coordinates as edits name them: "a" -> ["ax", "ay", "az"]
+const COORDS = { a: ["ax", "ay", "az"], b: ["bx", "by", "bz"], c: ["cx", "cy", "cz"] };
+const COORDINATE = new Set(Object.values(COORDS).flat());
+// what the view draws from its own edit until the host answers (a coordinate: when readable)
+const DRAWN = new Set([...COORDINATE, "winding", "precision", "show_parallelogram", "show_unit_normal"]);
+
+/**
+ * The edits of one view (`viewId`) of `model`:
+ *   get(key): the host's value, with the view's unanswered edits over it (a vertex: per coordinate);
+ *   edit(changes): send a learner's move as an identified edit, and draw it until the answer;
+ *   answered(): the host's `last_edit` answered this view: drop the edits it answered (true when it was this view's);
+ *   drop(): the host changed its values itself (a cell ran): forget every unanswered edit.
+ */
+export function createEdits(model, viewId) {
+  let seq = 0;
+  let pending = {}; // key -> { value, seq }: the view's own edits the host has not answered yet
+
+  function get(key) {
+    const coords = COORDS[key];
+    if (!coords || !coords.some((k) => k in pending)) return key in pending ? pending[key].value : model.get(key);
+    const host = model.get(key) || ["", "", ""];
+    return coords.map((k, i) => (k in pending ? pending[k].value : host[i]));
+  }
+
+  function edit(changes) {
+    seq += 1;
+    for (const [key, v] of Object.entries(changes)) {
+      // a typed value the view cannot read ("abc") is not drawn: the host will refuse it
+      const readable = !COORDINATE.has(key) || Number.isFinite(parseCoordinate(v));
+      if (DRAWN.has(key) && readable) pending[key] = { value: v, seq };
+    }
+    model.send({ edit: changes, seq, view: viewId, base: model.get("version") ?? 0 });
+  }
+
+  function answered() {
+    const answer = model.get("last_edit") || {};
+    if (answer.view !== viewId) return false;
+    for (const [key, p] of Object.entries(pending)) if (p.seq <= answer.seq) delete pending[key];
+    return true;
+  }
+
+  function drop() {
+    pending = {};
+  }
+
+  return { get, edit, answered, drop };
+}

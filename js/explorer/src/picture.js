@@ -1,0 +1,188 @@
+/*
+ * The picture in the stage: the labels, the frame (axes, grid and ticks in the units of
+ * framing.js), the triangle with its arrows, and where they are on screen.
+ *
+ * `view` is the explorer's state (index.js): get, stage, labels, drawing, vertexEls, colors,
+ * dark, and what the last drawing left: frame, lastGood, display, heads, scales.
+ */
+import { Vector3 } from "three";
+import { setStyle } from "./dom.js";
+import { computeFrame, sameUnits, toDisplay } from "./framing.js";
+import { LabelLayer } from "./labels.js";
+import { parsePoint, tickText } from "./numbers.js";
+import { drawnAt, N_AIM, scaledLabel, UNIT_AIM } from "./scaling.js";
+import { surface } from "./theme.js";
+
+const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
+
+/** The labels over the stage: { labels, vertexEls } (A, B and C are focusable, movable points). */
+export function createLabels(stageEl) {
+  const labels = new LabelLayer(stageEl);
+  const vertexEls = {};
+  for (const name of "ABC") {
+    const item = labels.label("v:" + name, "vertex", name);
+    const e = item.el;
+    e.dataset.vertex = name;
+    e.tabIndex = 0;
+    e.dataset.lmSuppressShortcuts = "true";
+    e.setAttribute("role", "button");
+    e.setAttribute("aria-roledescription", "movable point");
+    e.setAttribute("aria-keyshortcuts", "ArrowLeft ArrowRight ArrowUp ArrowDown PageUp PageDown");
+    vertexEls[name] = e;
+  }
+  for (const [id, text] of [["U", "U"], ["V", "V"], ["N", "N"], ["unit", "N/|N|"]]) labels.label("arrow:" + id, "arrow", text);
+  for (const a of "xyz") labels.label("axis:" + a, "axis", a);
+  return { labels, vertexEls };
+}
+
+/** The triangle's points as data floats: the values, else the host's, else the last drawn. */
+export function dataPoints(view) {
+  const { get } = view;
+  const pts = [get("a"), get("b"), get("c")].map(parsePoint);
+  if (pts.every(Boolean)) return pts;
+  const st = get("state");
+  if (st && st.ok && st.points) {
+    const fromState = ["A", "B", "C"].map((k) => st.points[k]);
+    if (fromState.every((p) => Array.isArray(p) && p.every(Number.isFinite))) return fromState;
+  }
+  return view.lastGood;
+}
+
+/** The frame of these points as the view now draws them. */
+export function frameOf(view, pts, winding = view.get("winding")) {
+  return computeFrame(pts, winding, view.get("show_unit_normal"));
+}
+
+/** Draw in the frame `next` (axes, grid, ticks); moveCamera as the stage's framePoints' `go`. */
+export function applyFrame(view, next, moveCamera) {
+  const { stage, drawing, labels, colors } = view;
+  view.frame = next;
+  if (moveCamera !== false) stage.framePoints(next.box, moveCamera, next.start);
+  const r = next.radius * 0.014;
+  const ticks = drawing.setAxes(next.L, next.t, r * 0.5, colors, next.includeOrigin);
+  drawing.setGrid(next.L, next.t, surface(view.dark), next.includeOrigin);
+  labels.hide("tick:");
+  ticks.forEach((tk, i) => {
+    const id = `tick:${tk.axis}:${i}`;
+    labels.label(id, "tick", tickText(tk.value * next.S));
+    labels.place(id, tk.position, { offset: 16, angle: tk.axis === "z" ? 0 : -Math.PI / 2 });
+  });
+  for (const a of "xyz") {
+    const tip = new Vector3(a === "x" ? next.L : 0, a === "y" ? next.L : 0, a === "z" ? next.L : 0);
+    labels.place("axis:" + a, tip, { away: new Vector3(), offset: 18, visible: next.includeOrigin });
+    setStyle(labels.items.get("axis:" + a).el, "color", colors(a));
+  }
+}
+
+/**
+ * Frame the points again when they call for it (not during a drag): the first drawing, a new
+ * triangle from the host, other units, a point that left the view.
+ */
+export function reframe(view, pts, winding) {
+  const { stage } = view;
+  if (!view.dragging) {
+    const next = frameOf(view, pts, winding);
+    const frame = view.frame;
+    if (!frame) applyFrame(view, next, true);
+    else if (view.hostMoved) {
+      // a new triangle from the host: frame it, facing it unless the user turned the view
+      applyFrame(view, next, stage.atHome() ? true : "keep");
+    } else if (!sameUnits(frame, next)) applyFrame(view, next, "keep"); // drawn in other units now
+    else {
+      // the learner's own move: the camera stays (nothing jumps); the axes may grow
+      if (next.L !== frame.L || next.t !== frame.t) applyFrame(view, { ...next, center: frame.center, radius: frame.radius }, false);
+      const shown = pts.map((p) => toDisplay(p, view.frame));
+      if (!stage.inView(shown)) applyFrame(view, next, "keep"); // a point left the view: step back
+    }
+  }
+  view.hostMoved = false;
+}
+
+/** N and the unit normal as drawn from the centroid: their vectors and scale factors. */
+function arrows(n, S, lMax, degenerate, showUnit) {
+  // n = U x V in display units is N / S^2: N's true length in display units is |n| * S
+  let nDraw = new Vector3();
+  let nFactor = 1;
+  if (!degenerate) {
+    const d = drawnAt(n.length() * S, N_AIM * lMax);
+    nFactor = d.factor;
+    nDraw = n.clone().setLength(d.length);
+  }
+  let unitDraw = null;
+  let unitFactor = 1;
+  if (!degenerate && showUnit) {
+    const d = drawnAt(1 / S, UNIT_AIM * lMax);
+    unitFactor = d.factor;
+    unitDraw = n.clone().setLength(d.length);
+  }
+  return { nDraw, nFactor, unitDraw, unitFactor };
+}
+
+/** Place the vertex and arrow labels: vertices beyond their points, arrows beside their shafts. */
+function placeLabels(view, g, U, V) {
+  const { labels, vertexEls, colors } = view;
+  const { A, P, Q, centroid, nDraw, unitDraw, degenerate } = g;
+  for (const name of "ABC") {
+    labels.place("v:" + name, g[name], { away: centroid, offset: 30, angle: VERTEX_ANGLE[name] });
+    setStyle(vertexEls[name], "color", colors(name));
+  }
+  labels.place("arrow:U", A.clone().lerp(P, 0.5), { away: centroid, offset: 20, visible: U.length() > 0 });
+  labels.place("arrow:V", A.clone().lerp(Q, 0.5), { away: centroid, offset: 20, visible: V.length() > 0 });
+  const nTip = centroid.clone().add(nDraw);
+  labels.place("arrow:N", nTip, { away: centroid, offset: 20, angle: 0, visible: !degenerate });
+  labels.place("arrow:unit", unitDraw ? centroid.clone().add(unitDraw) : null, {
+    away: centroid, offset: 20, angle: Math.PI, visible: !!unitDraw,
+  });
+  for (const [id, role] of [["U", "U"], ["V", "V"], ["N", "N"], ["unit", "unit"]]) {
+    setStyle(labels.items.get("arrow:" + id).el, "color", colors(role));
+  }
+}
+
+/**
+ * Draw the triangle `pts` (data floats) in `winding` with its arrows and labels, in the
+ * current frame; `st` is the host's state. Returns true when the parallelogram is drawn.
+ */
+export function drawTriangle(view, pts, st, winding) {
+  const { get, labels, frame } = view;
+  const { S } = frame;
+  const [A, B, C] = pts.map((p) => toDisplay(p, frame));
+  const [P, Q] = winding === "ABC" ? [B, C] : [C, B];
+  const centroid = A.clone().add(B).add(C).divideScalar(3);
+  const U = P.clone().sub(A);
+  const V = Q.clone().sub(A);
+  const n = new Vector3().crossVectors(U, V);
+  const nLen = n.length();
+  const degenerate = !!st.degenerate || !(nLen > 0) || !Number.isFinite(nLen);
+  const lMax = Math.max(U.length(), V.length(), P.distanceTo(Q), 1e-9); // the longest edge
+  const { nDraw, nFactor, unitDraw, unitFactor } = arrows(n, S, lMax, degenerate, get("show_unit_normal"));
+  labels.label("arrow:N", "arrow", scaledLabel(nFactor));
+  labels.label("arrow:unit", "arrow", scaledLabel(unitFactor, true));
+  view.scales = { N: nFactor, unit: unitDraw ? unitFactor : null };
+  const r = frame.radius * 0.014;
+  const g = { A, B, C, P, Q, centroid, nDraw, unitDraw, degenerate, showParallelogram: !!get("show_parallelogram"), r };
+  view.drawing.update(g);
+  view.display = { A, B, C };
+  view.heads = { U: P, V: Q, N: degenerate ? null : centroid.clone().add(nDraw), unit: unitDraw ? centroid.clone().add(unitDraw) : null };
+  placeLabels(view, g, U, V);
+  return g.showParallelogram && !degenerate;
+}
+
+/** Where the vertices and arrow heads are on screen (px in the view), for tests and tools. */
+export function projection(view) {
+  const { display, heads, frame, stage, get } = view;
+  if (!display || !frame) return null;
+  const { width, height } = stage.size();
+  stage.camera.updateMatrixWorld();
+  const out = {};
+  for (const [key, p] of Object.entries({ ...display, ...heads })) {
+    if (!p) continue;
+    const q = p.clone().project(stage.camera);
+    out[key] = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
+  }
+  const distance = stage.camera.position.distanceTo(stage.controls.target);
+  // the arrows as drawn, in data units (display units times S), and their drawing scales
+  const centroid = display.A.clone().add(display.B).add(display.C).divideScalar(3);
+  const vector = (p) => (p ? p.clone().sub(centroid).multiplyScalar(frame.S).toArray() : null);
+  const drawn = { N: vector(heads.N), unit: vector(heads.unit), scales: { ...view.scales } };
+  return { width, height, distance, points: out, drawn, values: ["a", "b", "c"].map((k) => (get(k) || []).map(String)) };
+}

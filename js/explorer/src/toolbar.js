@@ -1,0 +1,60 @@
+/*
+ * The explorer's toolbar: reset the view, look along x, y or z, flip the order of the
+ * vertices, show the parallelogram, show the unit normal. The last three are edits (see
+ * edits.js); the others move the camera only.
+ */
+import { element, setAttr, setText } from "./dom.js";
+
+const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
+
+function button(text, label, onClick) {
+  const b = element("button", "tnx-button", text);
+  b.type = "button";
+  if (label) {
+    b.setAttribute("aria-label", label);
+    b.title = label;
+  }
+  b.addEventListener("click", onClick);
+  return b;
+}
+
+/**
+ * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset() } (reset:
+ * frame the triangle again). Returns { update() }: the buttons' words and pressed states
+ * from the values.
+ */
+export function createToolbar(bar, { get, edit, stage, reset }) {
+  const flip = button("", null, () => edit({ winding: get("winding") === "ACB" ? "ABC" : "ACB" }));
+  const toggle = (key, text) => button(text, null, () => edit({ [key]: !get(key) }));
+  const para = toggle("show_parallelogram", "");
+  para.append(element("span", "tnx-long", "Parallelogram"), element("span", "tnx-short", "▱"));
+  para.setAttribute("aria-label", "Parallelogram");
+  const unit = toggle("show_unit_normal", "N/|N|");
+  unit.setAttribute("aria-label", "Unit normal N/|N|");
+  unit.title = "Show the unit normal N/|N|";
+  para.title = "Show the parallelogram on U and V (area |N|)";
+  // Named by its visible words ("Reset view", or "Reset" when narrow), so speech users can say them.
+  const resetButton = button("", "Reset view", reset);
+  resetButton.append(element("span", "tnx-long", "Reset view"), element("span", "tnx-short", "Reset"));
+  resetButton.title = "Reset view: frame the triangle and its arrows again";
+  bar.append(
+    resetButton,
+    button("x", "View along the x axis", () => stage.along("x")),
+    button("y", "View along the y axis", () => stage.along("y")),
+    button("z", "View along the z axis", () => stage.along("z")),
+    flip,
+    para,
+    unit,
+  );
+
+  function update() {
+    const winding = get("winding") === "ACB" ? "ACB" : "ABC";
+    setText(flip, `⇄ ${ORDER[winding]}`);
+    setAttr(flip, "aria-label", `Flip the order of the vertices, now ${ORDER[winding]}`);
+    setAttr(flip, "title", flip.getAttribute("aria-label"));
+    setAttr(para, "aria-pressed", !!get("show_parallelogram"));
+    setAttr(unit, "aria-pressed", !!get("show_unit_normal"));
+  }
+
+  return { update };
+}
