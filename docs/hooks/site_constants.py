@@ -1,8 +1,8 @@
 """``assets/javascripts/trinormal-constants.js``: what the site's JavaScript reads from the package.
 
 The output fields, the colour code, the input limits and messages, the verdicts, the
-degeneracy tolerance, the precision range, the view's grid and range, and the Check a mesh page's constants: the
-hand-written JavaScript lists none of them itself.
+degeneracy tolerance, the precision range, the view's grid and range, and the Check a
+mesh page's constants: the hand-written JavaScript lists none of them itself.
 """
 
 from __future__ import annotations
