@@ -9,7 +9,6 @@ right answer counts (any of the 53 faces, any order of the faces, any starting c
 from __future__ import annotations
 
 from fractions import Fraction
-from functools import cache
 from typing import Any
 
 from trinormal.exercises import AnswerError, Exercise, read_number, read_points
@@ -21,9 +20,8 @@ TETRA_VERTICES: tuple[tuple[int, int, int], ...] = ((0, 0, 0), (1, 0, 0), (0, 1,
 TETRA_FACES: tuple[tuple[int, int, int], ...] = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 3, 2))
 
 
-@cache
 def _ball() -> tuple[int, frozenset[int]]:
-    """Return the damaged ball's face count and the faces its report says to flip."""
+    """Return the damaged ball's face count and the faces its report says to flip (read anew)."""
     from trinormal import mesh
 
     m = mesh.read_mesh(mesh.sample_path())
