@@ -128,9 +128,9 @@ EXERCISES = (
         checker=_check_repair_tetra,
         example=lambda: (TETRA_FACES[0], TETRA_FACES[1], TETRA_FACES[2], (1, 2, 3)),
         hint=(
-            "Find the face whose normal points inward, and swap two of its corners. The "
-            "tetrahedron's centre is (1/4, 1/4, 1/4): at a face with centre c the way out is "
-            "c - (1/4, 1/4, 1/4). Or read mesh.check(TETRA_VERTICES, TETRA_FACES).faces_to_flip."
+            "Find the face whose normal points inward, and swap two of its corners: compare "
+            "each face's normal with the way out, from the tetrahedron's centre to the face's "
+            "centre. Or read mesh.check(TETRA_VERTICES, TETRA_FACES).faces_to_flip."
         ),
     ),
 )
