@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 import re
+import warnings
 from decimal import Decimal
 from fractions import Fraction
 from typing import Any
@@ -323,8 +325,6 @@ def test_numbers_near_the_solution_are_judged_by_the_stated_tolerance(name, x):
 
 def _matrix(rows: Any) -> Any:
     """A numpy.matrix (numpy warns that the class is discouraged; students still make them)."""
-    import warnings
-
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", PendingDeprecationWarning)
         return np.matrix(rows)
@@ -338,7 +338,15 @@ def _degrees_with_comma() -> str:
 #: Right answers in the forms a class wrote them (a teacher's trial), for real exercises.
 ACCEPTED: dict[str, list[Any]] = {
     # (a) the prompt's own formula, typed with the exercise's numbers
-    "01-area": ["|(1, 1, 1)|/2", "sqrt(1² + 1² + 1²)/2", "np.sqrt(3)/2", "math.sqrt(3)/2", "0,866"],
+    "01-area": [
+        "area = √3/2",
+        "A = |N|/2 = |(1, 1, 1)|/2",
+        "|(1, 1, 1)|/2",
+        "sqrt(1² + 1² + 1²)/2",
+        "np.sqrt(3)/2",
+        "math.sqrt(3)/2",
+        "0,866",
+    ],
     "02-lagrange": ["|(1, 2, 2)|²·|(2, 0, 0)|² − (1·2 + 2·0 + 2·0)²", "9*4 - 2^2"],
     "04-dot-value": ["2·3 + 0·1 + 0·0", "6,0"],
     "04-2d-nz": ["0·0 − 2·3", "−6,0", "|−6|·(−1)"],
@@ -357,6 +365,7 @@ ACCEPTED: dict[str, list[Any]] = {
     # (b) a vector with a factor, (c) arrays and matrices, (e) decimal commas in vectors
     "01-normal": [
         "(1; 1; 1)",
+        "N = (1, 1, 1)",
         "(2, 2, 2)/2",
         "[2,2,2]/2",
         "2*(1/2, 1/2, 1/2)",
@@ -449,14 +458,29 @@ TEXT_JOINS = ["{a}/{b}", "{a}*{b}", "{a} {b}", "({a}, {b}, {a})/{b}", "{b}*({a};
               "{a} - {b}", "{a}^{b}", "|{a}|/{b}", "[{a}, {b}, 0]/sqrt({b})"]  # fmt: skip
 
 
-def _texts() -> list[str]:
+#: Bits of text run together at random: brackets, bars, separators, words, operators.
+TEXT_BITS = ["1", "2", "0,5", ",", ";", " ", "(", ")", "[", "]", "|", "/", "*", "^", "²", "√",
+             "sqrt", "log10", "max", "np.", "x", "Ux", "Vy", "−", "e", "front", "back", "not",
+             "True", ".", "°", "1,500", "degrees", "atan2", "⟨", "{", "'", "=", "<", "&", "~", "%"]  # fmt: skip
+
+
+def _texts(name: str) -> list[str]:
     pairs = itertools.product(TEXT_ATOMS[:30], TEXT_ATOMS[28:])
     joined = [join.format(a=a, b=b) for (a, b), join in zip(pairs, itertools.cycle(TEXT_JOINS))]
-    return TEXT_ATOMS + joined[::7]
+    rng = random.Random(name)  # the same texts on every run
+    scrambled = ["".join(rng.choices(TEXT_BITS, k=rng.randint(1, 9))) for _ in range(150)]
+    return TEXT_ATOMS + joined[::7] + scrambled
 
 
 @pytest.mark.parametrize("name", NAMES)
 def test_every_text_gets_a_verdict_or_a_reason(name):
-    """Text typed for any exercise is judged, or told why it could not be read: never unjudged."""
-    for text in _texts():
-        assert_judged(name, text)
+    """Text typed for any exercise is judged, or told why it could not be read: never unjudged.
+
+    Nothing is printed on the way either: a warning sympy gives while reading would show
+    in the student's notebook, so every warning is recorded and must be absent.
+    """
+    for text in _texts(name):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            assert_judged(name, text)
+        assert not caught, (name, text, [str(w.message)[:80] for w in caught])

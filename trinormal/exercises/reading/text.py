@@ -32,10 +32,25 @@ _SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
 _POWER = re.compile("([⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
 
 
+#: ``<=``, ``>=``, ``!=`` or ``==``: a comparison, not a value given a name.
+_COMPARISON = re.compile(r"[<>!=]=")
+
+
 def plain_text(text: str) -> str:
-    """Turn typed math into plain text: ``x²`` → ``x**2``, full-width digits → ASCII (NFKC)."""
+    """Turn typed math into plain text: ``x²`` → ``x**2``, full-width digits → ASCII (NFKC).
+
+    A value given a name (``"area = √3/2"``, ``"N = (1, 1, 1)"``) is the value after
+    the last ``=``.
+
+    Examples
+    --------
+    >>> plain_text("A = |N|/2 = √3/2"), plain_text("10⁻³")
+    (' √3/2', '10**-3')
+    """
     import unicodedata
 
+    if "=" in text and not _COMPARISON.search(text):
+        text = text.rsplit("=", 1)[1]
     text = _POWER.sub(lambda m: "**" + m[1].translate(_SUPERSCRIPTS), text)
     return unicodedata.normalize("NFKC", text).replace("\u2044", "/")
 
@@ -43,7 +58,11 @@ def plain_text(text: str) -> str:
 _SQRT = re.compile(r"√\s*(\d+(?:\.\d+)?|\(|[A-Za-z])")
 #: A number (not the digits ending a name such as log10) before a function or a bracket.
 _DIGIT_CALL = re.compile(r"(?<![A-Za-z_\d.])(\d+(?:\.\d+)?)\s*(sqrt|pi|log|ln|exp|\()")
-_UNSAFE = re.compile(r"__|\.\s*[A-Za-z_]|lambda|[;:`\[\]{}@$!?'\"\\|&]")
+#: Text that could run code, or that sympy would read as logic, a comparison or an empty tuple.
+_UNSAFE = re.compile(
+    r"__|\.\s*[A-Za-z_]|[;:`\[\]{}@$!?'\"\\|&~<>=]|\(\s*\)"
+    r"|(?<![A-Za-z_])(?:lambda|True|False|None|not|and|or|is|in|if|else|for)(?![A-Za-z_\d])"
+)
 #: ``math.sqrt``, ``np.log10``, ``sympy.pi``: the module's name is dropped, the function kept.
 _MODULE_PREFIX = re.compile(r"\b(?:math|numpy|np|sympy|sp)\s*\.\s*(?=[A-Za-z])")
 #: ``|...|`` with no bar inside: the innermost absolute value or length.
