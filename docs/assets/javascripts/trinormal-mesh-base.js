@@ -14,12 +14,12 @@
  * requires Python's report, sentences, repaired bytes and error messages, file by file.
  *
  * Plain JavaScript, no dependencies. Each part runs as a plain script in one shared scope,
- * `self`: a page (script tags), the Web Worker (mesh-worker.js's importScripts) and Node
- * (tests/mesh_parity_check.js runs each file in turn, all given one object as `self`). This part sets
- * self.TrinormalMesh; each later part is one call, TrinormalMesh.part(name, after, factory),
- * which checks that part `after` is loaded and replaces self.TrinormalMesh with a copy that
- * has what the factory returns too. Functions the later parts share, but the page does not
- * use, are under `internal`.
+ * `self`: in a page (script tags), in the Web Worker (mesh-worker.js's importScripts) and in
+ * Node (tests/mesh_parity_check.js runs each file in turn, all given one object as `self`).
+ * This part sets self.TrinormalMesh; each later part is one call, TrinormalMesh.part(name,
+ * after, factory), which checks that part `after` is loaded and replaces self.TrinormalMesh
+ * with a copy that has what the factory returns too. Functions the later parts share, but the
+ * page does not use, are under `internal`.
  */
 self.TrinormalMesh = (function (root, constants) {
   "use strict";
@@ -309,5 +309,4 @@ self.TrinormalMesh = (function (root, constants) {
     parts: ["base"],
     part: part,
   };
-
 })(self, self.TRINORMAL_CONSTANTS);
