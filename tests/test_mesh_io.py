@@ -201,7 +201,10 @@ PLAIN = b"# cube corner\nv 0 0 0\nv 1.5 -0 .5\r\nv\t1e3  +2. 3E-2 \n\nf 1 2 3\nf
     [
         (PLAIN, True),
         (b"v 1_0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 +3\n", True),  # cast by float and int
-        (b"v 0.1 0.30000000000000004 0.1000000000000000055511151231257827\n", True),
+        (
+            b"v 0.1 0.30000000000000004 0.1000000000000000055511151231257827\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            True,
+        ),
         (b"v 1 2 1.00000000000000011102230246251565404236316680908203125\n", False),  # long
         (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # a comment after a face\n", False),
         (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/2 3/3\n", False),
