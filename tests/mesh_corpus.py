@@ -233,7 +233,7 @@ def faulty() -> Model:
 
 
 def thin(tol_factor: float) -> Model:
-    """A triangle whose sine is about ``tol_factor`` times the degeneracy tolerance."""
+    """A triangle whose |N| / L² is ``tol_factor`` times the default tolerance (1e-12)."""
     h = 1e-12 * tol_factor
     return np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, h, 0.0]]), [[0, 1, 2], [0, 2, 1]]
 

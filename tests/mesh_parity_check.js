@@ -25,11 +25,18 @@ function meshParts() {
     .filter(function (s) { return s && s !== "trinormal-constants.js"; });
 }
 
-/** TrinormalMesh as the worker has it: each part adds to what the parts before it made. */
+/**
+ * TrinormalMesh as the worker has it: each part run as a plain script, in order, all of them
+ * given one object as `self` (the worker's global scope) that starts with only the constants.
+ */
 function loadMesh(constants) {
-  return meshParts().reduce(function (mesh, part) {
-    return require(path.join(JS_DIR, part))(mesh || constants);
-  }, null);
+  var scope = { TRINORMAL_CONSTANTS: constants };
+  meshParts().forEach(function (part) {
+    var file = path.join(JS_DIR, part);
+    var source = fs.readFileSync(file, "utf8") + "\n//# sourceURL=" + file;
+    new Function("self", source)(scope);
+  });
+  return scope.TrinormalMesh;
 }
 
 /** Numbers JSON cannot hold, as Python's repr writes them (the corpus does the same). */

@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 import re
+import warnings
 from decimal import Decimal
 from fractions import Fraction
 from typing import Any
@@ -316,3 +318,169 @@ def test_numbers_near_the_solution_are_judged_by_the_stated_tolerance(name, x):
         assert math.copysign(1, x) != math.copysign(1, float(want))
     if (m := re.search(r"rounded to (\d+) decimal", r.message)) is not None:
         assert abs(Fraction(x) - want) <= Fraction(1, 2 * 10 ** int(m[1])), (name, x)
+
+
+# --------------------------------------------------------------------------- forms students write
+
+
+def _matrix(rows: Any) -> Any:
+    """A numpy.matrix (numpy warns that the class is discouraged; students still make them)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", PendingDeprecationWarning)
+        return np.matrix(rows)
+
+
+def _degrees_with_comma() -> str:
+    text = f"{get('08-cube-corner-degrees').solution():.2f}"  # 19,471 could be 19471
+    return text.replace(".", ",") + "°"
+
+
+#: Right answers in the forms a class wrote them (a teacher's trial), for real exercises.
+ACCEPTED: dict[str, list[Any]] = {
+    # (a) the prompt's own formula, typed with the exercise's numbers
+    "01-area": [
+        "area = √3/2",
+        "A = |N|/2 = |(1, 1, 1)|/2",
+        "|(1, 1, 1)|/2",
+        "sqrt(1² + 1² + 1²)/2",
+        "np.sqrt(3)/2",
+        "math.sqrt(3)/2",
+        "0,866",
+    ],
+    "02-lagrange": ["|(1, 2, 2)|²·|(2, 0, 0)|² − (1·2 + 2·0 + 2·0)²", "9*4 - 2^2"],
+    "04-dot-value": ["2·3 + 0·1 + 0·0", "6,0"],
+    "04-2d-nz": ["0·0 − 2·3", "−6,0", "|−6|·(−1)"],
+    "05-scale-area": ["3²", "3^2", "9,0"],
+    "06-float64-digits": [
+        "53*log10(2)",
+        "53·log10(2)",
+        "53 * np.log10(2)",
+        "53*math.log10(2)",
+        "53*log(2, 10)",
+        "15,95",
+    ],
+    "08-cube-corner-degrees": [_degrees_with_comma()],
+    "08-sliver-weight": ["2/(2 + 90)", "0,0217", "1/46"],
+    "09-lambert": ["max(0, 0*0 + 0*0.6 + 1*0.8)", "max(0, 0.8)", "0,8"],
+    # (b) a vector with a factor, (c) arrays and matrices, (e) decimal commas in vectors
+    "01-normal": [
+        "(1; 1; 1)",
+        "N = (1, 1, 1)",
+        "(2, 2, 2)/2",
+        "[2,2,2]/2",
+        "2*(1/2, 1/2, 1/2)",
+        sp.Array([1, 1, 1]),
+        sp.Array([[1], [1], [1]]),
+        sp.Array([[1, 1, 1]]),
+        sp.Matrix([[1, 1, 1]]),
+        _matrix([[1, 1, 1]]),
+        _matrix([[1], [1], [1]]),
+        np.array([[1], [1], [1]]),
+        np.array([[1, 1, 1]]),
+    ],
+    "03-row5-unit": ["(4, 0, 0)/4", "(4,0,0)/|(4,0,0)|", "(1,0; 0; 0)", "1,0 0 0"],
+    "05-collinear": ["(5, 7, 1)/3", "[5,7,1]/3", "(5/3; 7/3; 1/3)"],
+    "05-down-acb": ["(0; 0; 1), (1; 0; 1), (0; 1; 1)"],
+    "10-scaled-normal": [
+        "(1, 2, 0)/sqrt(5)",
+        "[1,2,0]/√5",
+        "(1, 2, 0)/√5",
+        "1/sqrt(5)*(1, 2, 0)",
+        "(0.5, 1, 0)/sqrt(5/4)",
+        "(1/2, 1, 0)/|(1/2, 1, 0)|",
+        "(0,44721; 0,89443; 0)",
+        "0,44721 0,89443 0",
+        sp.Array([1, 2, 0]) / sp.sqrt(5),
+        _matrix([[0.4472136, 0.8944272, 0]]),
+    ],
+    # (d) numpy truth values
+    "03-collinear": [np.bool_(True), np.array(True), np.array([True]), "True."],
+    "07-needle-degenerate": [np.bool_(False), np.array(False), np.array([[False]])],
+    # (f) the word inside a sentence
+    "09-front-face": [
+        "the front side",
+        "It is the front.",
+        "FRONT",
+        "The ray hits the front face.",
+    ],
+}
+
+#: Wrong answers in the same forms: still refused.
+REFUSED: dict[str, list[Any]] = {
+    "01-area": ["|(1, 1, 2)|/2", "0,5", "sqrt(3)"],
+    "06-float64-digits": ["54*log10(2)", "52·log10(2)", "15,85"],
+    "01-normal": ["(1; 1; -1)", "(2, 2, 2)/4", sp.Array([1, 1, 0]), _matrix([[1, 1, 2]])],
+    "10-scaled-normal": ["(0, -1, 1)/sqrt(2)", "[2,1,0]/√5", "(0,8944; 0,4472; 0)"],
+    "03-collinear": [np.bool_(False), np.array(False)],
+    "07-needle-degenerate": [np.array(True)],
+    "09-front-face": ["the back side", "It is the back."],
+}
+
+
+@pytest.mark.parametrize("name", sorted(ACCEPTED))
+def test_right_answers_in_the_forms_students_write_pass(name):
+    for form in ACCEPTED[name]:
+        r = assert_judged(name, form)
+        assert r.correct, (name, form, r.message)
+    for form in REFUSED.get(name, []):
+        r = assert_judged(name, form)
+        assert r.status == "incorrect", (name, form, r.message)
+
+
+def test_unclear_answers_are_told_why_not_judged():
+    """A sentence naming both words, a negation, or 1,500 (1.5 or 1500?) gets a reason."""
+    for sentence, why in (
+        ("front, not back", "names both 'front' and 'back'"),
+        ("the front or the back", "names both"),
+        ("not the back", "without a negation"),
+        ("sideways", "'front' or 'back'"),
+    ):
+        r = assert_judged("09-front-face", sentence)
+        assert r.status == "incorrect" and why in r.message, (sentence, r.message)
+    r = assert_judged("06-float64-digits", "15,955")
+    assert "thousands separator" in r.message and "15.955" in r.message
+    r = assert_judged("01-normal", "2*(1,1,1)/(1,1,1)")
+    assert "could not be read" in r.message
+
+
+# --------------------------------------------------------------------------- text fuzz
+
+#: Pieces of text answers: numbers, functions, formulas, vectors, sentences.
+TEXT_ATOMS = [
+    "1", "-1", "0", "2", "1/2", "0.5", "0,5", "1,500", "−6", "sqrt(2)", "√2", "√3/2", "2√2",
+    "log(2)", "log(2, 10)", "log10(2)", "ln(2)", "pi", "e", "exp(1)", "|−6|", "|(1, 2, 2)|",
+    "max(0, 0.8)", "degrees(1)", "atan2(1, 2)", "np.sqrt(2)", "math.log10(2)", "x", "Ux*Vy",
+    "(0, -1, 1)", "[0,-1,1]", "(0; 1; 0)", "0,5 1 0", "(1,2,3), (4,5,6), (7,8,9)", "front",
+    "the front side", "It is the front.", "front, not back", "True", "False", "yes", "1e-3",
+    "19.47°", "1/0", "0/0", "oo", "zoo", "I", "nan", "", "()", "(,)", "|", "||", "|(1,2)|",
+]  # fmt: skip
+TEXT_JOINS = ["{a}/{b}", "{a}*{b}", "{a} {b}", "({a}, {b}, {a})/{b}", "{b}*({a}; {b}; {a})",
+              "{a} - {b}", "{a}^{b}", "|{a}|/{b}", "[{a}, {b}, 0]/sqrt({b})"]  # fmt: skip
+
+
+#: Bits of text run together at random: brackets, bars, separators, words, operators.
+TEXT_BITS = ["1", "2", "0,5", ",", ";", " ", "(", ")", "[", "]", "|", "/", "*", "^", "²", "√",
+             "sqrt", "log10", "max", "np.", "x", "Ux", "Vy", "−", "e", "front", "back", "not",
+             "True", ".", "°", "1,500", "degrees", "atan2", "⟨", "{", "'", "=", "<", "&", "~", "%"]  # fmt: skip
+
+
+def _texts(name: str) -> list[str]:
+    pairs = itertools.product(TEXT_ATOMS[:30], TEXT_ATOMS[28:])
+    joined = [join.format(a=a, b=b) for (a, b), join in zip(pairs, itertools.cycle(TEXT_JOINS))]
+    rng = random.Random(name)  # the same texts on every run
+    scrambled = ["".join(rng.choices(TEXT_BITS, k=rng.randint(1, 9))) for _ in range(150)]
+    return TEXT_ATOMS + joined[::7] + scrambled
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_text_gets_a_verdict_or_a_reason(name):
+    """Text typed for any exercise is judged, or told why it could not be read: never unjudged.
+
+    Nothing is printed on the way either: a warning sympy gives while reading would show
+    in the student's notebook, so every warning is recorded and must be absent.
+    """
+    for text in _texts(name):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            assert_judged(name, text)
+        assert not caught, (name, text, [str(w.message)[:80] for w in caught])

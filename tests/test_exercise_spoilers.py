@@ -180,3 +180,131 @@ def test_the_explorer_is_not_left_on_an_answer():
         assert not check("05-down-acb", points), points
     for point in (a, b, c):
         assert not check("05-collinear", point), point
+
+
+# --------------------------------------------------------------------------- hints are nudges
+
+
+def _triangle(points: Any, winding: str = "ABC") -> tuple[list[Any], list[Any]]:
+    """A triangle's intermediate results: the edges and N (vectors), |N|² (a number)."""
+    from trinormal import triangle_normal
+
+    e = triangle_normal(*points, winding=winding).exact
+    return [tuple(e.u), tuple(e.v), tuple(e.normal)], [e.magnitude_squared]
+
+
+def _intermediates(name: str) -> tuple[list[Any], list[Any]]:
+    """What a student computes on the way to the answer of ``name``: (vectors, numbers).
+
+    Computed from the exercise modules' own data, never typed in.
+    """
+    from trinormal.exercises import nb01, nb02, nb03, nb04, nb05, nb07, nb09, nb10, nb11
+
+    def dot(p: Any, q: Any) -> Any:
+        return sum(Fraction(a) * Fraction(b) for a, b in zip(p, q, strict=True))
+
+    vectors: list[Any] = []
+    numbers: list[Any] = []
+
+    def add(found: tuple[list[Any], list[Any]]) -> None:
+        vectors.extend(found[0])
+        numbers.extend(found[1])
+
+    triangles = {
+        "01": [nb01.TRIANGLE],
+        "03-row5": [nb03.ROW5],
+        "03-collinear": [nb03.LINE],
+        "04-dot": [nb04.DOT_TRIANGLE],
+        "04-weighted": [nb04.BIG, nb04.SMALL],
+        "04-2d": [tuple((x, y, 0) for x, y in nb04.FLAT)],
+        "05-scale": [nb05.SCALE_ABC, tuple(tuple(3 * x for x in p) for p in nb05.SCALE_ABC)],
+        "07": [nb07.NEEDLE],
+    }
+    for prefix, tris in triangles.items():
+        if name.startswith(prefix):
+            for t in tris:
+                add(_triangle(t))
+                add(_triangle(t, "ACB"))
+    if name == "02-lagrange":
+        u, v = nb02.LAGRANGE_U, nb02.LAGRANGE_V
+        numbers += [dot(u, u), dot(v, v), dot(u, v), dot(u, u) * dot(v, v)]
+    if name == "05-collinear":
+        a, b = nb05.COLLINEAR_AB
+        vectors.append(tuple(q - p for p, q in zip(a, b, strict=True)))
+    if name == "06-float64-digits":
+        numbers += [get("06-float64-bits").solution(), Fraction("0.30103")]
+    if name == "08-sliver-weight":
+        numbers.append(92)
+    if name == "09-front-face":
+        numbers.append(dot(nb09.FACE_N, nb09.RAY_D))
+    if name == "10-det-cross":
+        mu, mv = (nb10.DIAG[0], 0, 0), (0, nb10.DIAG[1], 0)
+        vectors += [mu, mv]
+        numbers.append(nb10.DIAG[0] * nb10.DIAG[1] * nb10.DIAG[2])
+    if name == "10-scaled-normal":
+        vectors.append((Fraction(1, 2), 1, 0))
+        numbers.append(Fraction(5, 4))
+    if name == "11-repair-tetra":
+        vertices = nb11.TETRA_VERTICES
+        vectors.append(tuple(Fraction(sum(p[i] for p in vertices), 4) for i in range(3)))
+    return vectors, numbers
+
+
+def _spellings(x: Any) -> list[str]:
+    q = Fraction(x)
+    texts = {str(q), format_number(q, 4, trim=True), format_number(q, 3)}
+    return sorted(texts | {t.replace("-", "−") for t in texts})
+
+
+def _hints(name: str) -> list[str]:
+    """Every hint the exercise can give: its hint, its listed mistakes' and those of probes."""
+    ex = get(name)
+    texts = [ex.hint] + [hint for _, hint in ex.mistakes]
+    probes: list[Any] = [wrong() if callable(wrong) else wrong for wrong, _ in ex.mistakes]
+    probes += [7, "7/3", (5, 4, 3), "(5, 4, 3)", [(0, 0, 0), (1, 0, 0), (0, 1, 0)], True, "back"]
+    messages = [check(name, p).message for p in probes]
+    return texts + [m for m in messages if "could not be read" not in m]  # those echo the answer
+
+
+def spoiled(name: str, hints: list[str] | None = None) -> list[str]:
+    """The intermediate results of ``name`` that one of its hints states (and the prompt does not)."""
+    vectors, numbers = _intermediates(name)
+    prompt = get(name).prompt.replace(" ", "")
+    found = []
+    for hint in _hints(name) if hints is None else hints:
+        flat = hint.replace(" ", "")
+        for vec in vectors:
+            forms = [
+                "(" + ",".join(parts) + ")" for parts in zip(*map(_spellings, vec), strict=False)
+            ]
+            forms += ["(" + ",".join(_spellings(x)[0] for x in vec) + ")"]
+            found += [
+                f"{form} in {hint!r}" for form in forms if form in flat and form not in prompt
+            ]
+        for x in numbers:
+            q = Fraction(x)
+            if q.denominator == 1 and abs(q) <= 4:  # small whole numbers are everywhere
+                continue
+            for text in _spellings(x):
+                pattern = rf"(?<![\d.]){re.escape(text)}(?![\d.]*\d)"
+                if re.search(pattern, hint) and not re.search(pattern, get(name).prompt):
+                    found.append(f"{text} in {hint!r}")
+    return found
+
+
+@pytest.mark.parametrize("name", sorted(notebook_names()))
+def test_hints_never_state_an_intermediate_result(name):
+    """A hint says what to compute next, never its value: no edge, N, |N|², dot product..."""
+    assert spoiled(name) == []
+
+
+def test_the_intermediate_check_can_fail():
+    """Hints that state MU, det(M), |U|²|V|², B − A or the 0.301 of log10(2) are caught."""
+    found = spoiled("10-det-cross", ["Multiply it out: MU = (2, 0, 0) and MV = (0, 3, 0)."])
+    assert any("(2,0,0)" in f for f in found) and any("(0,3,0)" in f for f in found)
+    assert spoiled("10-det-cross", ["det(M) = 24 > 0, so the orientation stays."])
+    assert spoiled("02-lagrange", ["That is 36: now subtract (U · V)²."])
+    assert spoiled("05-collinear", ["C − A must be a multiple of B − A = (2, 1, 1)."])
+    assert spoiled("06-float64-digits", ["Each bit is worth log10(2), about 0.301 digits."])
+    assert spoiled("11-repair-tetra", ["The centre is (1/4, 1/4, 1/4)."])
+    assert not spoiled("10-det-cross", ["Transform U and V first, then cross them."])

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from test_mesh_degenerate import exact_ratio, exactly_degenerate
+from test_mesh_degenerate import ORDERS, exactly_degenerate
 
 from trinormal import mesh, triangle_normal
 from trinormal.tolerances import DEFAULT_TOL
@@ -34,11 +34,12 @@ def angle_deg(p: np.ndarray, q: np.ndarray) -> float:
 @given(point, point, point)
 def test_face_normals_agree_with_triangle_normal(a, b, c):
     r = triangle_normal(a, b, c)
-    assume(exact_ratio(a, b, c) > 1e-12)  # |N| / L² > 1e-6: clear of the threshold
+    assume(r.thickness > 1e-6)  # |N| / L² far above the threshold (DEFAULT_TOL)
     v = np.array([a, b, c])
     f = np.array([[0, 1, 2]])
     unit = mesh.face_normals(v, f)[0]
-    # float64 direction error is about eps / sine; allow a generous constant
+    # the kernel forms N from the edges at A, so its direction error is about eps / sine at A
+    # (at most eps / thickness); allow a generous constant
     np.testing.assert_allclose(unit, r.unit_normal, rtol=0, atol=64 * EPS / r.sine)
     raw = mesh.face_normals(v, f, unit=False)[0]
     scale = r.magnitude / r.sine  # |U| |V|, from the exact values
@@ -52,9 +53,14 @@ def test_face_normals_agree_with_triangle_normal(a, b, c):
 
 @settings(max_examples=200, deadline=None)
 @given(point, point, point, st.sampled_from([0, 1e-12, 1e-9, 1e-6, 1e-3, 0.1]))
-def test_degenerate_verdict_is_the_exact_rule(a, b, c, tol):
-    got = mesh.degenerate_faces(np.array([a, b, c]), [[0, 1, 2]], tol=tol)[0]
-    assert bool(got) == exactly_degenerate(a, b, c, tol)
+def test_degenerate_verdict_is_the_exact_rule_and_the_cores_in_every_order(a, b, c, tol):
+    corners = np.array([a, b, c])
+    want = exactly_degenerate(a, b, c, tol)
+    for order in ORDERS:
+        turned = corners[list(order)]
+        got = mesh.degenerate_faces(turned, [[0, 1, 2]], tol=tol)[0]
+        core = triangle_normal(*turned.tolist(), tol=tol)
+        assert (bool(got), core.degenerate) == (want, want), order
 
 
 def test_many_faces_across_blocks_match_the_core_row_by_row():
@@ -67,6 +73,7 @@ def test_many_faces_across_blocks_match_the_core_row_by_row():
         corners = [v[j].tolist() for j in f[i]]
         assert bool(deg[i]) == exactly_degenerate(*corners)
         r = triangle_normal(*corners)
+        assert r.degenerate == bool(deg[i])
         if deg[i]:
             assert not got[i].any()
         else:

@@ -193,6 +193,46 @@ def test_crlf_and_continued_lines(tmp_path):
     ]
 
 
+PLAIN = b"# cube corner\nv 0 0 0\nv 1.5 -0 .5\r\nv\t1e3  +2. 3E-2 \n\nf 1 2 3\nf 3 2 1\n"
+
+
+@pytest.mark.parametrize(
+    "data,plain",
+    [
+        (PLAIN, True),
+        (b"v 1_0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 +3\n", True),  # cast by float and int
+        (
+            b"v 0.1 0.30000000000000004 0.1000000000000000055511151231257827\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            True,
+        ),
+        (b"v 1 2 1.00000000000000011102230246251565404236316680908203125\n", False),  # long
+        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # a comment after a face\n", False),
+        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/2 3/3\n", False),
+        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n", False),
+        (b"v 0 0 0 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", False),
+        (b"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", False),
+        (b"v 1-2 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", False),
+        (b"v 1e999 0 0\n", False),
+        (b"v 0 0 0\nv 1 0 0\nf 1 2 3\n", False),
+        (b"vn 0 0 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", False),
+    ],
+)
+def test_plain_obj_files_are_read_in_one_go_with_the_same_result(data, plain):
+    from trinormal.mesh.io import obj
+
+    got = obj._read_plain(data)
+    assert (got is not None) == plain
+    if got is None:
+        return
+    want = obj._read_lines(data, "x")
+    assert got[0].tobytes() == want.vertices.tobytes() and got[0].shape == want.vertices.shape
+    assert got[1].dtype == want.faces.dtype and (got[1] == want.faces).all()
+    m = mesh.parse_mesh(data, "obj")
+    assert m.vertices.tobytes() == want.vertices.tobytes() and m.source_faces.tolist() == list(
+        range(len(want.faces))
+    )
+
+
 def test_a_byte_order_mark_is_not_part_of_the_first_line():
     m = mesh.parse_mesh("\ufeffv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".encode(), "obj")
     assert m.faces.tolist() == [[0, 1, 2]]

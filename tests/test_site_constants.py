@@ -17,11 +17,12 @@ import shutil
 import string
 import subprocess
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
 
-from trinormal import triangle_normal, validation
+from trinormal import tolerances, triangle_normal, validation
 from trinormal.core import VERDICTS
 from trinormal.display import SCI_ABOVE_LOG10
 from trinormal.validation import MESSAGES, check_coordinate, check_precision, limits
@@ -91,6 +92,7 @@ def test_the_constants_carry_the_limits_and_every_message():
     assert constants["limits"] == limits()
     assert constants["messages"] == MESSAGES
     assert constants["verdicts"] == VERDICTS
+    assert constants["tol"] == tolerances.DEFAULT_TOL
     assert constants["format"] == {"sci_above_log10": SCI_ABOVE_LOG10}
     assert constants["precision"] == {
         "min": limits()["min_precision"],
@@ -187,6 +189,29 @@ def test_an_edited_verdict_reaches_the_site(tmp_path, monkeypatch):
     assert proper == "Fine: this triangle has a direction."
     assert coincide == "Degenerate: B and C sit on one spot: no area at all. No unit normal exists."
     assert got == [{"ok": True, "value": proper}, {"ok": True, "value": coincide}]
+
+
+def test_an_edited_tolerance_reaches_the_site(tmp_path, monkeypatch):
+    """Raise DEFAULT_TOL in Python only: the site's core calls a thickness-1e-4 triangle thin."""
+    thin = [["0", "0", "0"], ["1", "0", "0"], ["1/2", "1/10000", "0"]]
+    fair = [["0", "0", "0"], ["1", "0", "0"], ["1/2", "1/100", "0"]]
+    before = _on_the_site(tmp_path, [("compute", [*thin, "ABC", "4"])])
+    monkeypatch.setattr(tolerances, "DEFAULT_TOL", 1e-3)
+    after = _on_the_site(
+        tmp_path, [("compute", [*thin, "ABC", "4"]), ("compute", [*fair, "ABC", "4"])]
+    )
+
+    def status(corners: list[list[str]], tol: float) -> str:
+        a, b, c = ([Fraction(x) for x in corner] for corner in corners)
+        return triangle_normal(a, b, c, tol=tol).format(4)["status"]
+
+    assert before == [{"ok": True, "value": status(thin, 1e-12)}]
+    assert after == [
+        {"ok": True, "value": status(thin, 1e-3)},
+        {"ok": True, "value": status(fair, 1e-3)},
+    ]
+    assert after[0]["value"].startswith("Degenerate:") and before[0]["value"] != after[0]["value"]
+    assert after[1]["value"] == VERDICTS["proper"]
 
 
 def test_the_hand_written_javascript_holds_no_wording_of_its_own():

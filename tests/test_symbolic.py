@@ -62,8 +62,13 @@ def test_normal_components_rejects_an_unknown_basis():
         normal_components("vertices")  # type: ignore[arg-type]
 
 
-def test_every_identity_is_proven_and_has_latex():
-    ids = identities()
+@pytest.fixture(scope="module")
+def ids():
+    """The identities, proven once for this module's tests (the library keeps nothing)."""
+    return identities()
+
+
+def test_every_identity_is_proven_and_has_latex(ids):
     assert set(ids) == {
         "normal_perpendicular_to_U",
         "normal_perpendicular_to_V",
@@ -92,8 +97,7 @@ def test_the_prover_can_fail():
     assert not simplifies_to_zero(wrong)
 
 
-def test_identities_hold_numerically_on_a_triangle():
-    ids = identities()
+def test_identities_hold_numerically_on_a_triangle(ids):
     values = dict(zip(ALL_POINTS, [1, 2, 3, 4, 0, -1, 2, 5, 1], strict=True))
     values.update(zip(ALL_EDGES, [3, -2, -4, 1, 3, -2], strict=True))
     values.update({sp.Symbol("s", real=True): 3})

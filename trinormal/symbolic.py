@@ -30,7 +30,6 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
 from typing import Any, Literal, NamedTuple
 
 from trinormal._optional import missing_extra
@@ -229,8 +228,8 @@ def _identity(name: str, statement: str, latex: str, difference: Any) -> Identit
     return Identity(name, statement, latex, diff, simplifies_to_zero(diff))
 
 
-@lru_cache(maxsize=1)
 def _identities() -> tuple[Identity, ...]:
+    """Build every identity and prove it by simplification, anew on each call."""
     A, B, C = (_vec(p) for p in POINT_SYMBOLS)
     U, V = (_vec(e) for e in EDGE_SYMBOLS)
     N = U.cross(V)
@@ -293,6 +292,8 @@ def identities() -> dict[str, Identity]:
 
     Each entry's ``difference`` (left side minus right side, in the guide's
     symbols) is simplified; ``proven`` is True only when it reduces to zero.
+    Each call proves them anew (nothing is kept between calls), so a caller
+    that needs them twice keeps the returned dict.
 
     Returns
     -------

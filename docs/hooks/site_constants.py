@@ -1,8 +1,8 @@
 """``assets/javascripts/trinormal-constants.js``: what the site's JavaScript reads from the package.
 
 The output fields, the colour code, the input limits and messages, the verdicts, the
-precision range, the view's grid and range, and the Check a mesh page's constants: the
-hand-written JavaScript lists none of them itself.
+degeneracy tolerance, the precision range, the view's grid and range, and the Check a
+mesh page's constants: the hand-written JavaScript lists none of them itself.
 """
 
 from __future__ import annotations
@@ -31,6 +31,7 @@ def site_constants() -> dict[str, Any]:
     from trinormal.core import VERDICTS
     from trinormal.display import SCI_ABOVE_LOG10
     from trinormal.fields import fields_spec
+    from trinormal.tolerances import DEFAULT_TOL
     from trinormal.validation import MESSAGES, limits
 
     view = view_defaults()
@@ -42,6 +43,7 @@ def site_constants() -> dict[str, Any]:
         "limits": limit,
         "messages": dict(MESSAGES),
         "verdicts": dict(VERDICTS),
+        "tol": DEFAULT_TOL,
         "format": {"sci_above_log10": SCI_ABOVE_LOG10},
         "view": {"step": view["step"], "bounds": view["bounds"]},
         "mesh": mesh_page_constants(),
@@ -60,6 +62,6 @@ def constants_js() -> str:
     body = json.dumps(site_constants(), ensure_ascii=False, indent=1)
     return (
         "/* Written at build time by docs/hooks/site_constants.py from the trinormal package\n"
-        " * (trinormal.fields, .colors, .validation and .explorer): do not edit. */\n"
+        " * (trinormal.fields, .colors, .validation, .tolerances and .explorer): do not edit. */\n"
         f"window.TRINORMAL_CONSTANTS = {body};\n"
     )

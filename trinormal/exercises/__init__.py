@@ -12,14 +12,18 @@ solution; a teacher (or a student who has tried) gets it on purpose with
 Every exercise is judged by one rule set, so an answer means the same
 everywhere:
 
-* **Reading** (``trinormal.exercises.reading``): ``0.5``, ``"1/2"``,
-  ``Fraction(1, 2)``, ``Decimal("0.5")``, ``numpy.float64(0.5)``, a 0-d numpy
-  array and ``sympy.Rational(1, 2)`` are the same number; an irrational value
-  may be a sympy expression or text as the notebooks print it (``"√3/2"``,
-  ``"sqrt(3)/2"``, ``"−6"`` with the minus sign, ``"2√2"``). Vectors may be
-  tuples, lists, numpy arrays (also ``(3, 1)`` and ``(1, 3)``), row or column
-  sympy matrices or text such as ``"(0, 0, 1)"``. Any other object gets a
-  message saying what was expected, never an exception.
+* **Reading** (``trinormal.exercises.reading``): ``0.5``, ``"1/2"``, ``"0,5"``
+  (a decimal comma), ``Fraction(1, 2)``, ``Decimal("0.5")``,
+  ``numpy.float64(0.5)``, a 0-d numpy array and ``sympy.Rational(1, 2)`` are
+  the same number; an irrational value may be a sympy expression or text as
+  the notebooks print it (``"√3/2"``, ``"sqrt(3)/2"``, ``"−6"`` with the minus
+  sign, ``"2√2"``) or a prompt's formula with its numbers (``"|(2, 3, 6)|/2"``,
+  ``"53·log10(2)"``). Vectors may be tuples, lists, numpy arrays or matrices
+  (also ``(3, 1)`` and ``(1, 3)``), sympy matrices or arrays, or text such as
+  ``"(0, 0, 1)"``, ``"(0, -1, 1)/sqrt(2)"`` or ``"(0,5; 1; 0)"``. A true/false
+  answer may be a numpy boolean; a word answer may be a sentence naming it.
+  Any other object gets a message saying what was expected, never an
+  exception; the full rules are in ``trinormal.exercises.reading``.
 * **Judging** (``trinormal.exercises.judging``): exact exercises accept the
   exact value (or the float nearest to it); an exercise with a tolerance
   states it in its prompt, relative to the answer, and accepts floats within
@@ -79,6 +83,7 @@ from trinormal.exercises.judging import Verdict, judge_number, judge_vector, tol
 from trinormal.exercises.reading import (
     AnswerError,
     read_bool,
+    read_choice,
     read_number,
     read_points,
     read_vector,
@@ -90,19 +95,21 @@ __all__ = [
     "AnswerError",
     "CheckResult",
     "Exercise",
+    "UnknownExercise",
     "Verdict",
     "check",
     "exercise",
     "get",
     "names",
     "read_bool",
+    "read_choice",
     "read_number",
     "read_points",
     "read_vector",
     "read_word",
 ]
 
-Status = Literal["correct", "incorrect", "unanswered"]
+Status = Literal["correct", "incorrect", "unanswered", "unknown"]
 Checker = Callable[[Any], "bool | tuple[bool, str] | Verdict"]
 
 #: The modules ``trinormal.exercises.<name>`` that hold the notebooks' exercises.
@@ -140,8 +147,9 @@ class CheckResult:
     ----------
     name : str
         The exercise.
-    status : {"correct", "incorrect", "unanswered"}
-        The verdict. ``bool(result)`` is True only for ``"correct"``.
+    status : {"correct", "incorrect", "unanswered", "unknown"}
+        The verdict (``"unknown"``: there is no exercise of that name).
+        ``bool(result)`` is True only for ``"correct"``.
     message : str
         What to do next: a hint, never the solution.
     """
@@ -164,8 +172,18 @@ class CheckResult:
     __str__ = __repr__
 
     def _repr_html_(self) -> str:
-        colors = {"correct": "#007A5A", "incorrect": "#D55E00", "unanswered": "#0072B2"}
-        words = {"correct": "Correct", "incorrect": "Not yet", "unanswered": "Not answered"}
+        colors = {
+            "correct": "#007A5A",
+            "incorrect": "#D55E00",
+            "unanswered": "#0072B2",
+            "unknown": "#CC79A7",
+        }
+        words = {
+            "correct": "Correct",
+            "incorrect": "Not yet",
+            "unanswered": "Not answered",
+            "unknown": "No such exercise",
+        }
         return (
             f'<div class="trinormal-check trinormal-check-{self.status}" role="status" '
             f'style="border-left: 4px solid {colors[self.status]}; padding: 0.2em 0.6em;">'
@@ -221,6 +239,9 @@ class Exercise:
         [`solution`][trinormal.exercises.Exercise.solution] returns).
     degrees : bool
         The answer is an angle in degrees: text may end in a degree sign.
+    choices : tuple of str
+        For a word answer: the words that may be meant (``("front", "back")``);
+        a sentence naming exactly one of them counts as that word.
     """
 
     name: str
@@ -232,6 +253,7 @@ class Exercise:
     mistakes: tuple[tuple[Any, str], ...] = ()
     example: Any = None
     degrees: bool = False
+    choices: tuple[str, ...] = ()
 
     def solution(self) -> Any:
         """Return a right answer (computed when it is a function): for teachers and tests."""
@@ -278,7 +300,7 @@ class Exercise:
             return Verdict(value == solution, self.hint)
         if kind == "word":
             try:
-                word = read_word(answer)
+                word = read_choice(answer, self.choices) if self.choices else read_word(answer)
             except AnswerError as exc:
                 return Verdict(False, _sentence(exc))
             return Verdict(word == read_word(solution), self.hint)
@@ -321,6 +343,23 @@ def _load() -> dict[str, Exercise]:
                 found[ex.name] = ex
         _NOTEBOOKS.update(found)
     return _NOTEBOOKS
+
+
+class UnknownExercise(KeyError):
+    """No exercise has the name asked for; the message names the closest ones.
+
+    It shows as one readable line (a plain ``KeyError`` would show its message in quotes).
+    """
+
+    def __init__(self, name: Any) -> None:
+        self.name = name
+        close = difflib.get_close_matches(str(name), names(), n=3)
+        also = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+        self.message = f"no exercise named {name!r}{also} (names() lists them all)"
+        super().__init__(self.message)
+
+    def __str__(self) -> str:
+        return self.message
 
 
 @overload
@@ -415,20 +454,23 @@ def get(name: str) -> Exercise:
 
     Raises
     ------
-    KeyError
-        With the closest names, when there is no such exercise.
+    UnknownExercise
+        A ``KeyError`` naming the closest names, when there is no such exercise.
 
     Examples
     --------
     >>> get("01-normal").prompt[:28]
     'Compute N = (B − A) × (C − A'
-    """
-    found = _load().get(name) or _REGISTRY.get(name)
+    >>> get("01-nromal")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    trinormal.exercises.UnknownExercise: no exercise named '01-nromal'; did you mean '01-normal', ...? (names() lists them all)
+    """  # noqa: E501
+    found = _load().get(name) if isinstance(name, str) else None
+    found = found or (_REGISTRY.get(name) if isinstance(name, str) else None)
     if found is not None:
         return found
-    close = difflib.get_close_matches(str(name), names(), n=3)
-    also = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
-    raise KeyError(f"no exercise named {name!r}{also}")
+    raise UnknownExercise(name)
 
 
 def names() -> list[str]:
@@ -466,8 +508,17 @@ def check(name: str, answer: Any) -> CheckResult:
     99-demo-half: not yet. Your answer could not be read: expected one number, got 2 values.
     >>> check("99-demo-half", None)
     99-demo-half: not yet. Your answer could not be read: None is not a number (did a function print its result instead of returning it?).
+
+    A mistyped name gets the closest names, as one line:
+
+    >>> check("99-demo-hlaf", 0.45)  # doctest: +ELLIPSIS
+    99-demo-hlaf: no exercise named '99-demo-hlaf'; did you mean '99-demo-half'...? (names() lists them all)
     """  # noqa: E501
-    return get(name).check(answer)
+    try:
+        ex = get(name)
+    except UnknownExercise as unknown:
+        return CheckResult(str(name), "unknown", unknown.message)
+    return ex.check(answer)
 
 
 def unit(v: Sequence[Any]) -> tuple[float, ...]:

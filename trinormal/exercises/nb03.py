@@ -20,7 +20,7 @@ EXERCISES = (
         "03-row5-normal",
         "A fifth row: the raw normal N of (0,0,0), (0,2,0), (0,0,2).",
         expected=lambda: raw_normal(*ROW5),
-        hint="U = (0, 2, 0) and V = (0, 0, 2); only one component of N is nonzero.",
+        hint="Compute U = B − A and V = C − A first, then N = U × V.",
         mistakes=(
             (
                 lambda: unit(raw_normal(*ROW5)),

@@ -69,12 +69,12 @@ EXERCISES = (
             (
                 lambda: _add(raw_normal(*BIG), raw_normal(*SMALL, winding="ACB")),
                 "The small face's normal is reversed: for (0,0,0), (0,1,0), (0,0,1) take "
-                "U = (0, 1, 0) first.",
+                "U = B − A, its second point minus its first, as the first factor.",
             ),
             (
                 lambda: _add(raw_normal(*BIG, winding="ACB"), raw_normal(*SMALL)),
                 "The large face's normal is reversed: for (0,0,0), (4,0,0), (0,4,0) take "
-                "U = (4, 0, 0) first.",
+                "U = B − A, its second point minus its first, as the first factor.",
             ),
         ),
     ),

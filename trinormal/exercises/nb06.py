@@ -48,7 +48,8 @@ EXERCISES = (
         f"significand bits? (Answers {tolerance_text(DIGITS_TOL)} count.)",
         expected=_float64_digits,
         tol=DIGITS_TOL,
-        hint="Each significand bit is worth log10(2), about 0.301 decimal digits.",
+        hint="Each significand bit is worth log10(2) decimal digits: count the bits, then "
+        "multiply.",
         mistakes=(
             (_float64_bits, "That is the number of bits: multiply it by log10(2)."),
             (

@@ -44,6 +44,7 @@ EXERCISES = (
         "A ray travels in direction d = (1, 2, -2) and hits a triangle whose normal is "
         "N = (0, 1, 3). Does it hit the 'front' or the 'back'?",
         expected=_side,
+        choices=("front", "back"),
         hint="Compute N · d: negative means the ray travels against the normal and meets the "
         "front; positive means it meets the back.",
     ),

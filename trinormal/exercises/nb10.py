@@ -33,8 +33,8 @@ EXERCISES = (
         mistakes=(
             (
                 lambda: unit((2, 1, 0)),
-                "That is M n normalised: the normal moved like a point. Use M⁻ᵀ, which "
-                "divides the x component by 2 instead.",
+                "That is M n normalised: the normal moved like a point. Use M⁻ᵀ, the "
+                "inverse transpose, instead.",
             ),
             (
                 (1 / 2, 1, 0),
@@ -51,18 +51,18 @@ EXERCISES = (
         "10-det-cross",
         "For M = diag(2, 3, 4), U = (1, 0, 0), V = (0, 1, 0): what is (MU) × (MV)?",
         expected=_det_cross,
-        hint="Multiply it out: MU = (2, 0, 0) and MV = (0, 3, 0).",
+        hint="Transform U and V first (MU and MV), then take their cross product.",
         mistakes=(
             (
                 (0, 0, 24),
-                "That is det(M) · (U × V). The identity is det(M) · M⁻ᵀ (U × V): M⁻ᵀ divides "
-                "the z component by 4.",
+                "That is det(M) · (U × V). The identity is det(M) · M⁻ᵀ (U × V): apply M⁻ᵀ "
+                "too, or compute MU and MV and cross them.",
             ),
             ((0, 0, 1), "That is U × V before the transform: transform U and V first."),
             (
                 (0, 0, -6),
-                "Your vector points the opposite way: det(M) = 24 > 0, so the transform keeps "
-                "the orientation.",
+                "Your vector points the opposite way: det(M) is positive, so the transform "
+                "keeps the orientation.",
             ),
         ),
     ),

@@ -9,7 +9,6 @@ right answer counts (any of the 53 faces, any order of the faces, any starting c
 from __future__ import annotations
 
 from fractions import Fraction
-from functools import cache
 from typing import Any
 
 from trinormal.exercises import AnswerError, Exercise, read_number, read_points
@@ -21,9 +20,8 @@ TETRA_VERTICES: tuple[tuple[int, int, int], ...] = ((0, 0, 0), (1, 0, 0), (0, 1,
 TETRA_FACES: tuple[tuple[int, int, int], ...] = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 3, 2))
 
 
-@cache
 def _ball() -> tuple[int, frozenset[int]]:
-    """Return the damaged ball's face count and the faces its report says to flip."""
+    """Return the damaged ball's face count and the faces its report says to flip (read anew)."""
     from trinormal import mesh
 
     m = mesh.read_mesh(mesh.sample_path())
@@ -130,9 +128,9 @@ EXERCISES = (
         checker=_check_repair_tetra,
         example=lambda: (TETRA_FACES[0], TETRA_FACES[1], TETRA_FACES[2], (1, 2, 3)),
         hint=(
-            "Find the face whose normal points inward, and swap two of its corners. The "
-            "tetrahedron's centre is (1/4, 1/4, 1/4): at a face with centre c the way out is "
-            "c - (1/4, 1/4, 1/4). Or read mesh.check(TETRA_VERTICES, TETRA_FACES).faces_to_flip."
+            "Find the face whose normal points inward, and swap two of its corners: compare "
+            "each face's normal with the way out, from the tetrahedron's centre to the face's "
+            "centre. Or read mesh.check(TETRA_VERTICES, TETRA_FACES).faces_to_flip."
         ),
     ),
 )

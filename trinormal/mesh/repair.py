@@ -104,16 +104,7 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     first_face = np.full(nc, nf, dtype=np.intp)
     np.minimum.at(first_face, comp[idx], idx)
     ref = v[f[first_face, 0]] if nc else np.empty((0, 3))
-    r = ref[comp[idx]]
-    p, q, s = v[f[idx, 0]] - r, v[f[idx, 1]] - r, v[f[idx, 2]] - r
-    det = (
-        p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
-        + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])
-        + p[:, 2] * (q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0])
-    )
-    size = (
-        np.sqrt((p * p).sum(axis=1)) * np.sqrt((q * q).sum(axis=1)) * np.sqrt((s * s).sum(axis=1))
-    )
+    det, size = _volume_terms(v, f, idx, ref, comp)
     volume = np.bincount(comp[idx], weights=det, minlength=nc)[:nc].astype(np.float64)
     n_in = np.bincount(comp[idx], minlength=nc)[:nc]
     error = (
@@ -136,6 +127,37 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
         flip=flip,
         inconsistent_pairs=(h1[same], h2[same]),
     )
+
+
+#: Faces `_volume_terms` works on at a time: its (block, 3) coordinate arrays stay small.
+_VOLUME_BLOCK = 1 << 16
+
+
+def _volume_terms(
+    v: FloatArray, f: IntArray, idx: IntArray, ref: FloatArray, comp: IntArray
+) -> tuple[FloatArray, FloatArray]:
+    """For faces ``idx``: a · (b × c) and |a|·|b|·|c|, corners measured from their piece's ``ref``.
+
+    A block of faces at a time; each face's two numbers do not depend on the
+    blocks, and the sums over a piece are taken by the caller, over all faces at once.
+    """
+    det = np.empty(idx.size)
+    size = np.empty(idx.size)
+    for lo in range(0, idx.size, _VOLUME_BLOCK):
+        blk = idx[lo : lo + _VOLUME_BLOCK]
+        r = ref[comp[blk]]
+        p, q, s = v[f[blk, 0]] - r, v[f[blk, 1]] - r, v[f[blk, 2]] - r
+        det[lo : lo + blk.size] = (
+            p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
+            + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])
+            + p[:, 2] * (q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0])
+        )
+        size[lo : lo + blk.size] = (
+            np.sqrt((p * p).sum(axis=1))
+            * np.sqrt((q * q).sum(axis=1))
+            * np.sqrt((s * s).sum(axis=1))
+        )
+    return det, size
 
 
 def fix_winding(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
@@ -186,10 +208,15 @@ def fix_winding(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> tuple[IntArray
     v, _ = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
     w = _winding(v, _HalfEdges.of(f))
+    flipped = np.flatnonzero(w.flip).astype(np.intp)
+    return _turn_over(f, flipped), flipped
+
+
+def _turn_over(f: IntArray, flipped: IntArray) -> IntArray:
+    """Return a copy of the faces with faces ``flipped`` turned over: ``(a, c, b)``."""
     out = f.copy()
-    flipped = np.flatnonzero(w.flip)
     out[flipped, 1], out[flipped, 2] = f[flipped, 2], f[flipped, 1]
-    return out, flipped.astype(np.intp)
+    return out
 
 
 def signed_volume(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> float:

@@ -422,6 +422,7 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
     deg = degenerate_faces(v, f, t)
     a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
     coincident = (a == b).all(axis=1) | (b == c).all(axis=1) | (c == a).all(axis=1)
+    del a, b, c  # three (F, 3) arrays: not kept through the rest of the check
     deg |= coincident
     collinear = deg & ~coincident
 

@@ -37,6 +37,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -63,9 +64,11 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
     then every node, which pointed at a root, takes that root's root; edges
     inside one piece are dropped. A handful of rounds on a mesh.
     """
-    parent = np.arange(n, dtype=np.intp)
-    a = np.asarray(a, dtype=np.intp)
-    b = np.asarray(b, dtype=np.intp)
+    # node numbers in 4 bytes when they fit: half the memory, the same labels
+    node = np.int32 if n < 2**31 else np.intp
+    parent = np.arange(n, dtype=node)
+    a = np.asarray(a).astype(node, copy=False)
+    b = np.asarray(b).astype(node, copy=False)
     ra, rb = a, b  # the roots of each edge's ends: at first every node is its own
     hooked_mask = np.zeros(n, dtype=bool)
     while a.size:
@@ -101,7 +104,8 @@ def _distinct_corners(f: IntArray) -> BoolArray:
 
 def _next_corner(h: IntArray) -> IntArray:
     """Return the next corner of the same face: half-edge ``h`` arrives at its vertex."""
-    out: IntArray = h - h % 3 + (h % 3 + 1) % 3
+    out: IntArray = h + 1
+    out[h % 3 == 2] -= 3
     return out
 
 
@@ -135,16 +139,28 @@ class _HalfEdges:
         a = f.ravel()[h]
         b = f[:, [1, 2, 0]].ravel()[h]
         lo, hi = np.minimum(a, b), np.maximum(a, b)
+        del a, b
         nv = int(hi.max()) + 1 if hi.size else 0
+        new = np.ones(h.size, dtype=bool)
         # one packed key per edge, unless it would overflow: then sort on both columns
-        order = np.argsort(lo * nv + hi) if nv < 2**31 else np.lexsort((hi, lo))
-        lo_s, hi_s = lo[order], hi[order]
-        new = np.ones(order.size, dtype=bool)
-        if order.size:
-            new[1:] = (lo_s[1:] != lo_s[:-1]) | (hi_s[1:] != hi_s[:-1])
-        starts = np.flatnonzero(new)
-        counts = np.diff(np.append(starts, order.size))
-        return cls(f, clean, h[order].astype(np.intp), starts, counts)
+        if nv < 2**31:
+            key = lo * nv + hi
+            del lo, hi
+            order = np.argsort(key)
+            key = key[order]
+            if order.size:
+                np.not_equal(key[1:], key[:-1], out=new[1:])
+            del key
+        else:
+            order = np.lexsort((hi, lo))
+            lo_s, hi_s = lo[order], hi[order]
+            if order.size:
+                new[1:] = (lo_s[1:] != lo_s[:-1]) | (hi_s[1:] != hi_s[:-1])
+        # half-edge numbers in 4 bytes when they fit: every array of them is half the size
+        half: Any = np.int32 if f.size < 2**31 else np.intp
+        starts = np.flatnonzero(new).astype(half)
+        counts = np.diff(np.append(starts, order.size)).astype(half)
+        return cls(f, clean, h[order].astype(half), starts, counts)
 
     def start(self, h: IntArray) -> IntArray:
         """Return the vertex each half-edge leaves from."""
@@ -273,13 +289,20 @@ def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
     """Every vertex used by a face with three distinct vertices, and its number of fans."""
     h1, h2 = he.shared_pairs
     a, b = he.start(h1), he.end(h1)
+    kept = np.repeat(he.clean, 3)
+    n_kept = int(np.count_nonzero(kept))
+    # numbered among the corners kept: as they are when no face uses a vertex twice
+    every = n_kept == he.faces.size
+    index = None if every else _renumber(np.flatnonzero(kept), he.faces.size)
     # the two faces meet at both ends of the edge: join their corners there
-    c1 = np.concatenate([he.corner_at(h1, a), he.corner_at(h1, b)])
-    c2 = np.concatenate([he.corner_at(h2, a), he.corner_at(h2, b)])
-    corners = np.flatnonzero(np.repeat(he.clean, 3))
-    index = _renumber(corners, he.faces.size)
-    fan = _components(corners.size, index[c1], index[c2])
-    vertex = he.faces.ravel()[corners]
+    ends = []
+    for h in (h1, h2):
+        c = np.concatenate([he.corner_at(h, a), he.corner_at(h, b)])
+        ends.append(c if index is None else index[c])
+    del a, b, index
+    fan = _components(n_kept, ends[0], ends[1])
+    del ends
+    vertex = he.faces.ravel() if every else he.faces.ravel()[kept]
     # a fan lies around one vertex: count the fans of each vertex
     fan_vertex = np.empty(int(fan.max()) + 1 if fan.size else 0, dtype=np.intp)
     fan_vertex[fan] = vertex

@@ -97,7 +97,10 @@ def precision_error_figure(
         triangle and the angle between its computed and exact unit normals.
         Zero errors are drawn at the bottom of the axis.
     tol : float, optional
-        Draw the degeneracy threshold as a vertical line.
+        Draw a dashed vertical line at sine = ``tol``. The degeneracy rule is on
+        |N| / L² (L the longest side), which is the sine at A times two side
+        ratios of at most 1: for needles whose longest side starts at A the line
+        marks the threshold within those ratios.
     title : str
         The figure title.
 

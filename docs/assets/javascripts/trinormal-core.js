@@ -7,8 +7,9 @@
  * rounded half away from zero from exact integer arithmetic. No floating point is
  * involved in any displayed digit, so the strings match Python byte for byte.
  *
- * The input limits and every message wording are not written here: they come from
- * trinormal/validation.py (MESSAGES and limits()) through the constants the site build
+ * The input limits, every message wording and the degeneracy tolerance are not written
+ * here: they come from trinormal/validation.py (MESSAGES and limits()) and
+ * trinormal/tolerances.py (DEFAULT_TOL) through the constants the site build
  * writes, assets/javascripts/trinormal-constants.js, which must load before this file.
  *
  * Plain JavaScript, no dependencies. In the browser it reads window.TRINORMAL_CONSTANTS
@@ -25,7 +26,13 @@
 })(typeof self !== "undefined" ? self : this, function (constants) {
   "use strict";
 
-  if (!constants || !constants.limits || !constants.messages || !constants.verdicts) {
+  if (
+    !constants ||
+    !constants.limits ||
+    !constants.messages ||
+    !constants.verdicts ||
+    typeof constants.tol !== "number"
+  ) {
     throw new Error(
       "trinormal-core.js needs TRINORMAL_CONSTANTS (assets/javascripts/trinormal-constants.js, " +
         "written by the site build) to be loaded first"
@@ -122,7 +129,8 @@
     return [sign * mant, 1n << BigInt(-e)];
   }
 
-  var TOL = doubleRatio(1e-12);
+  // trinormal.tolerances.DEFAULT_TOL, as the build wrote it: degenerate when |N| <= TOL * L^2
+  var TOL = doubleRatio(constants.tol);
 
   // ------------------------------------------------------------------ parsing
 

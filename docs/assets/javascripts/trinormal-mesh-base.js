@@ -13,24 +13,24 @@
  * load first. tests/test_mesh_parity.py runs these scripts in Node on a corpus of files and
  * requires Python's report, sentences, repaired bytes and error messages, file by file.
  *
- * Plain JavaScript, no dependencies. Each part runs in a page, in a Web Worker (mesh-worker.js)
- * and in Node. In a page or worker, this part sets self.TrinormalMesh and each later part
- * replaces it with a copy that has its functions too; in Node, module.exports is the part's
- * factory: this one takes the constants, the later ones what the parts before them made.
- * Functions the later parts share, but the page does not use, are under `internal`.
+ * Plain JavaScript, no dependencies. Each part runs as a plain script in one shared scope,
+ * `self`: in a page (script tags), in the Web Worker (mesh-worker.js's importScripts) and in
+ * Node (tests/mesh_parity_check.js runs each file in turn, all given one object as `self`).
+ * This part sets self.TrinormalMesh; each later part is one call, TrinormalMesh.part(name,
+ * after, factory), which checks that part `after` is loaded and replaces self.TrinormalMesh
+ * with a copy that has what the factory returns too. Functions the later parts share, but the
+ * page does not use, are under `internal`.
  */
-(function (root, factory) {
-  "use strict";
-  if (typeof module === "object" && module.exports) module.exports = factory;
-  else root.TrinormalMesh = factory(root.TRINORMAL_CONSTANTS);
-})(typeof self !== "undefined" ? self : this, function (constants) {
+self.TrinormalMesh = (function (root, constants) {
   "use strict";
 
+  /** The sentence for a script loaded before what it needs. */
+  function loadOrder(script, needed) {
+    return script + " needs " + needed + " to be loaded first";
+  }
+
   if (!constants || !constants.mesh) {
-    throw new Error(
-      "trinormal-mesh-base.js needs TRINORMAL_CONSTANTS.mesh (assets/javascripts/trinormal-constants.js, " +
-        "written by the site build) to be loaded first"
-    );
+    throw new Error(loadOrder("trinormal-mesh-base.js", "TRINORMAL_CONSTANTS.mesh (assets/javascripts/trinormal-constants.js, written by the site build)"));
   }
   var MESH = constants.mesh;
   var MESSAGES = MESH.messages;
@@ -268,6 +268,18 @@
     }
   }
 
+  /**
+   * Add the part trinormal-mesh-`name`.js, loaded after trinormal-mesh-`after`.js: `factory`
+   * takes TrinormalMesh as the parts before made it and returns what this part adds.
+   */
+  function part(name, after, factory) {
+    var mesh = root.TrinormalMesh;
+    if (mesh.parts.indexOf(after) < 0) {
+      throw new Error(loadOrder("trinormal-mesh-" + name + ".js", "trinormal-mesh-" + after + ".js"));
+    }
+    root.TrinormalMesh = Object.assign({}, mesh, factory(mesh), { parts: mesh.parts.concat(name) });
+  }
+
   return {
     MeshError: MeshError,
     LIMITS: LIMITS,
@@ -294,5 +306,7 @@
       latin1: latin1,
       text: text,
     },
+    parts: ["base"],
+    part: part,
   };
-});
+})(self, self.TRINORMAL_CONSTANTS);

@@ -4,18 +4,9 @@
  * (trinormal/mesh/report.py, topology.py, repair.py, normals.py), and its sentences.
  * Loaded after trinormal-mesh-read.js; see trinormal-mesh-base.js for how the parts fit.
  */
-(function (root, factory) {
+self.TrinormalMesh.part("check", "read", function (base) {
   "use strict";
-  if (typeof module === "object" && module.exports) module.exports = factory;
-  else root.TrinormalMesh = factory(root.TrinormalMesh);
-})(typeof self !== "undefined" ? self : this, function (base) {
-  "use strict";
-
-  if (!base || !base.read) throw new Error("trinormal-mesh-check.js needs trinormal-mesh-read.js to be loaded first");
-  var I = base.internal;
-  var MESH = I.MESH;
-  var TOL = MESH.tol;
-  var Growable = I.Growable;
+  var I = base.internal, MESH = I.MESH, TOL = MESH.tol, Growable = I.Growable;
 
   // ------------------------------------------------------------------ each face: normal and degeneracy
   //
@@ -778,12 +769,12 @@
     return out;
   }
 
-  return Object.assign({}, base, {
+  return {
     check: check,
     toDict: toDict,
     summary: summary,
     counted: counted,
     degenerateFaces: degenerateFaces,
     internal: Object.assign({}, I, { faceNormals: faceNormals }),
-  });
+  };
 });

@@ -3,14 +3,8 @@
  * trinormal/mesh/io.py reads (the same vertices and faces in the same order, the same error
  * for the same bad file). Loaded after trinormal-mesh-base.js; see there how the parts fit.
  */
-(function (root, factory) {
+self.TrinormalMesh.part("read", "base", function (base) {
   "use strict";
-  if (typeof module === "object" && module.exports) module.exports = factory;
-  else root.TrinormalMesh = factory(root.TrinormalMesh);
-})(typeof self !== "undefined" ? self : this, function (base) {
-  "use strict";
-
-  if (!base || !base.internal) throw new Error("trinormal-mesh-read.js needs trinormal-mesh-base.js to be loaded first");
   var I = base.internal;
   var MeshError = base.MeshError;
   var message = base.message;
@@ -547,5 +541,5 @@
     return mesh;
   }
 
-  return Object.assign({}, base, { FORMATS: FORMATS, read: read });
+  return { FORMATS: FORMATS, read: read };
 });

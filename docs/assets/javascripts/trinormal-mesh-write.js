@@ -4,14 +4,8 @@
  * (byte for byte). Loaded after trinormal-mesh-check.js; see trinormal-mesh-base.js for how
  * the parts fit.
  */
-(function (root, factory) {
+self.TrinormalMesh.part("write", "check", function (base) {
   "use strict";
-  if (typeof module === "object" && module.exports) module.exports = factory;
-  else root.TrinormalMesh = factory(root.TrinormalMesh);
-})(typeof self !== "undefined" ? self : this, function (base) {
-  "use strict";
-
-  if (!base || !base.check) throw new Error("trinormal-mesh-write.js needs trinormal-mesh-check.js to be loaded first");
 
   /** The faces with the report's faces_to_flip turned over: (a, b, c) becomes (a, c, b). */
   function fixWinding(faces, report) {
@@ -142,5 +136,5 @@
     return mesh.binary ? writeStlBinary(V, faces, normals) : writeStlAscii(V, faces, normals);
   }
 
-  return Object.assign({}, base, { fixWinding: fixWinding, write: write, repr: repr });
+  return { fixWinding: fixWinding, write: write, repr: repr };
 });

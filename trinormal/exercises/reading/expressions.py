@@ -59,7 +59,14 @@ def _expression(answer: Any, symbols: dict[str, Any], what: str, depth: int) -> 
     import sympy as sp
 
     if isinstance(answer, str):
-        return sympify_text(answer, symbols, what=what)
+        value = sympify_text(answer, symbols, what=what)
+        if isinstance(value, sp.Tuple):  # "(a, b, c)" typed: a vector, or a list of values
+            if len(value) == 3:
+                raise VectorGiven(list(value))
+            raise AnswerError(f"{describe(answer)} is {len(value)} values, not {what}")
+        if not isinstance(value, sp.Expr):  # True, x > 1, a set: not an expression
+            raise AnswerError(f"{describe(answer)} is not {what}")
+        return value
     if isinstance(answer, sp.Basic) and not getattr(answer, "is_Matrix", False):
         if isinstance(answer, sp.Expr):
             return answer

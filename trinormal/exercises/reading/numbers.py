@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from fractions import Fraction
 from typing import Any
 
@@ -10,7 +11,15 @@ from trinormal.exercises.reading.errors import TOO_DEEP, AnswerError, describe, 
 from trinormal.exercises.reading.text import plain_text, sympify_text
 from trinormal.validation import check_coordinate
 
-__all__ = ["DEGREE_SIGNS", "Number", "is_exact", "looks_like_number", "module_of", "read_number"]
+__all__ = [
+    "DEGREE_SIGNS",
+    "Number",
+    "decimal_point",
+    "is_exact",
+    "looks_like_number",
+    "module_of",
+    "read_number",
+]
 
 #: A number read from an answer: a ``Fraction`` when exact, a ``float`` otherwise.
 Number = Fraction | float
@@ -147,6 +156,7 @@ def _numpy_number(x: Any, degrees: bool, depth: int) -> Number:
     import numpy as np
 
     if isinstance(x, np.ndarray):
+        x = np.asarray(x)  # a numpy.matrix too
         if x.size == 1:
             return _number(
                 x.reshape(()).item() if x.dtype != object else x.flat[0], degrees, depth + 1
@@ -176,6 +186,11 @@ def _numpy_number(x: Any, degrees: bool, depth: int) -> Number:
 
 
 def _sympy_number(x: Any, degrees: bool, depth: int) -> Number:
+    if _is_sympy_array(x):
+        items = list(_flat(x.tolist()))
+        if len(items) == 1:
+            return _number(items[0], degrees, depth + 1)
+        raise AnswerError(f"expected one number, got an array of shape {tuple(x.shape)}")
     if getattr(x, "is_Matrix", False):
         if x.shape[0] * x.shape[1] == 1:
             return _number(x[0], degrees, depth + 1)
@@ -188,6 +203,22 @@ def _sympy_number(x: Any, degrees: bool, depth: int) -> Number:
         return _finite_float(float(x)) if x.is_finite else _finite_float(float("nan"))
     _refuse_symbols(x, x, "still has")
     return _sympy_value(x)
+
+
+def _is_sympy_array(x: Any) -> bool:
+    """Tell whether ``x`` is a sympy ``Array`` (an N-dimensional array, not a ``Matrix``)."""
+    import sympy as sp
+
+    return isinstance(x, sp.NDimArray)
+
+
+def _flat(items: Any) -> Any:
+    """Yield the leaves of nested lists (a sympy Array's ``tolist()``)."""
+    if isinstance(items, list):
+        for item in items:
+            yield from _flat(item)
+    else:
+        yield items
 
 
 def _refuse_symbols(value: Any, given: Any, has: str) -> None:
@@ -225,6 +256,40 @@ def _sympy_value(x: Any) -> Number:
     return _finite_float(float(re_part))
 
 
+#: One number written with a decimal comma: ``0,5``, ``−12,75``.
+DECIMAL_COMMA = re.compile(r"[+\-−]?\d+,\d+")
+#: ... unless it reads as well with a thousands separator: ``1,500``, ``-12,750``.
+THOUSANDS = re.compile(r"[+\-−]?[1-9]\d{0,2},\d{3}")
+
+
+def decimal_point(text: str) -> str:
+    """Write one number typed with a decimal comma (``"0,5"``) with a point; other text as is.
+
+    A comma is a decimal comma only in text that is one number with one comma
+    and digits on both sides. ``"1,500"`` (one to three digits, not starting
+    with 0, then three) could be 1.5 or 1500: it is refused, with a message.
+
+    Examples
+    --------
+    >>> decimal_point("0,5"), decimal_point("−12,75"), decimal_point("1, 2")
+    ('0.5', '−12.75', '1, 2')
+    >>> decimal_point("1,500")
+    Traceback (most recent call last):
+    ...
+    trinormal.exercises.reading.errors.AnswerError: '1,500' could be a decimal comma or a thousands separator: write it with a point (1.5) or without the comma (1500)
+    """  # noqa: E501
+    s = text.strip()
+    if not DECIMAL_COMMA.fullmatch(s):
+        return text
+    if THOUSANDS.fullmatch(s):
+        whole, _, part = s.partition(",")
+        raise AnswerError(
+            f"{describe(s)} could be a decimal comma or a thousands separator: write it with a "
+            f"point ({whole}.{part.rstrip('0') or '0'}) or without the comma ({whole}{part})"
+        )
+    return s.replace(",", ".")
+
+
 def _text_number(text: str, degrees: bool) -> Number:
     s = text.strip()
     for sign in DEGREE_SIGNS:
@@ -236,7 +301,7 @@ def _text_number(text: str, degrees: bool) -> Number:
                 )
             s = head
             break
-    s = plain_text(s).strip()
+    s = decimal_point(plain_text(s).strip())
     if not s:
         raise AnswerError("empty text is not a number")
     try:  # decimals and fractions, exactly, with the package's own reader and limits

@@ -10,8 +10,14 @@ from fractions import Fraction
 from typing import Any
 
 from trinormal.exercises.reading.errors import AnswerError, check_count, describe, guarded
-from trinormal.exercises.reading.numbers import Number, looks_like_number, module_of, read_number
-from trinormal.exercises.reading.text import plain_text
+from trinormal.exercises.reading.numbers import (
+    DECIMAL_COMMA,
+    Number,
+    looks_like_number,
+    module_of,
+    read_number,
+)
+from trinormal.exercises.reading.text import closing, plain_text, split_top
 
 __all__ = ["FACES", "POINTS", "Items", "read_points", "read_vector"]
 
@@ -39,6 +45,7 @@ def _items(x: Any, size: int, what: str) -> list[Any]:
         import numpy as np
 
         if isinstance(x, np.ndarray):
+            x = np.asarray(x)  # a numpy.matrix too: a plain array of its shape
             if x.ndim == 0:
                 raise AnswerError(f"expected {what}, got one number")
             if x.ndim == 2 and 1 in x.shape:
@@ -53,6 +60,11 @@ def _items(x: Any, size: int, what: str) -> list[Any]:
             if rows == 1 or cols == 1:
                 return list(x)
             raise AnswerError(f"expected {what}, got a {rows} × {cols} matrix")
+        shape = tuple(getattr(x, "shape", ()) or ())
+        if hasattr(x, "tolist") and (len(shape) == 1 or (len(shape) == 2 and 1 in shape)):
+            return list(_flat(x.tolist()))  # a sympy Array of shape (3,), (3, 1) or (1, 3)
+        if shape:
+            raise AnswerError(f"expected {what}, got an array of shape {shape}")
         raise AnswerError(f"expected {what}, got one value")
     if isinstance(x, int | float | complex | Fraction) or looks_like_number(x):
         raise AnswerError(f"expected {what}, got one number")
@@ -63,18 +75,90 @@ def _items(x: Any, size: int, what: str) -> list[Any]:
 
 
 _BRACKETS = "()[]{}⟨⟩"
+_OPEN, _CLOSE = "([{⟨", ")]}⟩"
+#: One number in a vector written with spaces between its components: ``0,5``, ``-2``, ``1/3``.
+_SPACED_NUMBER = re.compile(r"[+\-−]?\d+(?:[.,]\d+)?(?:/\d+)?")
+#: What may join a factor to a vector: ``2*(1, 0, 0)``, ``(1, 0, 0)/√2``.
+_TIMES = "*·×"
+
+
+def _flat(items: Any) -> Any:
+    """Yield the leaves of nested lists (a sympy Array's ``tolist()``)."""
+    if isinstance(items, list):
+        for item in items:
+            yield from _flat(item)
+    else:
+        yield items
 
 
 def _text_items(text: str) -> list[str]:
+    """Return the components of a vector typed as text, each as text for `read_number`."""
     s = plain_text(text).strip()
-    while len(s) >= 2 and s[0] in "([{⟨" and s[-1] in ")]}⟩":
+    scaled = _scaled(s)
+    if scaled is not None:
+        return scaled
+    while len(s) >= 2 and s[0] in _OPEN and closing(s, 0) == len(s) - 1:
         s = s[1:-1].strip()
-    if not s:
+    return _components(s)
+
+
+def _components(body: str) -> list[str]:
+    """Split the inside of a vector's brackets into its components.
+
+    A comma separates components, unless ``;`` does (then a comma is a decimal
+    comma: ``0,5; 1; 0``) or spaces do between numbers with decimal commas
+    (``0,5 1 0``).
+    """
+    if not body:
         return []
-    if any(b in s for b in _BRACKETS) and "," not in s:
-        return [s]
-    parts = [p.strip() for p in s.split(",")] if "," in s else s.split()
-    return parts
+    if len(split_top(body, ";")) > 1:
+        return [_point(p) for p in split_top(body, ";")]
+    parts = split_top(body, ",")
+    if len(parts) > 1:
+        tokens = body.split()
+        spaced = len(tokens) > 1 and any(" " in p for p in parts)
+        if spaced and all(_SPACED_NUMBER.fullmatch(t) for t in tokens):
+            return [_point(t) for t in tokens]
+        return parts
+    if any(b in body for b in _BRACKETS):
+        return [body]
+    return body.split()
+
+
+def _point(part: str) -> str:
+    """Write a component typed with a decimal comma (``0,5``) with a point."""
+    return part.replace(",", ".") if DECIMAL_COMMA.fullmatch(part.strip()) else part
+
+
+def _scaled(s: str) -> list[str] | None:
+    """Read ``2*(1, 0, 0)`` or ``(0, -1, 1)/sqrt(2)``: each component with the factor.
+
+    Returns None unless the text is a bracketed vector with a factor before or after it.
+    """
+    i = 0
+    while i < len(s):
+        end = closing(s, i) if s[i] in "([" else -1
+        if end < 0:
+            i += 1
+            continue
+        function = re.search(r"[A-Za-z_][A-Za-z_0-9]*\s*$", s[:i])
+        parts = _components(s[i + 1 : end].strip())
+        if function is None and len(parts) > 1:
+            return _times(s[:i].strip(), parts, s[end + 1 :].strip())
+        i = end + 1  # a function's arguments, or one value in brackets: look further on
+    return None
+
+
+def _times(before: str, parts: list[str], after: str) -> list[str] | None:
+    """Write each component with the factor before (``2*``) and after (``/√2``) the vector."""
+    if not before and not after:
+        return None
+    if after and after[0] not in "/" + _TIMES:
+        return None
+    factor = before.rstrip(_TIMES + " ")
+    if factor and before[-1:] not in _TIMES and not (factor[-1:].isdigit() or factor[-1:] == ")"):
+        return None
+    return [f"{factor}*({p}){after}" if factor else f"({p}){after}" for p in parts]
 
 
 def read_vector(x: Any, size: int = 3, *, degrees: bool = False) -> list[Number]:

@@ -264,7 +264,7 @@ def write_mesh(
         raise MeshFileError.of(name, "cannot_write", reason=exc.strerror or exc) from None
 
 
-def _encode(v: FloatArray, f: IntArray, fmt: str, enc: str) -> bytes:
+def _encode(v: FloatArray, f: IntArray, fmt: str, enc: str) -> bytes | bytearray:
     if fmt == "obj":
         return _encode_obj(v, f)
     if fmt == "stl":

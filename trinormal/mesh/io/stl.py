@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import struct
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_NOTES, MeshFileError, _number, _show, _text
@@ -35,11 +37,13 @@ def _read_stl(data: bytes, name: str) -> MeshData:
             n, notes = _records_in(data, n, name)
         if len(data) == 84 + 50 * n or notes:  # binary, even when its header starts with "solid"
             rec = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)
-            corners = rec["corners"].reshape(-1, 3)  # float32, as stored: merged before widening
-            if not np.isfinite(corners).all():
-                bad = int(np.flatnonzero(~np.isfinite(corners).all(axis=1))[0]) // 3
+            finite = np.isfinite(rec["corners"]).all(axis=(1, 2))
+            if not finite.all():
+                bad = int(np.flatnonzero(~finite)[0])
                 raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
-            return replace(_merge_corners(corners, name, "binary"), notes=notes)
+            # float32, as stored: merged before widening
+            merged = _merge_corners(rec["corners"].reshape(-1, 3), name, "binary")
+            return replace(merged, notes=notes)
     if not _looks_like_text(data):
         raise MeshFileError.of(name, "stl_short")
     return _read_stl_ascii(data, name)
@@ -129,28 +133,29 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
     if n == 0:
         empty = np.empty((0, 3), np.intp)
         return MeshData(np.empty((0, 3)), empty, "stl", encoding, np.empty(0, np.intp), 0, name)
-    bits = corners.view(np.uint32 if corners.dtype == np.float32 else np.uint64)
-    x, y, z = (bits[:, k].astype(np.uint64) for k in range(3))
+    # the bit patterns as stored (4 bytes a number in a binary STL), widened only in the key
+    bits: npt.NDArray[np.unsignedinteger[Any]] = corners.view(
+        np.uint32 if corners.dtype == np.float32 else np.uint64
+    )
     # sort by a mix of the three bit patterns; equal rows get equal keys, and the rows
     # themselves are compared after the sort, so equality is exact, never a hash match
     mx, my, mz = (np.uint64(m) for m in _MIX)
     with np.errstate(over="ignore"):
-        key = x * mx
-        key ^= y * my
-        key ^= z * mz
-    order = np.argsort(key, kind="stable")
-    sx, sy, sz = x[order], y[order], z[order]
-    same_row = (sx[1:] == sx[:-1]) & (sy[1:] == sy[:-1]) & (sz[1:] == sz[:-1])
-    sk = key[order]
-    if ((sk[1:] == sk[:-1]) & ~same_row).any():  # two different points share a key: sort rows
-        order = np.lexsort((z, y, x))
-        sx, sy, sz = x[order], y[order], z[order]
-        same_row = (sx[1:] == sx[:-1]) & (sy[1:] == sy[:-1]) & (sz[1:] == sz[:-1])
+        key = bits[:, 0] * mx
+        key ^= bits[:, 1] * my
+        key ^= bits[:, 2] * mz
+    order = np.argsort(key)
+    key = key[order]
+    same_row = _same_as_previous(np.take(bits, order, axis=0))
+    if ((key[1:] == key[:-1]) & ~same_row).any():  # two different points share a key: sort rows
+        order = np.lexsort((bits[:, 2], bits[:, 1], bits[:, 0]))
+        same_row = _same_as_previous(np.take(bits, order, axis=0))
+    del key
     new = np.empty(n, dtype=bool)
     new[0] = True
     np.logical_not(same_row, out=new[1:])
     group = np.cumsum(new) - 1  # group of each sorted corner
-    first = order[new]  # both sorts are stable: the first corner of each group in file order
+    first = np.minimum.reduceat(order, np.flatnonzero(new))  # each group's first in file order
     rank = np.empty(first.size, dtype=np.intp)
     rank[np.argsort(first)] = np.arange(first.size)
     index = np.empty(n, dtype=np.intp)
@@ -162,16 +167,32 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
     return MeshData(vertices, faces, "stl", encoding, np.arange(nf, dtype=np.intp), nf, name)
 
 
-def _encode_stl(v: FloatArray, f: IntArray, enc: str) -> bytes:
-    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face)."""
+def _same_as_previous(rows: npt.NDArray[np.unsignedinteger[Any]]) -> npt.NDArray[np.bool_]:
+    """Whether each row of a (n, 3) array equals the row before it, for rows 1 to n - 1."""
+    same: npt.NDArray[np.bool_] = rows[1:, 0] == rows[:-1, 0]
+    same &= rows[1:, 1] == rows[:-1, 1]
+    same &= rows[1:, 2] == rows[:-1, 2]
+    return same
+
+
+def _encode_stl(v: FloatArray, f: IntArray, enc: str) -> bytes | bytearray:
+    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face).
+
+    A binary file is filled in place: its records are a numpy view of the
+    zeroed bytes, written a corner at a time.
+    """
     normals = face_normals(v, f) if f.shape[0] else np.empty((0, 3))
     if enc == "binary":
-        rec = np.zeros(f.shape[0], dtype=_STL_RECORD)
+        nf = f.shape[0]
+        buf = bytearray(84 + _STL_RECORD.itemsize * nf)
+        buf[:84] = b"binary STL written by trinormal".ljust(80, b" ") + struct.pack("<I", nf)
+        rec = np.frombuffer(buf, dtype=_STL_RECORD, count=nf, offset=84)
         with np.errstate(over="ignore"):
             rec["normal"] = normals
-            rec["corners"] = v[f]
-        header = b"binary STL written by trinormal".ljust(80, b" ")
-        return header + struct.pack("<I", f.shape[0]) + rec.tobytes()
+            del normals
+            for k in range(3):
+                rec["corners"][:, k] = v[f[:, k]]
+        return buf
     out = ["solid trinormal"]
     for n, tri in zip(normals.tolist(), v[f].tolist(), strict=True):
         out.append(f"facet normal {n[0]!r} {n[1]!r} {n[2]!r}")
