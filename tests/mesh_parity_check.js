@@ -34,7 +34,7 @@ function loadMesh(constants) {
   meshParts().forEach(function (part) {
     var file = path.join(JS_DIR, part);
     var source = fs.readFileSync(file, "utf8") + "\n//# sourceURL=" + file;
-    new Function("self", source)(scope);
+    new Function("self", "module", source)(scope, undefined); // no CommonJS `module`, as in a worker
   });
   return scope.TrinormalMesh;
 }

@@ -395,7 +395,7 @@ ACCEPTED: dict[str, list[Any]] = {
     ],
     # (d) numpy truth values
     "03-collinear": [np.bool_(True), np.array(True), np.array([True]), "True."],
-    "07-needle-degenerate": [np.bool_(False), np.array(False), np.array([[False]])],
+    "07-needle-degenerate": [np.bool_(True), np.array(True), np.array([[True]])],
     # (f) the word inside a sentence
     "09-front-face": [
         "the front side",
@@ -412,7 +412,7 @@ REFUSED: dict[str, list[Any]] = {
     "01-normal": ["(1; 1; -1)", "(2, 2, 2)/4", sp.Array([1, 1, 0]), _matrix([[1, 1, 2]])],
     "10-scaled-normal": ["(0, -1, 1)/sqrt(2)", "[2,1,0]/√5", "(0,8944; 0,4472; 0)"],
     "03-collinear": [np.bool_(False), np.array(False)],
-    "07-needle-degenerate": [np.array(True)],
+    "07-needle-degenerate": [np.array(False)],
     "09-front-face": ["the back side", "It is the back."],
 }
 

@@ -134,24 +134,10 @@ def floating(
                 "points; use arithmetic='exact'"
             )
         plane = Plane(unit, d)
-    return _result(
-        (A[0], A[1], A[2]),
-        (B[0], B[1], B[2]),
-        (C[0], C[1], C[2]),
-        w,
-        u,
-        v,
-        n,
-        magnitude,
-        area,
-        unit,
-        degenerate,
-        plane,
-        reason,
-        fmt,
-        tn / td,
-        _exact(*check_common(coords), w, tn, td, tn / td)._integers,
-    )
+    exact = _exact(*check_common(coords), w, tn, td, tn / td)._integers
+    corners = ((A[0], A[1], A[2]), (B[0], B[1], B[2]), (C[0], C[1], C[2]))
+    fields = (w, u, v, n, magnitude, area, unit, degenerate, plane, reason)
+    return _result(*corners, *fields, fmt, tn / td, exact)
 
 
 def _ldexp(x: float, e: int) -> float:

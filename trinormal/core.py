@@ -704,24 +704,8 @@ def _exact(
         unit = ((nx << k) / r, (ny << k) / r, (nz << k) / r)  # |unit| <= 1: no overflow
         offset = _div((nx * ax + ny * ay + nz * az) << k, r * D)
         plane = _new_tuple(Plane, (unit, offset))
-    return _result(
-        points[0],
-        points[1],
-        points[2],
-        w,
-        u,
-        v,
-        normal,
-        magnitude,
-        area,
-        unit,
-        degenerate,
-        plane,
-        reason,
-        "exact",
-        tol,
-        s,
-    )
+    fields = (w, u, v, normal, magnitude, area, unit, degenerate, plane, reason)
+    return _result(points[0], points[1], points[2], *fields, "exact", tol, s)
 
 
 def _result(

@@ -12,6 +12,7 @@
 self.window = self; // trinormal-constants.js sets window.TRINORMAL_CONSTANTS
 importScripts(
   "trinormal-constants.js",
+  "trinormal-core.js",
   "trinormal-mesh-base.js",
   "trinormal-mesh-read.js",
   "trinormal-mesh-check.js",

@@ -7,6 +7,11 @@
 self.TrinormalMesh.part("check", "read", function (base) {
   "use strict";
   var I = base.internal, MESH = I.MESH, TOL = MESH.tol, Growable = I.Growable;
+  // The exact core's integer square root (Python's math.isqrt), so the two ports share one.
+  if (!self.TrinormalCore) {
+    throw new Error("trinormal-mesh-check.js needs trinormal-core.js to be loaded first");
+  }
+  var isqrt = self.TrinormalCore.isqrt;
 
   // ------------------------------------------------------------------ each face: normal and degeneracy
   //
@@ -108,16 +113,6 @@ self.TrinormalMesh.part("check", "read", function (base) {
     return [x < 0 ? -m : m, e];
   }
 
-  /** The largest integer r with r * r <= n (Python's math.isqrt). */
-  function isqrt(n) {
-    if (n < 2n) return n;
-    var x = 1n << BigInt(Math.ceil(bitLength(n) / 2));
-    for (;;) {
-      var y = (x + n / x) >> 1n;
-      if (y >= x) return x;
-      x = y;
-    }
-  }
 
   /** a / b correctly rounded to a double (b > 0), as Python's int / int. */
   function divide(a, b) {

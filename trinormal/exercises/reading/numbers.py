@@ -187,7 +187,7 @@ def _numpy_number(x: Any, degrees: bool, depth: int) -> Number:
 
 def _sympy_number(x: Any, degrees: bool, depth: int) -> Number:
     if _is_sympy_array(x):
-        items = list(_flat(x.tolist()))
+        items = list(leaves(x.tolist()))
         if len(items) == 1:
             return _number(items[0], degrees, depth + 1)
         raise AnswerError(f"expected one number, got an array of shape {tuple(x.shape)}")
@@ -212,11 +212,11 @@ def _is_sympy_array(x: Any) -> bool:
     return isinstance(x, sp.NDimArray)
 
 
-def _flat(items: Any) -> Any:
+def leaves(items: Any) -> Any:
     """Yield the leaves of nested lists (a sympy Array's ``tolist()``)."""
     if isinstance(items, list):
         for item in items:
-            yield from _flat(item)
+            yield from leaves(item)
     else:
         yield items
 

@@ -13,6 +13,7 @@ from trinormal.exercises.reading.errors import AnswerError, check_count, describ
 from trinormal.exercises.reading.numbers import (
     DECIMAL_COMMA,
     Number,
+    leaves,
     looks_like_number,
     module_of,
     read_number,
@@ -62,7 +63,7 @@ def _items(x: Any, size: int, what: str) -> list[Any]:
             raise AnswerError(f"expected {what}, got a {rows} × {cols} matrix")
         shape = tuple(getattr(x, "shape", ()) or ())
         if hasattr(x, "tolist") and (len(shape) == 1 or (len(shape) == 2 and 1 in shape)):
-            return list(_flat(x.tolist()))  # a sympy Array of shape (3,), (3, 1) or (1, 3)
+            return list(leaves(x.tolist()))  # a sympy Array of shape (3,), (3, 1) or (1, 3)
         if shape:
             raise AnswerError(f"expected {what}, got an array of shape {shape}")
         raise AnswerError(f"expected {what}, got one value")
@@ -80,15 +81,6 @@ _OPEN, _CLOSE = "([{⟨", ")]}⟩"
 _SPACED_NUMBER = re.compile(r"[+\-−]?\d+(?:[.,]\d+)?(?:/\d+)?")
 #: What may join a factor to a vector: ``2*(1, 0, 0)``, ``(1, 0, 0)/√2``.
 _TIMES = "*·×"
-
-
-def _flat(items: Any) -> Any:
-    """Yield the leaves of nested lists (a sympy Array's ``tolist()``)."""
-    if isinstance(items, list):
-        for item in items:
-            yield from _flat(item)
-    else:
-        yield items
 
 
 def _text_items(text: str) -> list[str]:

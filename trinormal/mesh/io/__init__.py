@@ -126,12 +126,14 @@ def read_mesh(path: str | os.PathLike[str], format: str | None = None) -> MeshDa
     Returns
     -------
     MeshData
+        The file's vertices and faces in file order, with what `parse_mesh` says of them.
 
     Raises
     ------
     MeshFileError
-        The file cannot be opened, its format is unknown, or it is not a valid
-        file of its format; the message names the file and, for text, the line.
+        The file cannot be opened or its format is unknown; or, as `parse_mesh` says, its
+        bytes are not a valid file of that format. The message names the file and, for text,
+        the line.
     """
     name = os.fspath(path)
     fmt = _format_of(name, format)
