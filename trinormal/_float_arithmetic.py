@@ -135,9 +135,9 @@ def floating(
             )
         plane = Plane(unit, d)
     exact = _exact(*check_common(coords), w, tn, td, tn / td)._integers
-    corners = ((A[0], A[1], A[2]), (B[0], B[1], B[2]), (C[0], C[1], C[2]))
+    a, b, c = (A[0], A[1], A[2]), (B[0], B[1], B[2]), (C[0], C[1], C[2])
     fields = (w, u, v, n, magnitude, area, unit, degenerate, plane, reason)
-    return _result(*corners, *fields, fmt, tn / td, exact)
+    return _result(a, b, c, *fields, fmt, tn / td, exact)
 
 
 def _ldexp(x: float, e: int) -> float:
