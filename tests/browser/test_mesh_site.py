@@ -28,8 +28,9 @@ from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
 
-#: The mesh scripts in the order the page and its worker load them.
-MESH_JS = [
+#: The scripts in the order the worker loads them (after the constants): the exact core, whose
+#: integer square root the check uses, then the mesh parts.
+MESH_JS = [ROOT / "docs/assets/javascripts/trinormal-core.js"] + [
     ROOT / "docs/assets/javascripts" / f"trinormal-mesh-{part}.js"
     for part in ("base", "read", "check", "write")
 ]
