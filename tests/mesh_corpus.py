@@ -311,7 +311,11 @@ def models() -> Iterator[tuple[str, Model]]:
         yield f"ball-scale-{scale:g}", tri(v * scale, turned(f.tolist(), [0, 5]))
     v, f = cube()
     yield "cube-far", tri(v + 1e16, f)  # every edge is 2, the coordinates are 1e16
-    yield "cube-extreme", tri(v * 8e307, f)  # differences overflow: halved first
+    # at 8e307 differences of coordinates overflow, at 1e300 and 1e-300 triple products do
+    for scale in (8e307, 1e300, 1e-300):
+        for name, (v, f) in (("cube", cube()), ("sphere", uv_sphere(16, 8))):
+            yield f"{name}-scale-{scale:g}", tri(v * scale, f)
+            yield f"{name}-scale-{scale:g}-inside-out", tri(v * scale, np.asarray(f)[:, ::-1])
     yield "float32", tri(icosphere(1)[0].astype(np.float32).astype(np.float64), icosphere(1)[1])
     yield "subnormal", tri(tetra()[0] * 5e-324 * 7, tetra()[1])
 

@@ -473,6 +473,41 @@ def test_only_the_inside_out_piece_is_turned_over():
     assert (fixed == np.vstack([f, f + 8])).all()
 
 
+@pytest.mark.parametrize("scale", [8e307, 1e300, 1e-300])
+@pytest.mark.parametrize(
+    "model", [mesh.cube, lambda: mesh.uv_sphere(16, 8)], ids=["cube", "sphere"]
+)
+def test_the_verdict_holds_at_any_scale(model, scale):
+    # the module's filterwarnings("error") turns any overflow or invalid-value warning into a failure
+    v, f = model()
+    v = v * scale
+    good = mesh.check(v, f)
+    assert good.outward is True and good.faces_to_flip.size == 0
+    assert "inside out" not in good.summary() and "every normal points outward" in good.summary()
+    assert mesh.fix_winding(v, f)[1].size == 0
+    bad = f[:, [0, 2, 1]]
+    r = mesh.check(v, bad)
+    assert r.outward is False and "is inside out" in r.summary()
+    fixed, flipped = mesh.fix_winding(v, bad)
+    assert flipped.tolist() == list(range(len(f))) and (fixed == f).all()
+    # the volume in the coordinates' unit: infinite where it overflows, zero where it
+    # underflows, never NaN, and of the winding's sign
+    big = scale > 1
+    for faces, sign in ((f, 1.0), (bad, -1.0)):
+        for volume in (mesh.signed_volume(v, faces), mesh.check(v, faces).components[0].volume):
+            assert volume == (sign * np.inf if big else 0.0)
+            assert np.copysign(1.0, volume) == sign
+
+
+def test_the_volume_keeps_its_value_where_it_fits():
+    v, f = mesh.cube()
+    for scale in (2.0**-300, 2.0**300, 2.0**-1000):
+        expected = 8.0 * scale**3 if scale**3 > 0 else 0.0
+        assert mesh.signed_volume(v * scale, f) == expected
+        assert mesh.check(v * scale, f).components[0].volume == expected
+        assert mesh.check(v * scale, f[:, [0, 2, 1]]).components[0].volume == -expected
+
+
 def test_empty_mesh():
     r = mesh.check(np.empty((0, 3)), np.empty((0, 3), dtype=int))
     assert r.n_faces == 0 and r.components == ()

@@ -28,11 +28,14 @@ from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
 
-#: The scripts in the order the worker loads them (after the constants): the exact core, whose
-#: integer square root the check uses, then the mesh parts.
-MESH_JS = [ROOT / "docs/assets/javascripts/trinormal-core.js"] + [
-    ROOT / "docs/assets/javascripts" / f"trinormal-mesh-{part}.js"
-    for part in ("base", "read", "check", "write")
+#: The scripts in the order the worker loads them after the constants: the exact core (the
+#: check takes its isqrt), then the mesh parts.
+MESH_JS = [
+    ROOT / "docs/assets/javascripts" / name
+    for name in (
+        "trinormal-core.js",
+        *(f"trinormal-mesh-{p}.js" for p in ("base", "read", "check", "write")),
+    )
 ]
 MESHES = ROOT / "tests/data/meshes"
 

@@ -47,14 +47,19 @@ class _Winding:
     closed: BoolArray
     orientable: BoolArray
     inconsistent: IntArray  # (C,) edges walked the same way by both faces
-    volume: FloatArray  # (C,) six times the enclosed volume, as wound now
-    volume_error: FloatArray  # (C,) its rounding bound
+    volume: FloatArray  # (C,) six times the enclosed volume, as wound now, over scale**3
+    volume_error: FloatArray  # (C,) its rounding bound, in the same unit
+    scale: FloatArray  # (C,) the power of two each piece's coordinates were divided by
     flip: BoolArray  # (F,) what fix_winding flips
     inconsistent_pairs: tuple[IntArray, IntArray]  # half-edges of those edges
 
     @property
     def n_components(self) -> int:
         return int(self.closed.shape[0])
+
+    def enclosed_volume(self, piece: int) -> float:
+        """Return the enclosed volume of one piece, in the coordinates' unit cubed."""
+        return _unscaled(float(self.volume[piece]) / 6.0, float(self.scale[piece]))
 
     def outward(self, volume: FloatArray) -> list[bool | None]:
         """True/False where the sign of ``volume`` is certain, None where it is not."""
@@ -104,7 +109,8 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     first_face = np.full(nc, nf, dtype=np.intp)
     np.minimum.at(first_face, comp[idx], idx)
     ref = v[f[first_face, 0]] if nc else np.empty((0, 3))
-    det, size = _volume_terms(v, f, idx, ref, comp)
+    scale = _piece_scales(v, f, idx, comp, nc)
+    det, size = _volume_terms(v, f, idx, ref, comp, scale)
     volume = np.bincount(comp[idx], weights=det, minlength=nc)[:nc].astype(np.float64)
     n_in = np.bincount(comp[idx], minlength=nc)[:nc]
     error = (
@@ -124,6 +130,7 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
         inconsistent=inconsistent,
         volume=volume,
         volume_error=error,
+        scale=scale,
         flip=flip,
         inconsistent_pairs=(h1[same], h2[same]),
     )
@@ -133,20 +140,52 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
 _VOLUME_BLOCK = 1 << 16
 
 
+def _piece_scales(v: FloatArray, f: IntArray, idx: IntArray, comp: IntArray, nc: int) -> FloatArray:
+    """For each piece, the largest power of two not above its largest |coordinate| (0: 0.5).
+
+    Dividing by it is exact in binary (short of subnormal results) and brings every
+    coordinate of the piece within (-2, 2): whatever the mesh's scale, the triple
+    products of `_volume_terms` cannot overflow, the piece's volume does not vanish
+    in underflow, and the sum keeps the sign its rounding bound vouches for.
+    """
+    largest = np.zeros(nc)
+    if idx.size:
+        corner = np.abs(v).max(axis=1)[f[idx]].max(axis=1)
+        np.maximum.at(largest, comp[idx], corner)
+    _, exponent = np.frexp(largest)
+    scale: FloatArray = np.ldexp(1.0, exponent - 1)
+    return scale
+
+
+def _unscaled(x: float, scale: float) -> float:
+    """``x * scale**3`` as three products in turn, as the page's JavaScript takes it.
+
+    ``scale`` is a power of two, so each product is exact unless it leaves the float
+    range: the result is ±inf only where the true value overflows, 0.0 (or a subnormal)
+    where it underflows, and never NaN.
+    """
+    return x * scale * scale * scale
+
+
 def _volume_terms(
-    v: FloatArray, f: IntArray, idx: IntArray, ref: FloatArray, comp: IntArray
+    v: FloatArray, f: IntArray, idx: IntArray, ref: FloatArray, comp: IntArray, scale: FloatArray
 ) -> tuple[FloatArray, FloatArray]:
     """For faces ``idx``: a · (b × c) and |a|·|b|·|c|, corners measured from their piece's ``ref``.
 
-    A block of faces at a time; each face's two numbers do not depend on the
-    blocks, and the sums over a piece are taken by the caller, over all faces at once.
+    Every coordinate is first divided by its piece's ``scale`` (`_piece_scales`): the
+    results are the true ones over ``scale**3``. A block of faces at a time; each face's
+    two numbers do not depend on the blocks, and the sums over a piece are taken by the
+    caller, over all faces at once.
     """
     det = np.empty(idx.size)
     size = np.empty(idx.size)
     for lo in range(0, idx.size, _VOLUME_BLOCK):
         blk = idx[lo : lo + _VOLUME_BLOCK]
-        r = ref[comp[blk]]
-        p, q, s = v[f[blk, 0]] - r, v[f[blk, 1]] - r, v[f[blk, 2]] - r
+        c = scale[comp[blk]][:, None]
+        r = ref[comp[blk]] / c
+        p = v[f[blk, 0]] / c - r
+        q = v[f[blk, 1]] / c - r
+        s = v[f[blk, 2]] / c - r
         det[lo : lo + blk.size] = (
             p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
             + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])
@@ -234,7 +273,10 @@ def signed_volume(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> float:
     Returns
     -------
     float
-        The volume in the coordinates' unit cubed; 0.0 for no faces.
+        The volume in the coordinates' unit cubed; 0.0 for no faces. It is
+        computed on coordinates divided by a power of two, so it is never NaN:
+        ``±inf`` only where the true volume is beyond the float range, 0.0 where
+        it is below it, and its sign is right at any scale.
 
     Examples
     --------
@@ -242,12 +284,15 @@ def signed_volume(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> float:
     >>> v, f = cube()
     >>> signed_volume(v, f), signed_volume(v, f[:, [0, 2, 1]])
     (8.0, -8.0)
+    >>> signed_volume(v * 1e300, f), signed_volume(v * 1e-300, f)
+    (inf, 0.0)
     """
     v, _ = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
     if f.shape[0] == 0:
         return 0.0
-    r = v[f[0, 0]]
-    p, q, s = v[f[:, 0]] - r, v[f[:, 1]] - r, v[f[:, 2]] - r
-    det = np.einsum("ij,ij->i", p, np.cross(q, s))
-    return float(det.sum() / 6.0)
+    idx = np.arange(f.shape[0])
+    whole = np.zeros(f.shape[0], dtype=np.intp)  # the whole mesh as one piece
+    scale = _piece_scales(v, f, idx, whole, 1)
+    det, _ = _volume_terms(v, f, idx, v[f[:1, 0]], whole, scale)
+    return _unscaled(float(det.sum()) / 6.0, float(scale[0]))

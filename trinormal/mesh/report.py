@@ -471,7 +471,7 @@ def _component_reports(w: _Winding) -> tuple[ComponentReport, ...]:
                 consistent=consistent,
                 orientable=bool(w.orientable[i]),
                 outward=outward[i] if measurable else None,
-                volume=float(w.volume[i]) / 6.0 if measurable else None,
+                volume=w.enclosed_volume(i) if measurable else None,
                 faces_to_flip=int(flips[i]),
             )
         )

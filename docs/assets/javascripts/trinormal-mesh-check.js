@@ -505,24 +505,45 @@ self.TrinormalMesh.part("check", "read", function (base) {
   var EPS = Math.pow(2, -52);
   var VOLUME_ROUNDING = 8;
 
+  /** 2 ** (frexp(x)[1] - 1) in Python: the largest power of two <= x >= 0 (0.5 for 0). */
+  function powerOfTwoBelow(x) {
+    if (x === 0) return 0.5;
+    var k = Math.min(1023, Math.floor(Math.log2(x)));
+    if (Math.pow(2, k) > x) k--;
+    else if (k < 1023 && Math.pow(2, k + 1) <= x) k++;
+    return Math.pow(2, k);
+  }
+
   /**
    * Six times the enclosed volume of each piece, from the first vertex of its first face, as
    * wound now (`volume`) and after the consistent flips (`fixed`), with its rounding bound.
+   * Every coordinate is first divided by its piece's `scale` (the largest power of two not
+   * above its largest |coordinate|: exact in binary), so the triple products can neither
+   * overflow nor underflow; the three sums are the true ones over scale ** 3.
    */
   function volumes(V, faces, comp, nComp, flip) {
     var nf = comp.length;
     var ref = new Int32Array(nComp).fill(-1);
+    var largest = new Float64Array(nComp), scale = new Float64Array(nComp);
     var volume = new Float64Array(nComp), fixed = new Float64Array(nComp);
     var sizeSum = new Float64Array(nComp), nIn = new Float64Array(nComp);
-    for (var f = 0; f < nf; f++) {
-      var cf = comp[f];
+    var f, k, cf, at;
+    for (k = 0; k < 3 * nf; k++) {
+      if ((cf = comp[(k / 3) | 0]) < 0) continue;
+      at = 3 * faces[k];
+      largest[cf] = Math.max(largest[cf], Math.abs(V[at]), Math.abs(V[at + 1]), Math.abs(V[at + 2]));
+    }
+    for (k = 0; k < nComp; k++) scale[k] = powerOfTwoBelow(largest[k]);
+    for (f = 0; f < nf; f++) {
+      cf = comp[f];
       if (cf < 0) continue;
       if (ref[cf] < 0) ref[cf] = 3 * faces[3 * f];
-      var o = ref[cf];
+      var o = ref[cf], c = scale[cf];
+      var ox = V[o] / c, oy = V[o + 1] / c, oz = V[o + 2] / c;
       var i0 = 3 * faces[3 * f], i1 = 3 * faces[3 * f + 1], i2 = 3 * faces[3 * f + 2];
-      var px = V[i0] - V[o], py = V[i0 + 1] - V[o + 1], pz = V[i0 + 2] - V[o + 2];
-      var qx = V[i1] - V[o], qy = V[i1 + 1] - V[o + 1], qz = V[i1 + 2] - V[o + 2];
-      var sx = V[i2] - V[o], sy = V[i2 + 1] - V[o + 1], sz = V[i2 + 2] - V[o + 2];
+      var px = V[i0] / c - ox, py = V[i0 + 1] / c - oy, pz = V[i0 + 2] / c - oz;
+      var qx = V[i1] / c - ox, qy = V[i1 + 1] / c - oy, qz = V[i1 + 2] / c - oz;
+      var sx = V[i2] / c - ox, sy = V[i2 + 1] / c - oy, sz = V[i2 + 2] / c - oz;
       var det = px * (qy * sz - qz * sy) + py * (qz * sx - qx * sz) + pz * (qx * sy - qy * sx);
       var size =
         Math.sqrt(px * px + py * py + pz * pz) *
@@ -535,7 +556,7 @@ self.TrinormalMesh.part("check", "read", function (base) {
     }
     var error = new Float64Array(nComp);
     for (var i = 0; i < nComp; i++) error[i] = (VOLUME_ROUNDING + nIn[i]) * EPS * sizeSum[i];
-    return { volume: volume, fixed: fixed, error: error };
+    return { volume: volume, fixed: fixed, error: error, scale: scale };
   }
 
   /** Each piece's entry of the report, and the faces to flip (closed pieces turned outward). */
@@ -564,7 +585,8 @@ self.TrinormalMesh.part("check", "read", function (base) {
         consistent: consistent,
         orientable: !!w.orientable[i],
         outward: measurable ? (Math.abs(v) <= vol.error[i] ? null : v > 0) : null,
-        volume: measurable ? v / 6.0 : null,
+        // x * scale ** 3 as Python's _unscaled takes it: ±Infinity only where the volume overflows
+        volume: measurable ? v / 6.0 * vol.scale[i] * vol.scale[i] * vol.scale[i] : null,
         faces_to_flip: flips[i],
       });
     }
