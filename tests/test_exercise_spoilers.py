@@ -22,20 +22,13 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from test_exercise_registry import notebook_names
 
 import trinormal.exercises as exercises_pkg
 from trinormal import format_number
-from trinormal.exercises import NOTEBOOK_MODULES, check, get
+from trinormal.exercises import check, get
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def notebook_names() -> set[str]:
-    return {
-        ex.name
-        for m in NOTEBOOK_MODULES
-        for ex in importlib.import_module(f"trinormal.exercises.{m}").EXERCISES
-    }
 
 
 def solution_texts(name: str) -> list[str]:

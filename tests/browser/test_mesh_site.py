@@ -21,6 +21,7 @@ import sys
 import numpy as np
 import pytest
 from browser_support import ROOT
+from mesh_corpus import damaged
 from page_checks import resize
 
 from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example_file, file_size
@@ -110,24 +111,6 @@ def test_every_test_file_gets_pythons_report_or_pythons_message(blank):
     assert len(bad) >= 5 and len(files) - len(bad) >= 5 + len(EXAMPLES)
     for name, _ in EXAMPLES:  # each example has something to fix
         assert python_result(name, example_file(name))["report"]["faces_to_flip"], name
-
-
-def damaged(rng: random.Random, data: bytes) -> bytes:
-    """A file with a few random edits: bytes inserted, deleted or changed, or the end cut off."""
-    words = [b"nan", b"inf", b"1_0", b"-0", b"x", b"#", b"\\", b"f", b"vt", b"endloop", b"3"]
-    words += [b"-1", b"1e400", b"\n", b"\r\n", b"\0", b"element", b"end_header", b"99"]
-    out = bytearray(data)
-    for _ in range(rng.randint(1, 3)):
-        i, op = rng.randrange(len(out) + 1), rng.random()
-        if op < 0.35:
-            out[i:i] = rng.choice(words)
-        elif op < 0.6:
-            del out[i : i + rng.randint(1, 8)]
-        elif op < 0.75:
-            del out[i:]
-        elif out:
-            out[min(i, len(out) - 1)] = rng.randrange(256)
-    return bytes(out)
 
 
 def test_damaged_files_get_pythons_report_or_pythons_message(blank):
