@@ -28,6 +28,7 @@ try:
 except ModuleNotFoundError as exc:
     raise missing_extra(exc, __name__) from exc
 
+from trinormal.core import _longest_squared, _thin
 from trinormal.mesh._arrays import (
     BoolArray,
     FloatArray,
@@ -92,18 +93,17 @@ def _exact(corners: FloatArray, tol: Fraction) -> FloatArray | None:
 
     ``corners`` (3, 3): A, B, C. Every float is an integer over a power of
     two, so over the largest denominator among them the corners are integers,
-    and the rule |N| <= tol · L² is tested exactly, squared:
-    |N|² · d² <= n² · L⁴ for tol = n / d. The unit normal's components are
-    quotients of integers, correctly rounded.
+    and the rule |N| <= tol · L² is tested exactly by the core's own test
+    (`trinormal.core`'s ``_thin``). The unit normal's components are quotients
+    of integers, correctly rounded.
     """
     ratios = [x.as_integer_ratio() for x in corners.ravel().tolist()]
     den = max(d for _, d in ratios)
     ax, ay, az, bx, by, bz, cx, cy, cz = (p * (den // d) for p, d in ratios)
-    u, v, w = (bx - ax, by - ay, bz - az), (cx - ax, cy - ay, cz - az), (cx - bx, cy - by, cz - bz)
+    u, v = (bx - ax, by - ay, bz - az), (cx - ax, cy - ay, cz - az)
     n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
     nn = sum(x * x for x in n)
-    l2 = max(sum(x * x for x in e) for e in (u, v, w))
-    if nn * tol.denominator**2 <= tol.numerator**2 * l2 * l2:
+    if _thin(nn, _longest_squared(u, v), tol.numerator, tol.denominator):  # the core's rule
         return None
     k = max(0, 67 - nn.bit_length() // 2)  # |N| · 2**k to 67 bits or more
     r = math.isqrt(nn << 2 * k)
