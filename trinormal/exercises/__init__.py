@@ -466,8 +466,7 @@ def get(name: str) -> Exercise:
     ...
     trinormal.exercises.UnknownExercise: no exercise named '01-nromal'; did you mean '01-normal', ...? (names() lists them all)
     """  # noqa: E501
-    found = _load().get(name) if isinstance(name, str) else None
-    found = found or (_REGISTRY.get(name) if isinstance(name, str) else None)
+    found = (_load().get(name) or _REGISTRY.get(name)) if isinstance(name, str) else None
     if found is not None:
         return found
     raise UnknownExercise(name)
