@@ -318,6 +318,26 @@ def models() -> Iterator[tuple[str, Model]]:
             yield f"{name}-scale-{scale:g}-inside-out", tri(v * scale, np.asarray(f)[:, ::-1])
     yield "float32", tri(icosphere(1)[0].astype(np.float32).astype(np.float64), icosphere(1)[1])
     yield "subnormal", tri(tetra()[0] * 5e-324 * 7, tetra()[1])
+    yield from printing_models()
+
+
+def printing_models() -> Iterator[tuple[str, Model]]:
+    """The report for printing: every units hint, volumes of several pieces, many holes, -0.0."""
+    v, f = cube()
+    yield "print-cube-mm", tri(v * 10, f)  # 20 mm: no hint, ready for a slicer
+    yield "print-cube-metres", tri(v * 0.02, f)
+    yield "print-cube-micrometres", tri(v * 1e4, f)
+    opened = (v + 10, np.asarray(f)[:-2].tolist())
+    yield "print-closed-and-open", joined(tri(v, f), tetra((5, 0, 0)), opened)
+    yield (
+        "print-inside-out-piece",
+        joined(tri(v, f), (tetra((5, 0, 0))[0], turned(tetra()[1], range(4)))),
+    )
+    v, f = icosphere(3)
+    yield "print-many-holes", tri(v, np.delete(f, np.arange(0, len(f), 53), axis=0))
+    v = tetra()[0] * 30
+    v[0] = -0.0  # a corner at -0.0: the box starts at 0, never -0
+    yield "print-negative-zero", (v, tetra()[1])
 
 
 # --------------------------------------------------------------------------- variants of files

@@ -59,6 +59,12 @@ def assert_every_kind_of_file(manifest: list[dict]) -> None:
     for key in ("boundary_edges", "non_manifold_edges", "non_manifold_vertices", "duplicate_faces",
                 "reversed_duplicate_faces", "coincident_faces", "collinear_faces"):  # fmt: skip
         assert sum(bool(r["report"][key]) for r in read) >= 3, key
+    printing = [r["report"] for r in read]
+    assert sum(len(r["holes"]) > 8 for r in printing) >= 1  # a list that ends in "…"
+    assert sum(r["volume"] is not None and len(r["components"]) > 1 for r in printing) >= 3
+    hints = {r["size"]["units_hint"] for r in printing if r["size"]}
+    assert hints == {None, "metres", "inches", "micrometres"}
+    assert sum(r["verdict"].endswith(": ready for a slicer") for r in printing) >= 5
     refused = {e["expected"].get("key") for e in manifest}
     parts = {"at_line", "no_extension", "ply_valid", "ply_no_vertices"}  # parts of sentences
     assert set(READ_ERRORS) - parts - refused == set()

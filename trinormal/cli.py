@@ -20,6 +20,11 @@ It needs numpy (the ``notebooks`` extra brings it); the triangle calculator
 needs nothing beyond the standard library, and numpy is imported only when
 the mesh command runs.
 
+``trinormal mesh`` exits like a linter: 0 when the report finds nothing wrong
+(``MeshReport.ok``), 1 when it finds a problem (even one ``--fix`` mends: the
+status is about FILE as read), 2 when the file cannot be read. A units hint
+(``a 0.05 mm model is probably in metres``) is advice, not a problem.
+
 A degenerate triangle is an answer (exit status 0). Bad input prints one line
 naming the vertex and axis and exits with status 2; an output that cannot be
 written (a full disk) prints one line and exits with status 1. Where the output
@@ -306,8 +311,10 @@ def _mesh_parser() -> argparse.ArgumentParser:
     p = _Parser(
         prog="trinormal mesh",
         description="Check a mesh file (OBJ, STL or PLY): degenerate and duplicate faces, holes, "
-        "non-manifold edges and vertices, pieces, winding and outward normals.",
-        epilog="Example: trinormal mesh model.stl --fix fixed.stl",
+        "non-manifold edges and vertices, pieces, winding and outward normals; then the report "
+        "for printing: holes, surface area, volume, size (with a units hint) and a verdict.",
+        epilog="Exit status: 0 nothing wrong, 1 a problem found (holes, winding, ...), "
+        "2 the file cannot be read. Example: trinormal mesh model.stl --fix fixed.stl",
     )
     p.add_argument("file", metavar="FILE", help="the mesh: .obj, .stl or .ply")
     p.add_argument(
@@ -381,7 +388,7 @@ def _run_mesh(args_in: list[str]) -> int:
         reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
         _error(f"cannot write the output: {reason}")
         return 1
-    return 0
+    return 0 if report.ok else 1  # like a linter: 1 when the report found a problem
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -19,6 +19,7 @@ from __future__ import annotations
 from typing import Any
 
 from trinormal.mesh.io import READ_ERRORS, READ_NOTES
+from trinormal.mesh.printing import printing_constants
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
 from trinormal.tolerances import DEFAULT_TOL
@@ -221,12 +222,13 @@ def site_constants() -> dict[str, Any]:
     dict
         ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol`` and
         ``selection`` (the readout of a face picked in the 3D view:
-        `trinormal.mesh.selection.selection_constants`).
+        `trinormal.mesh.selection.selection_constants`) and ``printing`` (the report for
+        printing's templates and limits: `trinormal.mesh.printing.printing_constants`).
 
     Examples
     --------
     >>> sorted(site_constants())
-    ['limits', 'messages', 'nouns', 'rows', 'selection', 'summary', 'tol']
+    ['limits', 'messages', 'nouns', 'printing', 'rows', 'selection', 'summary', 'tol']
     """
     return {
         "messages": dict(MESSAGES),
@@ -236,4 +238,5 @@ def site_constants() -> dict[str, Any]:
         "nouns": {k: list(t) for k, t in NOUNS.items()},
         "tol": DEFAULT_TOL,
         "selection": selection_constants(),
+        "printing": printing_constants(),
     }

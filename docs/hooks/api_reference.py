@@ -155,7 +155,7 @@ def link_public_names(config: MkDocsConfig, files: Files) -> None:
 
 
 #: The modules of trinormal.mesh whose names its API pages list (each name on one page).
-MESH_PARTS = ("io", "normals", "topology", "report", "repair", "shapes")
+MESH_PARTS = ("io", "normals", "topology", "report", "printing", "repair", "shapes")
 
 
 def _owner(name: str, obj: Any) -> str:

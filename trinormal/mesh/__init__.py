@@ -17,6 +17,8 @@ The modules, each named for what it answers:
   one way, closed pieces facing out;
 * `report` — [`check`][trinormal.mesh.check]: everything wrong with a mesh,
   as counts, face lists and plain sentences;
+* `printing` — [`PrintReport`][trinormal.mesh.PrintReport], ``check(...).printing``:
+  holes, surface area, volume, size with a units hint, and whether a slicer can take it;
 * `io` — [`read_mesh`][trinormal.mesh.read_mesh] and
   [`write_mesh`][trinormal.mesh.write_mesh] for OBJ, STL and PLY files, and
   [`sample_path`][trinormal.mesh.sample_path], the models shipped with the package;
@@ -84,6 +86,7 @@ from trinormal.mesh.normals import (
     face_normals,
     vertex_normals,
 )
+from trinormal.mesh.printing import PrintReport, Size
 from trinormal.mesh.repair import fix_winding, signed_volume
 from trinormal.mesh.report import ComponentReport, MeshReport, check
 from trinormal.mesh.shapes import cube, damaged_model, icosphere, terrain, torus, uv_sphere
@@ -105,6 +108,8 @@ __all__ = [
     "MeshData",
     "MeshFileError",
     "MeshReport",
+    "PrintReport",
+    "Size",
     "boundary_edges",
     "check",
     "connected_components",

@@ -17,6 +17,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import IntArray, _check_faces, _check_tol, _check_vertices
 from trinormal.mesh.normals import degenerate_faces
+from trinormal.mesh.printing import Measures, PrintReport, measure, print_report
 from trinormal.mesh.repair import _Winding, _winding
 from trinormal.mesh.topology import (
     _boundary_edges,
@@ -118,6 +119,9 @@ class MeshReport:
         One entry per piece, in the order of their first faces.
     faces_to_flip : ndarray of int
         The faces `trinormal.mesh.fix_winding` turns over.
+    measures : trinormal.mesh.printing.Measures
+        The surface area and the bounding box; `MeshReport.printing` adds the holes,
+        the volume and the verdict (the report for printing).
 
     Examples
     --------
@@ -143,6 +147,12 @@ class MeshReport:
     face_component: IntArray = field(repr=False)
     components: tuple[ComponentReport, ...]
     faces_to_flip: IntArray
+    measures: Measures = field(repr=False)
+
+    @property
+    def printing(self) -> PrintReport:
+        """Holes, area, volume, size and verdict: `trinormal.mesh.printing.print_report`."""
+        return print_report(self)
 
     @property
     def consistent_winding(self) -> bool:
@@ -203,6 +213,7 @@ class MeshReport:
             "inconsistent_edges": _pairs(self.inconsistent_edges),
             "components": [c.to_dict() for c in self.components],
             "faces_to_flip": self.faces_to_flip.tolist(),
+            **self.printing.to_dict(),
         }
 
     def summary(self, width: int = 88) -> str:
@@ -227,8 +238,13 @@ class MeshReport:
         8 vertices, 12 triangles, 1 piece.
         No problems found: the surface is closed, every face is wound the same way round, and
           every normal points outward.
+        Size: 2 × 2 × 2 (x, y, z) in the file's units, which slicers read as mm.
+        Read as millimetres its largest side, 2, is under 10 mm: if the model is in inches,
+          scale it by 25.4 (by 10 if it is in centimetres).
+        Surface area 24; enclosed volume 8.
+        Verdict: watertight, 1 piece, wound outward: ready for a slicer.
         """
-        lines = _summary_lines(self)
+        lines = _summary_lines(self) + self.printing.lines()
         if width > 0:
             lines = [textwrap.fill(line, width, subsequent_indent="  ") for line in lines]
         return "\n".join(lines)
@@ -412,6 +428,14 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
       neighbours, so their normals point the wrong way. Lighting makes such faces dark, and
       back-face culling makes them vanish.
     Fixing the winding turns 2 faces over, so that every piece is wound consistently.
+    1 hole: 4 edges around it.
+    Size: 2 × 2 × 2 (x, y, z) in the file's units, which slicers read as mm.
+    Read as millimetres its largest side, 2, is under 10 mm: if the model is in inches,
+      scale it by 25.4 (by 10 if it is in centimetres).
+    Surface area 20; no enclosed volume: no piece is closed and wound consistently, so none
+      has an inside to measure.
+    Verdict: not watertight, 1 piece, wound inconsistently: not ready for a slicer (1 hole,
+      2 faces to turn over).
     """
     t = _check_tol(tol)
     v, _ = _check_vertices(vertices)
@@ -451,6 +475,7 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
         face_component=w.component,
         components=_component_reports(w),
         faces_to_flip=np.flatnonzero(w.flip).astype(np.intp),
+        measures=measure(v, f, used),
     )
 
 

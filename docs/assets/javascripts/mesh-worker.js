@@ -16,7 +16,8 @@ importScripts(
   "trinormal-mesh-base.js",
   "trinormal-mesh-read.js",
   "trinormal-mesh-check.js",
-  "trinormal-mesh-write.js"
+  "trinormal-mesh-write.js",
+  "trinormal-mesh-print.js"
 );
 
 let current = null; // {mesh, faces, report}

@@ -556,6 +556,7 @@
     message: message,
     LIMITS: Object.freeze(Object.assign({}, LIMITS)),
     formatSurd: formatSurd,
+    doubleRatio: doubleRatio,
     isqrt: isqrt,
     InputError: InputError,
   };

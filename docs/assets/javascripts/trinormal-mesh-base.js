@@ -7,6 +7,7 @@
  *   trinormal-mesh-read.js   the OBJ, STL and PLY readers (trinormal/mesh/io.py)
  *   trinormal-mesh-check.js  the report (report.py, topology.py, repair.py, normals.py)
  *   trinormal-mesh-write.js  the winding fix and the writers (repair.py, io.py)
+ *   trinormal-mesh-print.js  the report for printing (printing.py): holes, area, volume, size
  *
  * The messages, limits and the degeneracy tolerance are not written here: they come from the
  * package through the constants the site build writes (TRINORMAL_CONSTANTS.mesh), which must

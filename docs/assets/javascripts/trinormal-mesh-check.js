@@ -792,6 +792,6 @@ self.TrinormalMesh.part("check", "read", function (base) {
     summary: summary,
     counted: counted,
     degenerateFaces: degenerateFaces,
-    internal: Object.assign({}, I, { faceNormals: faceNormals }),
+    internal: Object.assign({}, I, { faceNormals: faceNormals, powerOfTwoBelow: powerOfTwoBelow }),
   };
 });

@@ -1,0 +1,453 @@
+"""What a student preparing a 3D print needs to read: holes, area, volume, size and a verdict.
+
+`trinormal.mesh.check` measures the surface area and the bounding box (`measure`) and
+derives the rest from its findings (`print_report`): the holes (rims of boundary edges,
+with the number of edges around each), the volume each closed piece encloses and their
+sum, and one line that says whether the model is ready for a slicer or what stands in the
+way. ``MeshReport.to_dict()`` adds them under the keys ``holes``, ``surface_area``,
+``volume``, ``size`` and ``verdict``; ``MeshReport.summary()`` ends with them in words.
+
+Slicers read a file's coordinates as millimetres. A model whose largest side, read so, is
+below ``UNITS["metres_below"]`` (1 mm) is almost surely in metres (or inches); below
+``UNITS["inches_below"]`` (10 mm) it may be in inches or centimetres; above
+``UNITS["micrometres_above"]`` (2000 mm, beyond the bed of any common printer) it is
+probably in micrometres or meant to be scaled down. The size line says so
+(``units_hint``); the hint is advice and no problem of the mesh: it never changes
+``MeshReport.ok`` nor the exit status of ``trinormal mesh``.
+
+The site's "Check a mesh" page computes the same (``docs/assets/javascripts/
+trinormal-mesh-print.js``), with these templates, limits and the same additions in the
+same order, so the two give the same numbers to the last bit.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from trinormal.display import SCI_ABOVE_LOG10, format_number
+from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray
+from trinormal.mesh.topology import _components
+
+if TYPE_CHECKING:
+    from trinormal.mesh.report import MeshReport
+
+__all__ = ["PRINTING", "UNITS", "Measures", "PrintReport", "Size", "measure", "print_report"]
+
+#: Where a model's largest side, read as millimetres, suggests other units (see the module text).
+UNITS: dict[str, float] = {
+    "metres_below": 1.0,
+    "inches_below": 10.0,
+    "micrometres_above": 2000.0,
+}
+
+#: Significant digits of the numbers in the printing lines (areas, volumes, sizes).
+SIGNIFICANT = 6
+
+#: Pieces, or holes, listed one by one in a line before the rest are written "…".
+LISTED = 8
+
+#: The printing lines and the verdict's words: a template, or a (one, many) pair chosen by ``{n}``.
+PRINTING: dict[str, str | tuple[str, str]] = {
+    "holes": (
+        "{n} hole: {edges} around it.",
+        "{n} holes, with {edges} edges around them.",
+    ),
+    "size": "Size: {x} × {y} × {z} (x, y, z) in the file's units, which slicers read as mm.",
+    "hint_metres": (
+        "Read as millimetres its largest side, {largest}, is under {limit} mm: the model is "
+        "probably in metres (scale it by 1000) or inches (by 25.4)."
+    ),
+    "hint_inches": (
+        "Read as millimetres its largest side, {largest}, is under {limit} mm: if the model is "
+        "in inches, scale it by 25.4 (by 10 if it is in centimetres)."
+    ),
+    "hint_micrometres": (
+        "Read as millimetres its largest side, {largest}, is over {limit} mm, larger than a "
+        "printer's bed: the model is probably in micrometres (scale it by 0.001) or meant to "
+        "be scaled down."
+    ),
+    "area_volume": "Surface area {area}; enclosed volume {volume}.",
+    "area_volumes": "Surface area {area}; enclosed volume {volume} in all ({pieces}).",
+    "piece_volume": "piece {i}: {volume}",
+    "others_none": "the other pieces, open or wound inconsistently, enclose none",
+    "area_no_volume": (
+        "Surface area {area}; no enclosed volume: no piece is closed and wound consistently, "
+        "so none has an inside to measure."
+    ),
+    "verdict_line": "Verdict: {verdict}.",
+    "verdict": "{closure}, {pieces}, {winding}: {conclusion}",
+    "watertight": "watertight",
+    "not_watertight": "not watertight",
+    "wound_outward": "wound outward",
+    "wound_consistently": "wound consistently",
+    "one_sided": "one-sided",
+    "inconsistent": "wound inconsistently",
+    "inside_out": "inside out",
+    "no_volume": "enclosing no volume",
+    "ready": "ready for a slicer",
+    "not_ready": "not ready for a slicer ({obstacles})",
+    "no_faces": "no faces",
+    "obstacle_holes": ("{n} hole", "{n} holes"),
+    "obstacle_fins": ("{n} edge of three faces or more", "{n} edges of three faces or more"),
+    "obstacle_pinches": ("{n} pinch point", "{n} pinch points"),
+    "obstacle_degenerate": ("{n} degenerate face", "{n} degenerate faces"),
+    "obstacle_duplicates": ("{n} duplicate face", "{n} duplicate faces"),
+    "obstacle_unused": ("{n} unused vertex", "{n} unused vertices"),
+    "obstacle_one_sided": ("{n} one-sided piece", "{n} one-sided pieces"),
+    "obstacle_no_volume": ("{n} closed piece with no volume", "{n} closed pieces with no volume"),
+    "obstacle_flips": ("{n} face to turn over", "{n} faces to turn over"),
+}
+
+#: Faces whose areas `measure` works on at a time: its (block, 3) arrays stay small.
+_AREA_BLOCK = 1 << 16
+
+
+def _say(key: str, n: int | None = None, **values: str | int) -> str:
+    template = PRINTING[key]
+    if isinstance(template, tuple):
+        template = template[0] if n == 1 else template[1]
+    return template.format(n=n, **values)
+
+
+def shown(x: float) -> str:
+    """Write a number of the printing lines: `SIGNIFICANT` digits, trailing zeros dropped.
+
+    The decimals are found by multiplying or dividing by ten in float arithmetic (as the
+    page's JavaScript does), then the package's formatter rounds the exact value; below
+    1e-10 and from 1e15 on it writes ``SIGNIFICANT`` digits in scientific notation.
+
+    Examples
+    --------
+    >>> shown(24.0), shown(4.18879020478639), shown(0.05), shown(123456789.0), shown(-2.5e-7)
+    ('24', '4.18879', '0.05', '123456789', '-0.00000025')
+    >>> shown(1e-20), shown(1.2345678e20), shown(1234567.25), shown(0.0), shown(float("inf"))
+    ('1e-20', '1.23457e+20', '1234567', '0', 'inf')
+    """
+    if not math.isfinite(x):
+        return "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")
+    a, decimals = abs(x), SIGNIFICANT - 1
+    while a >= 10.0 and decimals > 0:
+        a /= 10.0
+        decimals -= 1
+    while 0.0 < a < 1.0 and decimals < 15:
+        a *= 10.0
+        decimals += 1
+    if a < 1.0 or abs(x) >= 10.0**SCI_ABOVE_LOG10:  # zero, or written m·10^e: `SIGNIFICANT` digits
+        decimals = SIGNIFICANT - 1
+    return format_number(x, decimals, trim=True)
+
+
+@dataclass(frozen=True)
+class Size:
+    """The bounding box of the vertices the faces use.
+
+    Attributes
+    ----------
+    minimum, maximum : tuple of float
+        Its corners (x, y, z); a zero is never written ``-0.0``.
+    """
+
+    minimum: tuple[float, float, float]
+    maximum: tuple[float, float, float]
+
+    @property
+    def extent(self) -> tuple[float, float, float]:
+        """Its sides along x, y and z."""
+        lo, hi = self.minimum, self.maximum
+        return (hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2])
+
+    @property
+    def units_hint(self) -> str | None:
+        """``"metres"``, ``"inches"`` or ``"micrometres"`` when the size suggests those units.
+
+        Read as millimetres, as slicers read a file; None when the size looks like a model
+        in millimetres (or the box is a point, or beyond the float range). See `UNITS`.
+
+        Examples
+        --------
+        >>> Size((0.0, 0.0, 0.0), (0.05, 0.02, 0.01)).units_hint
+        'metres'
+        >>> Size((0.0, 0.0, 0.0), (50.0, 20.0, 10.0)).units_hint is None
+        True
+        """
+        largest = max(self.extent)
+        if not math.isfinite(largest) or largest == 0.0:
+            return None
+        if largest < UNITS["metres_below"]:
+            return "metres"
+        if largest < UNITS["inches_below"]:
+            return "inches"
+        if largest > UNITS["micrometres_above"]:
+            return "micrometres"
+        return None
+
+    def to_dict(self) -> dict[str, Any]:
+        """``min``, ``max``, ``extent`` (lists of x, y, z) and ``units_hint``."""
+        return {
+            "min": list(self.minimum),
+            "max": list(self.maximum),
+            "extent": list(self.extent),
+            "units_hint": self.units_hint,
+        }
+
+    def lines(self) -> list[str]:
+        """Return the size line, and the units hint's line when there is one."""
+        x, y, z = (shown(s) for s in self.extent)
+        out = [_say("size", x=x, y=y, z=z)]
+        hint = self.units_hint
+        if hint is not None:
+            limit = UNITS["micrometres_above" if hint == "micrometres" else hint + "_below"]
+            out.append(_say("hint_" + hint, largest=shown(max(self.extent)), limit=shown(limit)))
+        return out
+
+
+@dataclass(frozen=True)
+class Measures:
+    """What `measure` takes from the coordinates: the surface area and the size."""
+
+    surface_area: float
+    size: Size | None
+
+
+def _power_of_two_below(x: float) -> float:
+    """Return the largest power of two not above ``x`` (0.5 for 0), as `repair._piece_scales`."""
+    _, exponent = math.frexp(x)
+    return math.ldexp(1.0, exponent - 1)
+
+
+def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
+    """Measure the surface area and the bounding box of a checked mesh.
+
+    Parameters
+    ----------
+    vertices : ndarray of float64, shape (V, 3)
+    faces : ndarray of int, shape (F, 3)
+        Checked arrays, as `trinormal.mesh.check` holds them.
+    used : ndarray of bool, shape (V,)
+        The vertices some face uses: the box is theirs alone.
+
+    Returns
+    -------
+    Measures
+        The area is the sum of |N| / 2 over the faces, N = (B − A) × (C − A), computed on
+        coordinates divided by one power of two (so that no product overflows or
+        underflows, at any scale) and added face after face, in the order of the faces.
+
+    Examples
+    --------
+    >>> from trinormal.mesh import cube
+    >>> v, f = cube()
+    >>> m = measure(v, f, np.ones(8, dtype=bool))
+    >>> m.surface_area, m.size.extent
+    (24.0, (2.0, 2.0, 2.0))
+    """
+    if not used.any():
+        return Measures(surface_area=0.0, size=None)
+    inf = float("inf")
+    # `+ 0.0` writes a zero corner as 0.0, never -0.0, whichever of the two min() meets first
+    lo = np.min(vertices, axis=0, where=used[:, None], initial=inf) + 0.0
+    hi = np.max(vertices, axis=0, where=used[:, None], initial=-inf) + 0.0
+    scale = _power_of_two_below(float(max(np.abs(lo).max(), np.abs(hi).max())))
+    total = 0.0
+    for start in range(0, faces.shape[0], _AREA_BLOCK):
+        blk = faces[start : start + _AREA_BLOCK]
+        p = vertices[blk[:, 0]] / scale
+        q = vertices[blk[:, 1]] / scale - p
+        s = vertices[blk[:, 2]] / scale - p
+        n0 = q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1]
+        n1 = q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2]
+        n2 = q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0]
+        twice = np.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
+        twice[0] += total  # cumsum adds one term after the other: the sum in face order
+        total = float(np.cumsum(twice)[-1])
+    size = Size(
+        (float(lo[0]), float(lo[1]), float(lo[2])), (float(hi[0]), float(hi[1]), float(hi[2]))
+    )
+    return Measures(surface_area=total * 0.5 * scale * scale, size=size)
+
+
+def _holes(boundary_edges: IntArray) -> tuple[int, ...]:
+    """Count the edges around each hole; the counts largest first.
+
+    A hole is a set of boundary edges joined end to end; two rims that touch at one
+    vertex count as one hole.
+    """
+    if boundary_edges.shape[0] == 0:
+        return ()
+    nodes, ends = np.unique(boundary_edges, return_inverse=True)
+    ends = ends.reshape(-1, 2)
+    label = _components(nodes.shape[0], ends[:, 0], ends[:, 1])
+    counts = np.bincount(label[ends[:, 0]])
+    return tuple(sorted((int(c) for c in counts if c), reverse=True))
+
+
+@dataclass(frozen=True)
+class PrintReport:
+    """The report for printing (see the module text); `print_report` makes it.
+
+    Attributes
+    ----------
+    holes : tuple of int
+        The number of edges around each hole, largest first.
+    surface_area : float
+        The area of all faces, in the file's units squared.
+    volume : float or None
+        The volume the closed, consistently wound pieces enclose together, as wound now
+        (an inside-out piece counts negative); None when no piece is such.
+    piece_volumes : tuple of (float or None)
+        Each piece's enclosed volume (``ComponentReport.volume``).
+    size : Size or None
+        The bounding box; None when there are no faces.
+    verdict : str
+        One line: ready for a slicer, or what stands in the way.
+    """
+
+    holes: tuple[int, ...]
+    surface_area: float
+    volume: float | None
+    piece_volumes: tuple[float | None, ...]
+    size: Size | None
+    verdict: str
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return the keys ``holes``, ``surface_area``, ``volume``, ``size`` and ``verdict``."""
+        return {
+            "holes": list(self.holes),
+            "surface_area": self.surface_area,
+            "volume": self.volume,
+            "size": None if self.size is None else self.size.to_dict(),
+            "verdict": self.verdict,
+        }
+
+    def lines(self) -> list[str]:
+        """Return the printing lines of the summary: holes, size, area and volume, verdict."""
+        out = []
+        if self.holes:
+            listed = ", ".join(str(h) for h in self.holes[:LISTED])
+            edges = _counted(self.holes[0], "edge") if len(self.holes) == 1 else listed
+            if len(self.holes) > LISTED:
+                edges += ", …"
+            out.append(_say("holes", n=len(self.holes), edges=edges))
+        if self.size is not None:
+            out += self.size.lines()
+        out.append(self._area_volume())
+        out.append(_say("verdict_line", verdict=self.verdict))
+        return out
+
+    def _area_volume(self) -> str:
+        area = shown(self.surface_area)
+        if self.volume is None:
+            return _say("area_no_volume", area=area)
+        if len(self.piece_volumes) == 1:
+            return _say("area_volume", area=area, volume=shown(self.volume))
+        measured = [(i, v) for i, v in enumerate(self.piece_volumes) if v is not None]
+        parts = [_say("piece_volume", i=i + 1, volume=shown(v)) for i, v in measured[:LISTED]]
+        if len(measured) > LISTED:
+            parts.append("…")
+        if len(measured) < len(self.piece_volumes):
+            parts.append(_say("others_none"))
+        return _say("area_volumes", area=area, volume=shown(self.volume), pieces=", ".join(parts))
+
+
+def _counted(n: int, noun: str) -> str:
+    """``n`` and the noun, as the summary writes counts ("1 edge", "3 pieces")."""
+    from trinormal.mesh.report import _n  # the report imports this module: imported here
+
+    return _n(n, noun)
+
+
+def _total_volume(volumes: tuple[float | None, ...]) -> float | None:
+    """Add the pieces' known volumes in piece order; None if none is known."""
+    total = None
+    for v in volumes:
+        if v is not None:
+            total = v if total is None else total + v
+    return total
+
+
+def _verdict(r: MeshReport, n_holes: int) -> str:
+    pieces = r.components
+    closed_consistent = [c for c in pieces if c.closed and c.consistent]
+    if not all(c.orientable for c in pieces):
+        winding = "one_sided"
+    elif not r.consistent_winding:
+        winding = "inconsistent"
+    elif any(c.outward is False for c in closed_consistent):
+        winding = "inside_out"
+    elif any(c.outward is None for c in closed_consistent):
+        winding = "no_volume"
+    elif r.closed:
+        winding = "wound_outward"
+    else:
+        winding = "wound_consistently"
+    if r.ok:
+        conclusion = _say("ready")
+    else:
+        found = (
+            ("obstacle_holes", n_holes),
+            ("obstacle_fins", len(r.non_manifold_edges)),
+            ("obstacle_pinches", len(r.non_manifold_vertices)),
+            ("obstacle_degenerate", len(r.degenerate_faces)),
+            ("obstacle_duplicates", len(r.duplicate_faces) + len(r.reversed_duplicate_faces)),
+            ("obstacle_unused", len(r.unused_vertices)),
+            ("obstacle_one_sided", sum(not c.orientable for c in pieces)),
+            ("obstacle_no_volume", sum(c.outward is None for c in closed_consistent)),
+            ("obstacle_flips", len(r.faces_to_flip)),
+        )
+        obstacles = [_say(key, n=n) for key, n in found if n]
+        if r.n_faces == 0:
+            obstacles.insert(0, _say("no_faces"))
+        conclusion = _say("not_ready", obstacles=", ".join(obstacles))
+    return _say(
+        "verdict",
+        closure=_say("watertight" if r.closed else "not_watertight"),
+        pieces=_counted(len(pieces), "piece"),
+        winding=_say(winding),
+        conclusion=conclusion,
+    )
+
+
+def print_report(r: MeshReport) -> PrintReport:
+    """Make the report for printing of a mesh `trinormal.mesh.check` has checked.
+
+    Examples
+    --------
+    >>> from trinormal.mesh import check, cube
+    >>> v, f = cube()
+    >>> p = print_report(check(v, f))
+    >>> p.holes, p.surface_area, p.volume, p.verdict
+    ((), 24.0, 8.0, 'watertight, 1 piece, wound outward: ready for a slicer')
+    >>> print_report(check(v * 0.01, f[:-2])).to_dict()["verdict"]
+    'not watertight, 1 piece, wound consistently: not ready for a slicer (1 hole)'
+    """
+    holes = _holes(r.boundary_edges)
+    volumes = tuple(c.volume for c in r.components)
+    return PrintReport(
+        holes=holes,
+        surface_area=r.measures.surface_area,
+        volume=_total_volume(volumes),
+        piece_volumes=volumes,
+        size=r.measures.size,
+        verdict=_verdict(r, len(holes)),
+    )
+
+
+def printing_constants() -> dict[str, Any]:
+    """Return the templates and limits the site's JavaScript reads (``TRINORMAL_CONSTANTS.mesh``).
+
+    Examples
+    --------
+    >>> sorted(printing_constants())
+    ['listed', 'sci_above', 'significant', 'templates', 'units']
+    """
+    return {
+        "templates": {k: list(t) if isinstance(t, tuple) else t for k, t in PRINTING.items()},
+        "units": dict(UNITS),
+        "significant": SIGNIFICANT,
+        "listed": LISTED,
+        "sci_above": 10.0**SCI_ABOVE_LOG10,  # where `shown` writes m·10^e, as format_number does
+    }
