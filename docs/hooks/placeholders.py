@@ -174,6 +174,14 @@ def _mesh_limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return f"{LIMITS[name]:,}".replace(",", "\u202f")
 
 
+def _mesh_units(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_units NAME``: one threshold of the units hint (`trinormal.mesh.printing.UNITS`)."""
+    from trinormal.mesh.printing import UNITS, shown
+
+    (name,) = args
+    return shown(UNITS[name])
+
+
 def _mesh_api(args: list[str], page: Page, config: MkDocsConfig) -> str:
     """``mesh_api PART...``: the trinormal.mesh names those modules define, documented."""
     return mesh_api_markdown(args)
@@ -194,6 +202,7 @@ HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
     "limit": _limit,
     "mesh_examples": _mesh_examples,
     "mesh_limit": _mesh_limit,
+    "mesh_units": _mesh_units,
     "mesh_api": _mesh_api,
 }
 
