@@ -35,7 +35,17 @@ from trinormal.mesh.topology import _components
 if TYPE_CHECKING:
     from trinormal.mesh.report import MeshReport
 
-__all__ = ["PRINTING", "UNITS", "Measures", "PrintReport", "Size", "measure", "print_report"]
+__all__ = [
+    "PRINTING",
+    "UNITS",
+    "Measures",
+    "PrintReport",
+    "Size",
+    "measure",
+    "print_report",
+    "printing_constants",
+    "shown",
+]
 
 #: Where a model's largest side, read as millimetres, suggests other units (see the module text).
 UNITS: dict[str, float] = {
@@ -255,15 +265,30 @@ def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
     total = 0.0
     for start in range(0, faces.shape[0], _AREA_BLOCK):
         blk = faces[start : start + _AREA_BLOCK]
-        p = vertices[blk[:, 0]] / scale
-        q = vertices[blk[:, 1]] / scale - p
-        s = vertices[blk[:, 2]] / scale - p
-        n0 = q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1]
-        n1 = q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2]
-        n2 = q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0]
-        twice = np.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
-        twice[0] += total  # cumsum adds one term after the other: the sum in face order
-        total = float(np.cumsum(twice)[-1])
+        # corners over the scale (exact), edges q = B − A and s = C − A, in place
+        p = vertices[blk[:, 0]]
+        p /= scale
+        q = vertices[blk[:, 1]]
+        q /= scale
+        q -= p
+        s = vertices[blk[:, 2]]
+        s /= scale
+        s -= p
+        # |N|² = n0² + n1² + n2², each n_i a difference of two products, added in this order
+        n = q[:, 1] * s[:, 2]
+        n -= q[:, 2] * s[:, 1]
+        n *= n
+        t = q[:, 2] * s[:, 0]
+        t -= q[:, 0] * s[:, 2]
+        t *= t
+        n += t
+        t = q[:, 0] * s[:, 1]
+        t -= q[:, 1] * s[:, 0]
+        t *= t
+        n += t
+        np.sqrt(n, out=n)  # twice each face's area, over scale²
+        n[0] += total  # cumsum adds one term after the other: the sum in face order
+        total = float(np.cumsum(n, out=n)[-1])
     size = Size(
         (float(lo[0]), float(lo[1]), float(lo[2])), (float(hi[0]), float(hi[1]), float(hi[2]))
     )
