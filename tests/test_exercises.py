@@ -395,6 +395,21 @@ def test_any_point_on_the_line_is_collinear():
     assert r and "within the tolerance for floats" in r.message
 
 
+def test_the_scaled_triangle_can_be_typed_in_the_explorer():
+    # 05-scale-area says "type the new coordinates in the boxes": the explorer takes each one
+    from trinormal.exercises.nb05 import SCALE_ABC, SCALE_FACTOR
+    from trinormal.explorer import Explorer
+
+    ex = Explorer(a=SCALE_ABC[0], b=SCALE_ABC[1], c=SCALE_ABC[2])
+    before = ex.result.area
+    for p, point in zip("abc", SCALE_ABC, strict=True):
+        for q, x in zip("xyz", point, strict=True):
+            ex.inputs[p + q].value = str(SCALE_FACTOR * x)
+            assert ex.message.value == "", ex.message.value
+    assert ex.result.exact.c == tuple(SCALE_FACTOR * x for x in SCALE_ABC[2])
+    assert check("05-scale-area", ex.result.area / before)
+
+
 def test_exact_properties_are_judged_exactly_and_a_near_miss_is_measured():
     from trinormal.exercises.nb05 import COLLINEAR_AB
 
