@@ -166,7 +166,7 @@ def test_an_edit_of_b_while_a_cell_sets_c_keeps_both(lab: Lab, page: Any) -> Non
               const s = ({STATUS})();
               return s.state !== 'waiting' && JSON.stringify([s.boxes, s.drawn]) === want;
             }}""",
-            arg=json.dumps(want),
+            arg=json.dumps(want, separators=(",", ":")),
             timeout=10_000,
         )
     except PlaywrightTimeout:
