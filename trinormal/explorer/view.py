@@ -18,7 +18,7 @@ kernel last wins. ``version`` counts the kernel's own changes (a cell calling
 version the kernel last set it (a vertex set from code sets its three
 coordinates). The kernel keeps every field of an edit that no cell set since
 the edit's ``base``; a field a cell set after it keeps the cell's value
-([`merge_edit`][trinormal.explorer.state.merge_edit]). So a drag of B made while a
+(``merge_edit`` in ``trinormal.explorer.state``). So a drag of B made while a
 cell sets C keeps both, and a browser's late answer never overwrites what a cell
 set. The kernel applies the kept part with the exact core and answers in one
 update: the new values, ``state`` and ``last_edit`` (which edit this was,
