@@ -622,7 +622,7 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         (lambda: (get("06-float64-bits").solution() - 1) * math.log10(2), "That counts the stored bits (nmant) only: p includes the implicit leading bit."),
     ],
     "07-needle-degenerate": [
-        (lambda: not _sol("07-needle-degenerate"), "Compute |N| and the longest side L (here C − A), then compare |N| / L² with DEFAULT_TOL = 1e-12: degenerate means |N| <= tol · L², whichever corner comes first."),
+        (lambda: not _sol("07-needle-degenerate"), "Compute |N| and the longest of the three sides, L, then compare |N| / L² with DEFAULT_TOL = 1e-12: degenerate means |N| <= tol · L², whichever corner comes first."),
         ("maybe", "Answer True or False."),
     ],
     "08-cube-corner-degrees": [
