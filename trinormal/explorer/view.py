@@ -96,7 +96,7 @@ FIXED = {
 }
 
 #: What the readout says while a learner's edits wait for a busy kernel.
-WAITING = "Waiting for the kernel… (a cell is running)"
+WAITING = "Waiting for the kernel…"
 
 #: The bundled ES module (three.js included), built by ``make js``.
 BUNDLE = Path(__file__).with_name("static") / "explorer.js"
