@@ -106,7 +106,13 @@ def test_a_view_trait_set_from_code_goes_through_set_or_raises():
     with pytest.raises(ValueError, match="winding"):
         ex.view.winding = "CBA"
     assert ex.view.a == ["0.5", "1/3", "0"] and ex.view.winding == "ACB"
-    for name, value in [("bounds", [-9.0, 9.0]), ("step", "1"), ("state", {}), ("version", 0)]:
+    for name, value in [
+        ("bounds", [-9.0, 9.0]),
+        ("step", "1"),
+        ("state", {}),
+        ("version", 0),
+        ("fields", []),
+    ]:
         with pytest.raises(traitlets.TraitError, match=f"ExplorerView.{name} cannot be set"):
             setattr(ex.view, name, value)
     assert ex.view.bounds == [-5.0, 5.0] and ex.view.state == view_state(ex.result, 2)

@@ -89,6 +89,7 @@ FIXED = {
     "bounds": "create the Explorer with min= and max=",
     "precision_range": "the decimals run from 0 to 15",
     "state": "the Explorer computes it; change the triangle with ex.set(...)",
+    "fields": "the readout's rows come from trinormal.fields with the state",
     "message": "the Explorer writes it when it refuses a value",
     "version": "the Explorer counts its own changes",
     "set_at": "the Explorer records what code set",
