@@ -394,8 +394,20 @@ ACCEPTED: dict[str, list[Any]] = {
         _matrix([[0.4472136, 0.8944272, 0]]),
     ],
     # (d) numpy truth values
-    "03-collinear": [np.bool_(True), np.array(True), np.array([True]), "True."],
-    "07-needle-degenerate": [np.bool_(True), np.array(True), np.array([[True]])],
+    "03-collinear": [
+        np.bool_(True),
+        np.array(True),
+        np.array([True]),
+        "True.",
+        "True, they are on one line",
+        "It is true.",
+    ],
+    "07-needle-degenerate": [
+        np.bool_(True),
+        np.array(True),
+        np.array([[True]]),
+        "true, it is degenerate",
+    ],
     # (f) the word inside a sentence
     "09-front-face": [
         "the front side",
@@ -411,8 +423,8 @@ REFUSED: dict[str, list[Any]] = {
     "06-float64-digits": ["54*log10(2)", "52·log10(2)", "15,85"],
     "01-normal": ["(1; 1; -1)", "(2, 2, 2)/4", sp.Array([1, 1, 0]), _matrix([[1, 1, 2]])],
     "10-scaled-normal": ["(0, -1, 1)/sqrt(2)", "[2,1,0]/√5", "(0,8944; 0,4472; 0)"],
-    "03-collinear": [np.bool_(False), np.array(False)],
-    "07-needle-degenerate": [np.array(False)],
+    "03-collinear": [np.bool_(False), np.array(False), "False, it is not degenerate"],
+    "07-needle-degenerate": [np.array(False), "I think it is false", "true or false"],
     "09-front-face": ["the back side", "It is the back."],
 }
 

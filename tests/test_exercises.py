@@ -395,6 +395,21 @@ def test_any_point_on_the_line_is_collinear():
     assert r and "within the tolerance for floats" in r.message
 
 
+def test_the_scaled_triangle_can_be_typed_in_the_explorer():
+    # 05-scale-area says "type the new coordinates in the boxes": the explorer takes each one
+    from trinormal.exercises.nb05 import SCALE_ABC, SCALE_FACTOR
+    from trinormal.explorer import Explorer
+
+    ex = Explorer(a=SCALE_ABC[0], b=SCALE_ABC[1], c=SCALE_ABC[2])
+    before = ex.result.area
+    for p, point in zip("abc", SCALE_ABC, strict=True):
+        for q, x in zip("xyz", point, strict=True):
+            ex.inputs[p + q].value = str(SCALE_FACTOR * x)
+            assert ex.message.value == "", ex.message.value
+    assert ex.result.exact.c == tuple(SCALE_FACTOR * x for x in SCALE_ABC[2])
+    assert check("05-scale-area", ex.result.area / before)
+
+
 def test_exact_properties_are_judged_exactly_and_a_near_miss_is_measured():
     from trinormal.exercises.nb05 import COLLINEAR_AB
 
@@ -607,7 +622,7 @@ WRONG: dict[str, list[tuple[object, str]]] = {
         (lambda: (get("06-float64-bits").solution() - 1) * math.log10(2), "That counts the stored bits (nmant) only: p includes the implicit leading bit."),
     ],
     "07-needle-degenerate": [
-        (lambda: not _sol("07-needle-degenerate"), "Compute |N| and the longest side L (here C − A), then compare |N| / L² with DEFAULT_TOL = 1e-12: degenerate means |N| <= tol · L², whichever corner comes first."),
+        (lambda: not _sol("07-needle-degenerate"), "Compute |N| and the longest of the three sides, L, then compare |N| / L² with DEFAULT_TOL = 1e-12: degenerate means |N| <= tol · L², whichever corner comes first."),
         ("maybe", "Answer True or False."),
     ],
     "08-cube-corner-degrees": [

@@ -456,7 +456,14 @@ def test_code_makes_new_versions_and_browser_edits_do_not():
     assert ex.view.version > v1
     v2 = ex.view.version
     answer = edit(ex, {"cy": "2"})
-    assert answer == {"view": "w1", "seq": edit.seq, "ok": True, "stale": False, "error": ""}
+    assert answer == {
+        "view": "w1",
+        "seq": edit.seq,
+        "ok": True,
+        "stale": False,
+        "overwritten": [],
+        "error": "",
+    }
     assert ex.view.version == v2 and ex.result.exact.c == (0, 2, 0)
 
 
@@ -525,16 +532,18 @@ def test_one_coordinate_edited_in_two_views_keeps_the_edit_that_arrives_last():
     assert ex.view.last_edit["view"] == "two"
 
 
-def test_a_stale_edit_changes_no_coordinate_and_a_fresh_one_after_it_lands():
-    # a cell sets B between two edits of one view: the edit made before it is refused as a
-    # whole, quietly; the view's next edit, made against the new version, is taken
+def test_an_edit_keeps_what_no_cell_set_since_and_loses_what_a_cell_set():
+    # a cell sets B between two edits of one view: of the edit made before it, B.z (which
+    # the cell set) keeps the cell's value and A.y (which no cell set) is kept, quietly;
+    # the view's next edit of B, made against the new version, is taken
     ex = Explorer()
     old = ex.view.version
     assert edit(ex, {"ax": "0.5"}, base=old, view="one")["ok"]  # not a new version
     ex.set(b=("1/3", "2/3", 0))
     answer = edit(ex, {"bz": "0.4", "ay": "0.1"}, base=old, view="one")
-    assert answer["ok"] is False and answer["stale"] is True and answer["seq"] == edit.seq
-    assert ex.view.a == ["0.5", "0", "0"] and ex.view.b == ["1/3", "2/3", "0"]
+    assert answer["ok"] is True and answer["stale"] is True and answer["seq"] == edit.seq
+    assert answer["overwritten"] == ["bz"]
+    assert ex.view.a == ["0.5", "0.1", "0"] and ex.view.b == ["1/3", "2/3", "0"]
     assert ex.message.value == ""
     assert edit(ex, {"bz": "0.4"}, view="one")["ok"]
     assert ex.result.exact.b == (Fraction(1, 3), Fraction(2, 3), Fraction(2, 5))

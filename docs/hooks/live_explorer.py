@@ -150,6 +150,7 @@ def _view_init(values: dict[str, Any]) -> dict[str, Any]:
                 continue
         init[key] = value
     init["show_readout"] = True
+    init["show_controls"] = True  # the notebook's text (and its exercises) use the boxes
     return init
 
 
@@ -195,9 +196,10 @@ def live_explorer_html(init: dict[str, Any]) -> str:
     return (
         f'<div class="tn-explorer-live" data-explorer="{data}">'
         '<p class="tn-explorer-caption">This is the notebook\'s explorer, live in your browser: '
-        "turn the view, drag A, B or C, flip the order, show the parallelogram. There is no "
-        "Python kernel here: this page computes with its own exact arithmetic, which prints the "
-        "same numbers as the package. The notebook's sliders and text boxes are not shown.</p>"
+        "turn the view, drag A, B or C, type exact values in the boxes under it, flip the order, "
+        "show the parallelogram. There is no Python kernel here: this page computes with its "
+        "own exact arithmetic, which prints the same numbers as the package; the notebook's "
+        "code cells do not run.</p>"
         '<noscript><div class="admonition note tn-widget-note tn-explorer-fallback">'
         '<p class="admonition-title">Interactive widget</p>'
         "<p>With JavaScript on, this page shows the explorer live. Here is a picture of it.</p>"

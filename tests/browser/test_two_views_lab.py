@@ -6,6 +6,8 @@ key that moves A.y; view 1 types B.z while view 0 drags B in the view seen along
 moves B.x and B.y). All four edits are made in one task of the page, so none of them has
 come back from the kernel when the next is made. Each edit names only the coordinates the
 learner changed, so the kernel ends with all four, exactly, and both views show that.
+A learner edits B while a cell runs that sets C: both are kept, and while the kernel is
+busy the readout says it is waiting for it instead of showing the old numbers as current.
 Uses the run's shared JupyterLab server (the ``lab`` fixture, conftest.py).
 """
 
@@ -16,6 +18,9 @@ import time
 from typing import Any
 
 from jupyterlab_support import GRID, Lab, open_notebook, output_text, run_all, run_cell
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+from trinormal.explorer.view import WAITING
 
 CELLS = [
     "from trinormal.explorer import Explorer\nex = Explorer()\nex",
@@ -103,3 +108,67 @@ def test_two_views_editing_one_vertex_at_once_keep_both_edits(lab: Lab, page: An
     while (shown := page.evaluate(SHOWN)) != [want, want]:
         assert time.monotonic() < deadline, (shown, want)
         page.wait_for_timeout(100)
+
+
+#: A cell that keeps the kernel busy until the test has made its edits, then sets C.
+BUSY = """\
+import os, time
+while not os.path.exists({flag!r}):
+    time.sleep(0.05)
+ex.set(c=("-1/3", "2/3", "0.25"))"""
+
+#: The view's readout status, its B and C boxes, and where it draws B and C.
+STATUS = """() => {
+  const root = document.querySelector('.tnx-root');
+  const status = root.querySelector('.tnx-status');
+  return {state: status.dataset.state, text: status.textContent,
+          boxes: [...root.querySelectorAll('.tnx-exact')].slice(3).map((e) => e.value),
+          drawn: root.tnxProject().values.slice(1)};
+}"""
+
+
+def test_an_edit_of_b_while_a_cell_sets_c_keeps_both(lab: Lab, page: Any) -> None:
+    flag = lab.root / "edits_made"
+    flag.unlink(missing_ok=True)
+    cells = [CELLS[0], BUSY.format(flag=flag.name), CELLS[2]]
+    lab.write_notebook("busy_kernel.ipynb", cells)
+    open_notebook(lab, page, "busy_kernel.ipynb")
+    run_cell(page, 0)
+    page.wait_for_selector('.tnx-root [data-vertex="B"]', timeout=60_000)
+    run_cell(page, 1)  # the kernel is busy until the flag exists
+    page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='busy']")
+    page.evaluate(
+        """() => {
+          const root = document.querySelector('.tnx-root');
+          const box = root.querySelectorAll('.tnx-exact')[5];  // B.z
+          box.value = '2/7';
+          box.dispatchEvent(new Event('input', {bubbles: true}));
+          box.dispatchEvent(new KeyboardEvent('keydown', {key: 'Enter', bubbles: true}));
+          root.querySelector('[data-vertex="B"]').dispatchEvent(new KeyboardEvent('keydown',
+              {key: 'ArrowUp', bubbles: true, cancelable: true}));  // B.y one grid step up
+        }"""
+    )
+    # the readout says the kernel has not answered instead of showing its old N as current
+    page.wait_for_function(f"() => ({STATUS})().state === 'waiting'", timeout=10_000)
+    waiting = page.evaluate(STATUS)
+    assert waiting["text"] == WAITING, waiting
+    assert waiting["boxes"][:3] == ["1", "0.1", "2/7"], waiting  # the view draws its edits
+    flag.touch()  # the cell sets C; then the kernel reads the two edits made before it
+    run_cell(page, 2)
+    texts = kernel(page, 1)["texts"]
+    assert [texts[k] for k in ("bx", "by", "bz")] == ["1", "0.1", "2/7"], texts
+    assert [texts[k] for k in ("cx", "cy", "cz")] == ["-1/3", "2/3", "0.25"], texts
+    boxes = ["1", "0.1", "2/7", "-1/3", "2/3", "0.25"]
+    want = [boxes, [boxes[:3], boxes[3:]]]
+    try:
+        page.wait_for_function(
+            f"""(want) => {{
+              const s = ({STATUS})();
+              return s.state !== 'waiting' && JSON.stringify([s.boxes, s.drawn]) === want;
+            }}""",
+            arg=json.dumps(want, separators=(",", ":")),
+            timeout=10_000,
+        )
+    except PlaywrightTimeout:
+        shown = page.evaluate(STATUS)
+        raise AssertionError(f"the view shows {shown}, not {want}") from None

@@ -21,11 +21,12 @@ from trinormal.tolerances import DEFAULT_TOL
 #: Two vertices given in exercise 05-collinear; the student supplies the third.
 COLLINEAR_AB: tuple[tuple[int, int, int], tuple[int, int, int]] = ((1, 2, 0), (3, 3, 1))
 
-#: The triangle scaled in exercise 05-scale-area, and the factor.
+#: The triangle scaled in exercise 05-scale-area, and the factor: the scaled triangle fits the
+#: explorer's default range (-5 to 5), so a student can type it in the boxes.
 SCALE_ABC: tuple[tuple[int, int, int], tuple[int, int, int], tuple[int, int, int]] = (
-    (1, 0, 2),
-    (3, 1, 0),
-    (-1, 2, 1),
+    (1, 0, 1),
+    (1, 1, 0),
+    (-1, 1, 1),
 )
 SCALE_FACTOR = 3
 

@@ -13,7 +13,7 @@ EXERCISES = (
         "07-needle-degenerate",
         "With the default tol, is (0,0,0), (1,0,0), (2,3e-12,0) degenerate? (True/False)",
         expected=lambda: triangle_normal(*NEEDLE).degenerate,
-        hint="Compute |N| and the longest side L (here C − A), then compare |N| / L² with "
+        hint="Compute |N| and the longest of the three sides, L, then compare |N| / L² with "
         "DEFAULT_TOL = 1e-12: degenerate means |N| <= tol · L², whichever corner comes first.",
     ),
 )

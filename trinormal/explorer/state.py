@@ -28,7 +28,15 @@ from typing import Any
 from trinormal.core import TriangleNormal, parse_coordinate
 from trinormal.explorer.readout import announcement, readout_rows
 
-__all__ = ["coordinate_text", "exact_value", "grid_text", "snap", "step_decimals", "view_state"]
+__all__ = [
+    "coordinate_text",
+    "exact_value",
+    "grid_text",
+    "merge_edit",
+    "snap",
+    "step_decimals",
+    "view_state",
+]
 
 
 def exact_value(text: str, name: str = "value") -> Fraction:
@@ -147,6 +155,45 @@ def grid_text(value: Fraction | float, step: str) -> str:
     places = step_decimals(step)
     snapped = snap(value, step)
     return f"{Decimal(snapped.numerator) / Decimal(snapped.denominator):.{places}f}"
+
+
+def merge_edit(
+    edit: dict[str, Any], base: int, set_at: dict[str, int]
+) -> tuple[dict[str, Any], list[str]]:
+    """Split a learner's edit into what is kept and what a later cell overwrote.
+
+    The rule of the explorer's edit protocol, per field: an edit made against the
+    kernel's version ``base`` keeps every field (``"bx"``, ``"winding"``, ...) that no
+    cell set since; a field the kernel set after ``base`` (``set_at[field] > base``)
+    keeps the cell's value. So a drag of B survives a cell that sets C, and a cell
+    that sets B wins over a drag of B that began before it.
+
+    Parameters
+    ----------
+    edit : dict
+        The fields the learner changed and their new values.
+    base : int
+        The kernel's version the edit was made against.
+    set_at : dict of str to int
+        For each field, the version at which the kernel last set it (absent: never).
+
+    Returns
+    -------
+    kept : dict
+        The part of ``edit`` to apply.
+    overwritten : list of str
+        The fields a cell set after the edit began, in the edit's order.
+
+    Examples
+    --------
+    >>> merge_edit({"bx": "2", "by": "0.5"}, 3, {"cx": 4, "cy": 4, "cz": 4})
+    ({'bx': '2', 'by': '0.5'}, [])
+    >>> merge_edit({"cx": "2", "winding": "ACB"}, 3, {"cx": 4, "cy": 4, "cz": 4})
+    ({'winding': 'ACB'}, ['cx'])
+    """
+    overwritten = [key for key in edit if set_at.get(key, 0) > base]
+    kept = {key: value for key, value in edit.items() if key not in overwritten}
+    return kept, overwritten
 
 
 def _floats(xs: tuple[float, float, float]) -> list[float]:

@@ -14,11 +14,21 @@ names each coordinate it moved, up to three), the winding, the decimals or a
 toggle. So two views of one explorer that edit different coordinates of one
 vertex at once both land, and for one coordinate the edit that reaches the
 kernel last wins. ``version`` counts the kernel's own changes (a cell calling
-``ex.set``, a trait set from code); an edit made against an older version is
-refused, so a browser's late answer never overwrites what a cell set. The
-kernel applies an accepted edit with the exact core and answers in one update:
-the new values, ``state`` and ``last_edit`` (which edit this was, and whether
-it was taken).
+``ex.set``, a trait set from code) and ``set_at`` says, per field, at which
+version the kernel last set it (a vertex set from code sets its three
+coordinates). The kernel keeps every field of an edit that no cell set since
+the edit's ``base``; a field a cell set after it keeps the cell's value
+(``merge_edit`` in ``trinormal.explorer.state``). So a drag of B made while a
+cell sets C keeps both, and a browser's late answer never overwrites what a cell
+set. The kernel applies the kept part with the exact core and answers in one
+update: the new values, ``state`` and ``last_edit`` (which edit this was,
+whether it was taken, and which fields a cell had overwritten).
+
+Once an [`Explorer`][trinormal.widgets.Explorer] owns the view, a vertex, the
+winding or the decimals set on the view from code go through
+[`Explorer.set`][trinormal.widgets.Explorer.set]; what the Explorer computes or
+fixes when it is created (``state``, ``bounds``, ``step``, ...) cannot be set
+from code: that raises, it is never silently undone.
 
 Examples
 --------
@@ -28,18 +38,19 @@ Examples
 >>> v.a = ["0.5", "0", "0"]  # set from code: a new version
 >>> v.version
 1
->>> v._handle_custom_msg({"edit": {"bx": "2"}, "seq": 1, "view": "w", "base": 0}, [])
->>> v.b, v.last_edit["ok"], v.last_edit["stale"]  # made against version 0: refused
-(['1', '0', '0'], False, True)
->>> v._handle_custom_msg({"edit": {"bx": "2"}, "seq": 2, "view": "w", "base": 1}, [])
+>>> v.set_at["ax"], v.set_at.get("bx")
+(1, None)
+>>> v._handle_custom_msg({"edit": {"ax": "2", "bx": "2"}, "seq": 1, "view": "w", "base": 0}, [])
+>>> v.a, v.b, v.last_edit["overwritten"]  # A was set after version 0: the cell's A stays
+(['0.5', '0', '0'], ['2', '0', '0'], ['ax'])
 >>> v._handle_custom_msg({"edit": {"bz": "1/3"}, "seq": 1, "view": "w2", "base": 1}, [])
->>> v.b, v.last_edit["ok"], v.version  # both taken; a browser edit is not a new version
+>>> v.b, v.last_edit["ok"], v.version  # taken; a browser edit is not a new version
 (['2', '0', '1/3'], True, 1)
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
@@ -48,10 +59,11 @@ import anywidget
 import traitlets
 
 from trinormal.colors import palette
+from trinormal.explorer.state import merge_edit
 from trinormal.fields import fields_spec
 from trinormal.validation import MAX_PRECISION, MIN_PRECISION
 
-__all__ = ["BUNDLE", "COORDINATES", "EDIT_FIELDS", "ExplorerView"]
+__all__ = ["BUNDLE", "COORDINATES", "EDIT_FIELDS", "WAITING", "ExplorerView"]
 
 #: Keys of the nine coordinates, in order: A's x, y, z, then B's, then C's.
 COORDINATES: tuple[str, ...] = tuple(p + q for p in "abc" for q in "xyz")
@@ -64,6 +76,28 @@ EDIT_FIELDS: tuple[str, ...] = (*COORDINATES, *EDITABLE[3:])
 
 #: An edit handler: applies one edit and returns why it was refused, or None.
 EditHandler = Callable[[dict[str, Any]], "str | None"]
+
+#: The owner's setter: sets one of `OWNED` from code (`Explorer.set`), or raises.
+CodeSetter = Callable[[str, Any], None]
+
+#: The traits an owner (`Explorer`) sets itself when code sets them on the view.
+OWNED = ("a", "b", "c", "winding", "precision")
+
+#: The traits an owner computes or fixes when it is created, and how to change them instead.
+FIXED = {
+    "step": "create the Explorer with step=",
+    "bounds": "create the Explorer with min= and max=",
+    "precision_range": "the decimals run from 0 to 15",
+    "state": "the Explorer computes it; change the triangle with ex.set(...)",
+    "fields": "the readout's rows come from trinormal.fields with the state",
+    "message": "the Explorer writes it when it refuses a value",
+    "version": "the Explorer counts its own changes",
+    "set_at": "the Explorer records what code set",
+    "last_edit": "the Explorer answers the browser's edits",
+}
+
+#: What the readout says while a learner's edits wait for a busy kernel.
+WAITING = "Waiting for the kernel…"
 
 #: The bundled ES module (three.js included), built by ``make js``.
 BUNDLE = Path(__file__).with_name("static") / "explorer.js"
@@ -100,8 +134,15 @@ class ExplorerView(anywidget.AnyWidget):
     version : int
         Counts the changes made by the kernel; browser edits name the version
         they were made against.
+    set_at : dict of str to int
+        Per field (``"ax"`` … ``"cz"``, ``"winding"``, ...), the version at which
+        the kernel last set it.
     last_edit : dict
-        The last edit the kernel answered: ``view``, ``seq``, ``ok``, ``stale``, ``error``.
+        The last edit the kernel answered: ``view``, ``seq``, ``ok``, ``stale``
+        (a cell had set some of its fields since), ``overwritten`` (those fields)
+        and ``error``.
+    waiting : str
+        What the readout says while the view's edits wait for a busy kernel.
     """
 
     _esm = BUNDLE
@@ -125,44 +166,74 @@ class ExplorerView(anywidget.AnyWidget):
     ).tag(sync=True)
     message = traitlets.Unicode("").tag(sync=True)
     version = traitlets.Int(0).tag(sync=True)
+    set_at = traitlets.Dict().tag(sync=True)
     last_edit = traitlets.Dict().tag(sync=True)
+    waiting = traitlets.Unicode(WAITING).tag(sync=True)
 
     def __init__(self, **kwargs: Any) -> None:
-        self._editing = 1  # the starting values are version 0
+        self._own = 1  # the starting values are version 0
         super().__init__(**kwargs)
-        self._editing = 0
+        self._own = 0
         #: Applies a browser edit (set by `Explorer`); without one, edits set the traits.
         self.edit_handler: EditHandler | None = None
+        #: Sets a vertex, the winding or the decimals from code (set by `Explorer`).
+        self.code_setter: CodeSetter | None = None
         self.on_msg(self._on_msg)
 
     @traitlets.observe(*EDITABLE)
     def _kernel_changed(self, change: Any) -> None:
-        if not self._editing:
-            self.version += 1  # a change the kernel made: edits made before it are stale
+        if not self._own:  # a change code made on the view: edits made before it lose it
+            name = change["name"]
+            self.mark_set([name + q for q in "xyz"] if name in "abc" else [name])
+
+    @traitlets.validate(*OWNED)
+    def _set_from_code(self, proposal: Any) -> Any:
+        name = proposal["trait"].name
+        if self._own or self.code_setter is None:
+            return proposal["value"]
+        self.code_setter(name, proposal["value"])  # checks and sets it, or raises
+        return getattr(self, name)
+
+    @traitlets.validate(*FIXED)
+    def _refuse_from_code(self, proposal: Any) -> Any:
+        name = proposal["trait"].name
+        if self._own or self.code_setter is None:
+            return proposal["value"]
+        raise traitlets.TraitError(f"ExplorerView.{name} cannot be set from code: {FIXED[name]}")
 
     @contextmanager
-    def browser_edit(self) -> Iterator[None]:
-        """Apply changes that answer a browser edit (they do not make a new version)."""
-        self._editing += 1
+    def own_changes(self) -> Iterator[None]:
+        """Write traits as the view's owner or its edit handler (no new version, no check)."""
+        self._own += 1
         try:
             yield
         finally:
-            self._editing -= 1
+            self._own -= 1
+
+    def mark_set(self, fields: Iterable[str]) -> None:
+        """Record that the kernel set ``fields`` now: a new version, and ``set_at`` for each."""
+        with self.own_changes():
+            self.version += 1
+            self.set_at = {**self.set_at, **dict.fromkeys(fields, self.version)}
 
     def _on_msg(self, _widget: Any, content: Any, _buffers: Any) -> None:
         if not isinstance(content, dict) or not isinstance(content.get("edit"), dict):
             return
         ident = {"view": str(content.get("view", "")), "seq": content.get("seq", 0)}
-        if content.get("base") != self.version:
-            self.last_edit = {**ident, "ok": False, "stale": True, "error": ""}
-            return
-        edit = content["edit"]
-        with self.hold_sync(), self.browser_edit():
+        base = content.get("base")
+        if not isinstance(base, int) or isinstance(base, bool):
+            base = -1  # an edit that names no version is refused as a whole
+        edit, overwritten = merge_edit(content["edit"], base, self.set_at)
+        answer = {**ident, "stale": bool(overwritten), "overwritten": overwritten}
+        with self.hold_sync(), self.own_changes():
+            if overwritten and not edit:
+                self.last_edit = {**answer, "ok": False, "error": ""}
+                return
             try:
                 error = (self.edit_handler or self._set_traits)(edit)
             except Exception as problem:  # a message handler must never raise
                 error = str(problem)
-            self.last_edit = {**ident, "ok": error is None, "stale": False, "error": error or ""}
+            self.last_edit = {**answer, "ok": error is None, "error": error or ""}
 
     def _set_traits(self, edit: dict[str, Any]) -> str | None:
         unknown = sorted(set(edit) - set(EDIT_FIELDS))

@@ -255,6 +255,7 @@ class Explorer:
         )
         self.view.add_class("trinormal-explorer")
         self.view.edit_handler = self._edit
+        self.view.code_setter = self._code_set
         self.controls: dict[str, Control] = {}
         self.inputs: dict[str, Control] = {}
         for key in COORDINATES:
@@ -285,15 +286,20 @@ class Explorer:
         def write(value: Any) -> None:
             number = _check_in_range(_name(key), float(value), self.min, self.max)
             text = coordinate_text(number, _name(key))
-            self._apply({**self._texts, key: text}, self.result.winding.value, self._precision)
+            texts = {**self._texts, key: text}
+            self._apply(texts, self.result.winding.value, self._precision, [key])
 
         return write
 
     def _typist(self, key: str) -> Callable[[Any], None]:
         def write(value: Any) -> None:
-            self._edit({key: value})
+            self._edit({key: value}, marked=[key])
 
         return write
+
+    def _code_set(self, name: str, value: Any) -> None:
+        """Apply a vertex, winding or decimals that code set on the view (``ex.view.a = ...``)."""
+        self.set(**{name: value})
 
     # ------------------------------------------------------------------ reading values
 
@@ -392,12 +398,20 @@ class Explorer:
         texts = {**self._texts, **self._read_points(points)}
         w = self.result.winding.value if winding is None else _check_winding(winding)
         p = self._precision if precision is None else check_precision(precision)
-        self._apply(texts, w, p)
+        marked = [key for key in COORDINATES if key[0] in points]
+        marked += [k for k, v in (("winding", winding), ("precision", precision)) if v is not None]
+        self._apply(texts, w, p, marked)
 
     # ------------------------------------------------------------------ updates
 
-    def _apply(self, texts: dict[str, str], winding: str, precision: int) -> None:
-        """Recompute from exact text and bring every surface up to date; never raises."""
+    def _apply(
+        self, texts: dict[str, str], winding: str, precision: int, marked: Iterable[str] = ()
+    ) -> None:
+        """Recompute from exact text and bring every surface up to date; never raises.
+
+        ``marked`` names the fields code set (a cell's ``set()``): the view records them, so a
+        learner's edit of them made before now loses to the cell (`merge_edit`).
+        """
         try:
             result = self._compute(texts, winding)
         except Exception as error:  # a callback must never raise: show the problem instead
@@ -408,16 +422,19 @@ class Explorer:
             return
         self._texts, self._precision, self.result = dict(texts), precision, result
         self.message.value = ""
-        self._refresh()
+        self._refresh(marked)
 
     def update(self) -> None:
         """Recompute the result from the current values and refresh every surface."""
         self._apply(self._texts, self.result.winding.value, self._precision)
 
-    def _refresh(self) -> None:
+    def _refresh(self, marked: Iterable[str] = ()) -> None:
         """Push the current state to the view (one update), the readout and the snapshot."""
         r, p = self.result, self._precision
-        with self.view.hold_sync():
+        marked = list(marked)
+        with self.view.hold_sync(), self.view.own_changes():
+            if marked:
+                self.view.mark_set(marked)
             for i, name in enumerate("abc"):
                 point = [self._texts[k] for k in COORDINATES[3 * i : 3 * i + 3]]
                 if getattr(self.view, name) != point:
@@ -435,14 +452,16 @@ class Explorer:
             '<span role="alert" style="color:#B3261E">'
             f"{html.escape(str(error), quote=False)}</span>"
         )
-        self.view.message = str(error)
+        with self.view.own_changes():
+            self.view.message = str(error)
 
-    def _edit(self, edit: dict[str, Any]) -> str | None:
-        """Apply one edit from the browser (or a typed value); return why it was refused.
+    def _edit(self, edit: dict[str, Any], marked: Iterable[str] = ()) -> str | None:
+        """Apply one edit from the browser (or a value typed from code); return why it was refused.
 
         An edit names only what changed (``{"ay": "2/7"}``, the winding, a toggle), so
         edits to other coordinates of the same vertex, made at the same time in another
-        view, are kept. All of it is checked before anything moves.
+        view, are kept. All of it is checked before anything moves. ``marked``: the
+        fields code set this way (``ex.inputs["bx"].value = ...``), as in `_apply`.
         """
         texts = dict(self._texts)
         winding, precision = self.result.winding.value, self._precision
@@ -464,9 +483,10 @@ class Explorer:
         except (TypeError, ValueError) as error:
             self._refuse(error)
             return str(error)
-        for key, on in toggles.items():
-            setattr(self.view, key, on)
-        self._apply(texts, winding, precision)
+        with self.view.own_changes():
+            for key, on in toggles.items():
+                setattr(self.view, key, on)
+        self._apply(texts, winding, precision, marked)
         return None
 
     def _typed_text(self, key: str, value: Any) -> str:

@@ -32,7 +32,7 @@ def normal_transform_figure(sx: float = 2.0, sy: float = 1.0, count: int = 16) -
     -------
     matplotlib.figure.Figure
         Three panels: the surface and its normals; the stretched copy with the
-        normals multiplied by M (dashed black, not perpendicular); the stretched
+        normals multiplied by M (black, not perpendicular); the stretched
         copy with the normals multiplied by M⁻ᵀ (the ``N`` colour, perpendicular).
         ``fig.alt_text`` gives the largest error of each.
     """
@@ -91,7 +91,7 @@ def normal_transform_figure(sx: float = 2.0, sy: float = 1.0, count: int = 16) -
     fig.alt_text = (  # type: ignore[attr-defined]
         f"Three panels. Left: a circle, the end view of a cylinder, with {count} outward "
         f"normals at right angles to it. Middle: the cylinder stretched ({stretch}) into an "
-        "ellipse, with the normals multiplied by the same matrix: dashed arrows that lean "
+        "ellipse, with the normals multiplied by the same matrix: black arrows that lean "
         f"away from the perpendicular by up to {format_number(err_wrong, 1)} degrees. Right: "
         "the same ellipse with the normals multiplied by the inverse transpose: every arrow "
         f"is at right angles to the surface (largest error {format_number(err_right, 1)} "

@@ -56,8 +56,10 @@ function readoutRows(out, winding) {
 
 /**
  * A model with the part of anywidget's API the view uses (get, send, on, off) and its edit
- * protocol: the view sends { edit, seq, view, base }; the host's own changes (`update`) count
- * as new versions, and an edit made against an older version is refused, as the kernel does.
+ * protocol, the kernel's (trinormal.explorer.state.merge_edit): the view sends
+ * { edit, seq, view, base }; the host's own changes (`update`) count as new versions and
+ * record, per field, the version that set it (`set_at`; a vertex sets its three coordinates);
+ * an edit keeps every field the host did not set after its base, and loses the others.
  * An edit names coordinates one by one ({ ay: "0.3" }); the model applies them to its own
  * values of the vertex, as the kernel does, so the other coordinates stay as they are now.
  * `state` follows a, b, c, winding and precision. `onEdit(changes)` receives an accepted edit
@@ -82,6 +84,7 @@ export function createModel(initial, onEdit, maxPrecision) {
     palette: C.palette || {},
     message: "",
     version: 0,
+    set_at: {},
     last_edit: {},
     ...initial,
   };
@@ -107,7 +110,9 @@ export function createModel(initial, onEdit, maxPrecision) {
     for (const k of changed) data[k] = values[k];
     if (changed.length && !answering) {
       data.version += 1;
-      changed.push("version");
+      const fields = changed.flatMap((k) => ("abc".includes(k) ? [..."xyz"].map((q) => k + q) : [k]));
+      data.set_at = { ...data.set_at, ...Object.fromEntries(fields.map((k) => [k, data.version])) };
+      changed.push("set_at", "version");
     }
     for (const k of changed) emit(k);
     if (changed.some((k) => KEYS.includes(k))) recompute();
@@ -133,20 +138,24 @@ export function createModel(initial, onEdit, maxPrecision) {
   function send(content) {
     if (!content || typeof content.edit !== "object") return;
     const ident = { view: String(content.view || ""), seq: content.seq || 0 };
-    if (content.base !== data.version) {
-      data.last_edit = { ...ident, ok: false, stale: true, error: "" };
+    const base = Number.isInteger(content.base) ? content.base : -1;
+    const overwritten = Object.keys(content.edit).filter((k) => (data.set_at[k] ?? 0) > base);
+    const kept = Object.fromEntries(Object.entries(content.edit).filter(([k]) => !overwritten.includes(k)));
+    const answer = { ...ident, stale: overwritten.length > 0, overwritten, error: "" };
+    if (overwritten.length && !Object.keys(kept).length) {
+      data.last_edit = { ...answer, ok: false };
       emit("last_edit");
       return;
     }
     answering = true;
     try {
-      const values = wholeValues(content.edit);
+      const values = wholeValues(kept);
       if (onEdit) onEdit(values);
       else update(values);
     } finally {
       answering = false;
     }
-    data.last_edit = { ...ident, ok: true, stale: false, error: "" };
+    data.last_edit = { ...answer, ok: true };
     emit("last_edit");
   }
 

@@ -122,9 +122,13 @@ export function createControls(parent, view) {
   return {
     el: panel,
     update,
-    /** Forget what was typed but not sent: the host has set new values. */
-    reset() {
-      for (const p of "abc") for (const { box } of rows[p].cells) delete box.dataset.dirty;
+    /** Forget what was typed but not sent in the boxes of `keys` ("bx"): the host set them. */
+    reset(keys) {
+      for (const p of "abc") {
+        rows[p].cells.forEach(({ box }, i) => {
+          if (keys.includes(p + "xyz"[i])) delete box.dataset.dirty;
+        });
+      }
     },
     dispose() {
       panel.remove();

@@ -6,11 +6,14 @@
  *   model.send({ edit: { cx: "0.4", cy: "1.1" }, seq, view, base: version }),
  * made against the host's `version` (which counts the host's own changes). A coordinate is
  * named by its key ("ax" … "cz"), so two views of one explorer editing different coordinates
- * of one vertex at once do not undo each other. The host refuses an edit made against an
- * older version, so a late edit never overwrites what a cell set, and answers with its values
- * and `last_edit` ({ view, seq, ok }). Until that answer the view draws its own edit, per
- * coordinate (so a drag follows the pointer); a new `version` from the host ends a drag in
- * progress and drops whatever the view had not yet had answered (index.js).
+ * of one vertex at once do not undo each other. The host records, per field, the version at
+ * which it last set it (`set_at`); it keeps every field of an edit that it did not set since
+ * the edit's base, and keeps its own value of a field it set after (a drag of B survives a
+ * cell that sets C; a cell that sets B wins over a drag of B begun before it). It answers
+ * with its values and `last_edit` ({ view, seq, ok, overwritten }). Until that answer the
+ * view draws its own edit, per coordinate (so a drag follows the pointer); a new `version`
+ * drops only the edits of fields the host set after them (index.js). While an edit waits
+ * for its answer longer than a busy kernel's moment, the readout says so.
  */
 import { parseCoordinate } from "./numbers.js";
 
@@ -25,11 +28,14 @@ const DRAWN = new Set([...COORDINATE, "winding", "precision", "show_parallelogra
  *   get(key): the host's value, with the view's unanswered edits over it (a vertex: per coordinate);
  *   edit(changes): send a learner's move as an identified edit, and draw it until the answer;
  *   answered(): the host's `last_edit` answered this view: drop the edits it answered (true when it was this view's);
- *   drop(): the host changed its values itself (a cell ran): forget every unanswered edit.
+ *   overwritten(): the host set values itself (a cell ran): drop the edits of the fields it set
+ *     after they were made, and return those fields;
+ *   waitingSince(): when the oldest edit still waiting for its answer was sent (ms), or null.
  */
-export function createEdits(model, viewId) {
+export function createEdits(model, viewId, now = () => performance.now()) {
   let seq = 0;
-  let pending = {}; // key -> { value, seq }: the view's own edits the host has not answered yet
+  let pending = {}; // key -> { value, seq, base }: the view's own edits the host has not answered yet
+  const unanswered = new Map(); // seq -> when it was sent
 
   function get(key) {
     const coords = COORDS[key];
@@ -40,24 +46,34 @@ export function createEdits(model, viewId) {
 
   function edit(changes) {
     seq += 1;
+    const base = model.get("version") ?? 0;
     for (const [key, v] of Object.entries(changes)) {
       // a typed value the view cannot read ("abc") is not drawn: the host will refuse it
       const readable = !COORDINATE.has(key) || Number.isFinite(parseCoordinate(v));
-      if (DRAWN.has(key) && readable) pending[key] = { value: v, seq };
+      if (DRAWN.has(key) && readable) pending[key] = { value: v, seq, base };
     }
-    model.send({ edit: changes, seq, view: viewId, base: model.get("version") ?? 0 });
+    unanswered.set(seq, now());
+    model.send({ edit: changes, seq, view: viewId, base });
   }
 
   function answered() {
     const answer = model.get("last_edit") || {};
     if (answer.view !== viewId) return false;
     for (const [key, p] of Object.entries(pending)) if (p.seq <= answer.seq) delete pending[key];
+    for (const s of unanswered.keys()) if (s <= answer.seq) unanswered.delete(s);
     return true;
   }
 
-  function drop() {
-    pending = {};
+  function overwritten() {
+    const setAt = model.get("set_at") || {};
+    const lost = Object.keys(pending).filter((key) => (setAt[key] ?? 0) > pending[key].base);
+    for (const key of lost) delete pending[key];
+    return lost;
   }
 
-  return { get, edit, answered, drop };
+  function waitingSince() {
+    return unanswered.size ? Math.min(...unanswered.values()) : null;
+  }
+
+  return { get, edit, answered, overwritten, waitingSince };
 }

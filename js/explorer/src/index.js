@@ -60,6 +60,7 @@ function sync(view) {
   const winding = view.get("winding") === "ACB" ? "ACB" : "ABC";
   view.toolbar.update();
   updatePanels(view, st);
+  view.readout.waiting(view.waiting ? view.model.get("waiting") || "" : "");
   if (!pts) {
     view.drawing.root.visible = false;
     view.stage.requestRender();
@@ -85,10 +86,37 @@ function repaint(view) {
   sync(view);
 }
 
+// how long an edit may wait for its answer before the readout says the kernel is busy (ms):
+// longer than a kernel's answer during a drag, short enough to see before reading the numbers
+const WAIT_MS = 400;
+
+/**
+ * Whether the view's edits have waited longer than WAIT_MS for the host (a cell is running):
+ * the readout then says so instead of showing the host's last numbers as current. Checked
+ * after every edit and answer; `changed` redraws when it turns on or off.
+ */
+function watchWaiting(view, edits, changed) {
+  let timer = 0;
+  function check() {
+    clearTimeout(timer);
+    const since = edits.waitingSince();
+    const due = since === null ? Infinity : since + WAIT_MS - performance.now();
+    const waiting = due <= 0;
+    if (waiting !== view.waiting) {
+      view.waiting = waiting;
+      changed();
+    }
+    if (!waiting && due !== Infinity) timer = setTimeout(check, due);
+  }
+  check.stop = () => clearTimeout(timer);
+  return check;
+}
+
 /**
  * Follow the model: changes are gathered and drawn once (a drag draws in the frame that moved
  * the vertex, through view.flush); an answer to an edit drops what it answered; a new version
- * from the host ends a drag and drops every unanswered edit. Returns the function that stops.
+ * from the host drops the edits of the fields it set since they were made, and ends a drag of
+ * a vertex it set. Returns the function that stops.
  */
 function followModel(view, edits, interaction) {
   const { model } = view;
@@ -109,20 +137,29 @@ function followModel(view, edits, interaction) {
   };
   const handlers = {};
   for (const key of KEYS) handlers[key] = key === "palette" ? () => repaint(view) : onChange;
+  const waiting = watchWaiting(view, edits, onChange);
+  view.checkWaiting = waiting;
   // the host answered an edit: what it answered is no longer drawn from the view's own copy
   handlers.last_edit = () => {
     if (edits.answered()) onChange();
+    waiting();
   };
-  // the host changed its values itself (a cell ran): that is the truth from now on
+  // the host changed its values itself (a cell ran): what it set is the truth from now on;
+  // the view's edits of everything else stay (the host keeps them too)
+  let seen = model.get("version") ?? 0;
   handlers.version = () => {
-    interaction.cancel();
-    edits.drop();
-    view.controls.reset();
+    const setAt = model.get("set_at") || {};
+    const set = Object.keys(setAt).filter((key) => setAt[key] > seen);
+    seen = model.get("version") ?? 0;
+    edits.overwritten();
+    if (view.dragged && set.some((key) => key[0] === view.dragged.toLowerCase())) interaction.cancel();
+    view.controls.reset(set);
     view.hostMoved = true;
     onChange();
   };
   for (const [key, handler] of Object.entries(handlers)) model.on("change:" + key, handler);
   return () => {
+    waiting.stop();
     for (const [key, handler] of Object.entries(handlers)) model.off("change:" + key, handler);
   };
 }
@@ -134,7 +171,11 @@ function render({ model, el }) {
   const viewId = `v${++views}-${Math.random().toString(36).slice(2, 8)}`;
   const parts = createLayout(el);
   const edits = createEdits(model, viewId);
-  const { get, edit } = edits;
+  const { get } = edits;
+  const edit = (changes) => {
+    edits.edit(changes);
+    view.checkWaiting?.();
+  };
   const view = {
     ...parts,
     model,
@@ -142,6 +183,8 @@ function render({ model, el }) {
     dark: isDark(),
     frame: null, // { S, offset: Vector3, includeOrigin, radius, L, t, ... } (framing.js)
     dragging: false,
+    dragged: null, // the vertex being dragged ("A", "B", "C"), or null
+    waiting: false, // the view's edits have waited long for the host (a busy kernel)
     lastGood: null, // last drawable points (data floats)
     hostMoved: false, // the host (a cell, not this view) changed the triangle
     display: null, // display-unit points of the last drawing
@@ -185,8 +228,9 @@ function render({ model, el }) {
       edit(changes);
       view.flush();
     },
-    dragging(on) {
+    dragging(on, name) {
       view.dragging = on;
+      view.dragged = on ? name : null;
       if (!on) sync(view);
     },
   });

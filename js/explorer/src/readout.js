@@ -1,7 +1,9 @@
 /*
  * The readout panel: the host's rows (label and value, in FIELDS order), the status
  * sentence, and a polite live region with the one-line summary for screen readers.
- * Every string comes from `state`: the view prints nothing it computed itself.
+ * Every string comes from `state`: the view prints nothing it computed itself. While the
+ * view's edits wait for a busy kernel, the status says so (the host's `waiting` text) and the
+ * rows, which are the host's last numbers, are marked as not current.
  */
 import { setAttr, setHidden, setText } from "./dom.js";
 
@@ -70,9 +72,20 @@ export function createReadout(parent) {
     }, 350);
   }
 
+  /** `text`: what to say while edits wait for the host ("" when they do not). Call after update. */
+  function waiting(text) {
+    setAttr(panel, "aria-busy", text ? "true" : "false");
+    table.classList.toggle("tnx-waiting", !!text);
+    if (text) {
+      setText(status, text);
+      setAttr(status, "data-state", "waiting");
+    }
+  }
+
   return {
     el: panel,
     update,
+    waiting,
     show(on) {
       setHidden(panel, !on);
     },

@@ -18,23 +18,38 @@ _TRUTH_WORDS = {"true": True, "false": False}
 def read_bool(x: Any) -> bool:
     """Read ``True`` or ``False`` (also numpy and sympy booleans and the words as text).
 
+    Text may be the word alone, a sentence that starts with it (``"False, it is not
+    degenerate"``), or a sentence that names one of the two words and no negation
+    (``"It is true."``).
+
     Examples
     --------
     >>> import numpy as np
     >>> read_bool(" false "), read_bool(True), read_bool(np.array(True)), read_bool(np.bool_(False))
     (False, True, True, False)
+    >>> read_bool("True, the points are on one line."), read_bool("I think it is false")
+    (True, False)
+    >>> read_bool("true or false?")
+    Traceback (most recent call last):
+    ...
+    trinormal.exercises.reading.errors.AnswerError: your answer names both 'true' and 'false': give one
     >>> read_bool(1)
     Traceback (most recent call last):
     ...
     trinormal.exercises.reading.errors.AnswerError: answer True or False (1 is a number)
-    """
+    """  # noqa: E501
     name = type_name(x)
     if name in ("bool", "bool_", "BooleanTrue", "BooleanFalse"):
         return bool(x)
     if name == "ndarray" and str(getattr(x, "dtype", "")) == "bool" and x.size == 1:
         return bool(x.reshape(-1)[0])  # np.array(True), np.array([True]): one truth value
-    if isinstance(x, str) and x.strip().strip(".!").strip().lower() in _TRUTH_WORDS:
-        return _TRUTH_WORDS[x.strip().strip(".!").strip().lower()]
+    if isinstance(x, str):
+        words = re.findall(r"[^\W\d_]+", x.lower())
+        named = {w for w in words if w in _TRUTH_WORDS}
+        if len(named) == 1 and words[0] in named:  # "False, it is not degenerate."
+            return _TRUTH_WORDS[words[0]]
+        if named:  # "It is true." (a sentence naming both, or with a negation, is not read)
+            return _TRUTH_WORDS[read_choice(x, ("true", "false"))]
     if isinstance(x, int | float | Fraction) or looks_like_number(x):
         raise AnswerError(f"answer True or False ({describe(x)} is a number)")
     raise AnswerError("answer True or False")
