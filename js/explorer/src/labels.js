@@ -19,7 +19,9 @@ function project(point, camera, size) {
 }
 
 export class LabelLayer {
-  constructor(container) {
+  /** Labels over `container`; `beforeLayout()` runs before each layout (the marks' sizing). */
+  constructor(container, beforeLayout = null) {
+    this.beforeLayout = beforeLayout;
     this.el = document.createElement("div");
     this.el.className = "tnx-labels";
     container.appendChild(this.el);
@@ -61,6 +63,7 @@ export class LabelLayer {
 
   /** Move every label to its projected place. */
   layout(camera, size) {
+    if (this.beforeLayout) this.beforeLayout();
     const placed = [];
     for (const item of this.items.values()) {
       if (!item.visible || !item.anchor) {

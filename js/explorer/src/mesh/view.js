@@ -203,7 +203,7 @@ function render({ model, el }) {
   view.lod = createLod({ stage, surface: view.surface, outlines: view.outlines, root });
   const culled = () => view.flags.get("cull");
   view.picking = createPicking({ stage, surface: view.surface, root, canPick, culled, frame: () => view.current, onPick: pick });
-  view.toolbar = createToolbar({ flags: view.flags, stage });
+  view.toolbar = createToolbar({ flags: view.flags, stage, root });
   root.prepend(view.toolbar.el);
   function pick(face) {
     model.set("picked", face);
@@ -241,6 +241,7 @@ function render({ model, el }) {
   return () => {
     for (const [event, cb] of events) model.off(event, cb);
     stopKeys();
+    view.toolbar.dispose();
     touch.dispose();
     observer.disconnect();
     stopTheme();
