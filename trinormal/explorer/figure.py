@@ -3,9 +3,10 @@
 The live explorer draws in 3D in the browser (`trinormal.explorer.view`). A
 notebook saved as HTML, a printed page or a static site has no JavaScript view,
 so `Snapshot` draws the same state with matplotlib: the triangle in 3D
-with U and V from A and N from the centre, and bar charts of the components of
-N and of the unit normal, in the package's one colour code
-([`trinormal.colors`][trinormal.colors]).
+with U and V from A and N from the centre (at the scale, and with the label,
+of `trinormal.plotting.scale`, as the 3D view draws it), and bar charts of the
+components of N and of the unit normal, in the package's one colour code
+([`trinormal.colors`][trinormal.colors]). `Explorer.to_png` returns this picture.
 
 Only the moving artists are redrawn on an update; the axes, ticks and panes come
 from a cached bitmap of the same figure, so a new PNG costs a fraction of a
