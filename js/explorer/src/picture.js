@@ -60,8 +60,9 @@ export function frameOf(view, pts, winding = view.get("winding")) {
 const ARROW_PX = 2.4;
 const VERTEX_PX = 6;
 const DEGENERATE_VERTEX_PX = 8;
-const AXIS_PX = 1.5;
+const AXIS_PX = 2;
 const TICK_PX = 2.3;
+const AXIS_NEAREST = 0.4;
 
 /**
  * Size the 3D marks in screen pixels for the camera as it is now: the arrows and the axes by
@@ -81,15 +82,40 @@ function sizeToScreen(view) {
     const m = drawing.vertices[name];
     m.scale.setScalar(px * stage.pixelAt(m.position));
   }
-  // an axis that passes near the camera would swell there: each is as thin as it looks
-  // where it is nearest, each tick sized at its own depth
-  if (!frame.includeOrigin) return;
+  if (frame.includeOrigin) sizeAxes(view);
+}
+
+/**
+ * Draw each axis as thin as AXIS_PX where it is nearest the camera. An axis that passes close
+ * to the camera would swell into a bar across the picture there: the part of it nearer than
+ * AXIS_NEAREST times the target's depth is left out (its arrowhead with it, when that is cut).
+ */
+function sizeAxes(view) {
+  const { stage, drawing, frame } = view;
+  const forward = stage.controls.target.clone().sub(stage.camera.position).normalize();
+  const depthOf = (p) => p.clone().sub(stage.camera.position).dot(forward);
+  const least = AXIS_NEAREST * depthOf(stage.controls.target);
   for (const a of "xyz") {
     const e = new Vector3(a === "x" ? 1 : 0, a === "y" ? 1 : 0, a === "z" ? 1 : 0);
-    const along = Math.max(-frame.L, Math.min(frame.L, stage.camera.position.dot(e)));
-    const near = Math.min(...[-frame.L, along, frame.L].map((k) => stage.pixelAt(e.clone().multiplyScalar(k))));
-    Drawing.placeArrow(drawing.axes[a].arrow, e.clone().multiplyScalar(-frame.L), e.clone().multiplyScalar(frame.L), AXIS_PX * near);
-    for (const tick of drawing.axes[a].ticks) if (tick.visible) tick.scale.setScalar(TICK_PX * stage.pixelAt(tick.position));
+    // the depth along the axis is linear: d(s) = d0 + k s for the point s e, s in [-L, L]
+    const d0 = depthOf(new Vector3());
+    const k = e.dot(forward);
+    let [lo, hi] = [-frame.L, frame.L];
+    if (Math.abs(k) > 1e-12) {
+      const s = (least - d0) / k; // where the axis reaches the least depth
+      if (k > 0) lo = Math.max(lo, s);
+      else hi = Math.min(hi, s);
+    } else if (d0 < least) hi = lo; // all of it too near
+    const { arrow, ticks } = drawing.axes[a];
+    const shown = hi > lo;
+    const r = AXIS_PX * stage.pixelAt(e.clone().multiplyScalar(k > 0 ? lo : hi));
+    Drawing.placeArrow(arrow, e.clone().multiplyScalar(lo), e.clone().multiplyScalar(hi), r, shown);
+    if (shown && hi < frame.L) arrow.head.visible = false;
+    else arrow.head.visible = true;
+    for (const tick of ticks) {
+      if (!tick.visible) continue;
+      tick.scale.setScalar(depthOf(tick.position) < least ? 0 : TICK_PX * stage.pixelAt(tick.position));
+    }
   }
 }
 

@@ -1,8 +1,9 @@
 /*
- * For the projector and for worksheets, in both 3D views: "Full screen" (or the f key while
- * the view has focus) makes the view fill the screen with its readout over it, Esc returns;
- * "Save picture" downloads the view as it is now, at twice its size on the screen, with its
- * labels, as a PNG.
+ * For the projector and for worksheets, in both 3D views, two buttons in the view's top right
+ * corner (as a video player has them, so the toolbar keeps one row): "Full screen" (or the f
+ * key while the view has focus) makes the view fill the screen with its readout over it, Esc
+ * returns; "Save picture" downloads the view as it is now, at twice its size on the screen,
+ * with its labels, as a PNG.
  *
  * Full screen uses the browser's Fullscreen API on the view's root; where a page may not
  * (an iframe without permission), the root is pinned over the window instead and Esc or the
@@ -12,11 +13,33 @@ import { element, listen } from "./dom.js";
 
 const SCALE = 2; // the saved picture's pixels per pixel of the view on the screen
 
-/** A toolbar button (`cls`: the view's button class). */
-function button(cls, text, title, onClick) {
-  const b = element("button", cls, text);
+const SVG = "http://www.w3.org/2000/svg";
+// 24 x 24 outline icons: the four corners going out (full screen), coming in (exit), and an
+// arrow down onto a tray (save)
+const ICONS = {
+  enter: "M4 9V4h5M15 4h5v5M20 15v5h-5M9 20H4v-5",
+  exit: "M9 4v5H4M20 9h-5V4M15 20v-5h5M4 15h5v5",
+  save: "M12 4v11M7 10l5 5 5-5M5 20h14",
+};
+
+/** Set `b`'s icon (an ICONS key) and its name, which is also its tooltip. */
+function setIcon(b, icon, name) {
+  b.setAttribute("aria-label", name);
+  b.title = name;
+  b.querySelector("path").setAttribute("d", ICONS[icon]);
+}
+
+/** An icon button (its name spoken and shown as a tooltip). */
+function button(icon, name, onClick) {
+  const b = element("button", "tn-present-button");
   b.type = "button";
-  b.title = title;
+  const svg = document.createElementNS(SVG, "svg");
+  svg.setAttribute("viewBox", "0 0 24 24");
+  svg.setAttribute("aria-hidden", "true");
+  svg.setAttribute("focusable", "false");
+  svg.appendChild(document.createElementNS(SVG, "path"));
+  b.appendChild(svg);
+  setIcon(b, icon, name);
   b.addEventListener("click", onClick);
   return b;
 }
@@ -31,19 +54,17 @@ function typing(target) {
  * The full-screen toggle of `root` (the view's root element): { button, toggle(), dispose() }.
  * `onChange(on)` runs after the view enters or leaves full screen.
  */
-export function createFullscreen(root, cls, onChange = () => {}) {
+function createFullscreen(root, onChange) {
   const doc = root.ownerDocument || document;
   let pinned = false; // full screen by pinning the root over the window (no Fullscreen API)
-  const b = button(cls, "Full screen", "Full screen (f): the view fills the screen; Esc returns", () => toggle());
-  b.setAttribute("aria-pressed", "false");
+  const b = button("enter", "Full screen", () => toggle());
   b.setAttribute("aria-keyshortcuts", "f");
 
   const isOn = () => pinned || doc.fullscreenElement === root;
   function show() {
     const on = isOn();
     root.classList.toggle("tn-fullscreen", on);
-    b.setAttribute("aria-pressed", String(on));
-    b.textContent = on ? "Exit full screen" : "Full screen";
+    setIcon(b, on ? "exit" : "enter", on ? "Exit full screen" : "Full screen");
     onChange(on);
   }
   function pin(on) {
@@ -139,17 +160,33 @@ export function pictureOf(stage) {
   return new Promise((resolve) => out.toBlob(resolve, "image/png"));
 }
 
-/** The "Save picture" button: downloads pictureOf(stage) as `filename`. */
-export function createSaveButton(stage, cls, filename) {
-  return button(cls, "Save picture", "Save the view as a PNG picture, twice the size shown, for a worksheet", async () => {
-    const blob = await pictureOf(stage);
-    const url = URL.createObjectURL(blob);
-    const a = element("a");
-    a.href = url;
-    a.download = filename;
-    document.body.appendChild(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 0);
-  });
+/** Download pictureOf(stage) as `filename`. */
+async function savePicture(stage, filename) {
+  const blob = await pictureOf(stage);
+  const url = URL.createObjectURL(blob);
+  const a = element("a");
+  a.href = url;
+  a.download = filename;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 0);
+}
+
+/**
+ * The two buttons in the top right corner of the view's stage: Full screen (of `root`) and
+ * Save picture (as `filename`). onFullscreen(on) runs after the view enters or leaves full
+ * screen. Returns the function that removes them.
+ */
+export function addPresentButtons({ root, stage, filename, onFullscreen = () => {} }) {
+  const group = element("div", "tn-present");
+  group.setAttribute("role", "group");
+  group.setAttribute("aria-label", "Picture");
+  const fullscreen = createFullscreen(root, onFullscreen);
+  group.append(fullscreen.button, button("save", "Save picture", () => savePicture(stage, filename)));
+  stage.canvas.parentElement.appendChild(group);
+  return () => {
+    fullscreen.dispose();
+    group.remove();
+  };
 }

@@ -4,7 +4,7 @@
  * edits.js); the others move the camera only.
  */
 import { element, setAttr, setText } from "./dom.js";
-import { createFullscreen, createSaveButton } from "./present.js";
+import { addPresentButtons } from "./present.js";
 
 const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
 
@@ -48,10 +48,10 @@ export function createToolbar(bar, { get, edit, stage, reset, onFullscreen }) {
     unit,
   );
 
-  // --- for the projector and worksheets (present.js): full screen, save the picture
+  // --- for the projector and worksheets (present.js): Full screen and Save picture, in the
+  // view's corner so this toolbar keeps one row
   const root = bar.closest(".tn-view") || bar.parentElement;
-  const fullscreen = createFullscreen(root, "tnx-button", onFullscreen);
-  bar.append(fullscreen.button, createSaveButton(stage, "tnx-button", "triangle.png"));
+  const removePresent = addPresentButtons({ root, stage, filename: "triangle.png", onFullscreen });
 
   function update() {
     const winding = get("winding") === "ACB" ? "ACB" : "ABC";
@@ -62,5 +62,5 @@ export function createToolbar(bar, { get, edit, stage, reset, onFullscreen }) {
     setAttr(unit, "aria-pressed", !!get("show_unit_normal"));
   }
 
-  return { update, dispose: fullscreen.dispose };
+  return { update, dispose: removePresent };
 }

@@ -4,7 +4,7 @@
  * kernel keeps it), else state of this view (the site).
  */
 import { element, toolbarElement } from "../dom.js";
-import { createFullscreen, createSaveButton } from "../present.js";
+import { addPresentButtons } from "../present.js";
 
 /** The toggles and their values where the host has no such key. */
 export const LOCAL_FLAGS = { cull: false, smooth: false, show_face_normals: true, show_vertex_normals: false };
@@ -56,12 +56,11 @@ export function createToolbar({ flags, stage, root }) {
   reset.type = "button";
   reset.addEventListener("click", () => stage.reset());
   el.append(reset, ...Object.values(buttons));
-  // for the projector and worksheets (../present.js)
-  const fullscreen = createFullscreen(root, "tnm-button");
-  el.append(fullscreen.button, createSaveButton(stage, "tnm-button", "mesh.png"));
+  // for the projector and worksheets (../present.js): in the view's corner
+  const removePresent = addPresentButtons({ root, stage, filename: "mesh.png" });
   return {
     el,
-    dispose: fullscreen.dispose,
+    dispose: removePresent,
     update(arrows) {
       for (const [key, b] of Object.entries(buttons)) b.setAttribute("aria-pressed", String(flags.get(key)));
       buttons.show_face_normals.hidden = !arrows.has("face");
