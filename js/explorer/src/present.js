@@ -13,6 +13,9 @@ import { element, listen } from "./dom.js";
 
 const SCALE = 2; // the saved picture's pixels per pixel of the view on the screen
 
+/** The view's top right corner the buttons take (px, with a gap): labels keep out of it (base.css). */
+export const CORNER = { width: 84, height: 44 };
+
 const SVG = "http://www.w3.org/2000/svg";
 // 24 x 24 outline icons: the four corners going out (full screen), coming in (exit), and an
 // arrow down onto a tray (save)
