@@ -47,11 +47,11 @@ function usable(direction) {
 /**
  * Where the camera looks from `direction` (a z-up perspective camera of FOV degrees) so that
  * every one of `points` (display units) projects inside a view of `width` x `height` px with
- * LABEL_MARGIN px to spare on each side (for the labels beyond the points and the arrow
- * heads): { target, distance, direction }. The target centres the points' picture, not just
+ * `margin` px to spare on each side (LABEL_MARGIN: for the labels beyond the points and the
+ * arrow heads): { target, distance, direction }. The target centres the points' picture, not just
  * their box; the distance is exact for the perspective camera. A pure function of its inputs.
  */
-export function fitCamera(points, direction, { width, height }) {
+export function fitCamera(points, direction, { width, height }, margin = LABEL_MARGIN) {
   const d = usable(direction);
   const { x, y, z } = basis(UP, d);
   const lo = points[0].clone();
@@ -72,8 +72,8 @@ export function fitCamera(points, direction, { width, height }) {
   const h = Math.max(height, 1);
   const tanV = Math.tan(((FOV / 2) * Math.PI) / 180);
   const tanH = (tanV * w) / h;
-  const sx = Math.max(0.4, 1 - (2 * LABEL_MARGIN) / w);
-  const sy = Math.max(0.4, 1 - (2 * LABEL_MARGIN) / h);
+  const sx = Math.max(0.4, 1 - (2 * margin) / w);
+  const sy = Math.max(0.4, 1 - (2 * margin) / h);
   let distance = 1e-6;
   for (const p of points) {
     const q = p.clone().sub(target);
@@ -173,7 +173,7 @@ function createParts(container) {
  * demand (requestRender), keeps a home framing (framePoints, reset, along) and follows the
  * container's size.
  */
-export function createStage(container, { onRender }) {
+export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
   const { renderer, canvas, scene, camera, controls } = createParts(container);
   let frame = 0;
   let width = 1;
@@ -262,7 +262,7 @@ export function createStage(container, { onRender }) {
   function look(direction) {
     home.direction.copy(direction);
     atHome = true;
-    const fit = fitCamera(home.points, direction, { width: width - inset, height });
+    const fit = fitCamera(home.points, direction, { width: width - inset, height }, margin);
     const d = fit.direction;
     home.target.copy(fit.target);
     home.distance = fit.distance;

@@ -39,7 +39,7 @@ import { isDark, roleColor, surface as surfaceColors, watchTheme } from "../them
 import { touchGate } from "../touch.js";
 import { createArrows } from "./arrows.js";
 import { displayPositions, readMesh } from "./data.js";
-import { framingPoints, startDirection } from "./framing.js";
+import { framingPoints, MARGIN, startDirection } from "./framing.js";
 import { createFaceForm, turnWithKeys } from "./keys.js";
 import { createLod } from "./lod.js";
 import { createOutlines, faultSides } from "./outlines.js";
@@ -184,7 +184,7 @@ function render({ model, el }) {
   el.appendChild(root);
   let stage;
   try {
-    stage = createStage(stageEl, { onRender: () => {} });
+    stage = createStage(stageEl, { onRender: () => {}, margin: MARGIN });
   } catch (err) {
     stageEl.remove();
     root.appendChild(element("p", "tnm-nogl", "This browser cannot draw the 3D view (WebGL is not available). The report above does not need it."));
