@@ -617,14 +617,17 @@ LAYOUT = """() => {
 }"""
 
 
-#: In full screen: the screen's size (CSS px), the view's box and the readout rows' values.
+#: In full screen: the screen's size (CSS px), the boxes of the view, the readout and its
+#: rows' values, and where the vertices and arrow heads are drawn (px in the view).
 FULL_SCREEN = """() => {
   const root = document.querySelector('.tnx-root');
   const box = (e) => { const r = e.getBoundingClientRect();
                        return {left: r.left, top: r.top, right: r.right, bottom: r.bottom}; };
   const rows = {};
   for (const tr of root.querySelectorAll('.tnx-readout tr')) rows[tr.dataset.key] = box(tr.cells[1]);
-  return {screen: [innerWidth, innerHeight], stage: box(root.querySelector('.tnx-stage')), rows};
+  const points = Object.values(root.tnxProject().points);
+  return {screen: [innerWidth, innerHeight], stage: box(root.querySelector('.tnx-stage')), rows,
+          side: box(root.querySelector('.tnx-side')), points};
 }"""
 
 
@@ -711,6 +714,8 @@ def test_view_and_readout_fit_a_projector_at_every_zoom(
         row = full["rows"][key]
         assert row["left"] >= 0 and row["right"] <= width, (key, row)
         assert row["top"] >= 0 and row["bottom"] <= height, (key, row)
+    for x, _y in full["points"]:  # the picture keeps clear of the readout over it
+        assert full["stage"]["left"] + x < full["side"]["left"], full
     page.locator(".tnx-stage").focus()
     page.keyboard.press("f")
     page.wait_for_function("() => document.fullscreenElement === null")

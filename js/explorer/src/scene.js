@@ -212,15 +212,21 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
    * same scale (a view offset of a camera as wide as the view and the inset together).
    */
   function project() {
-    camera.aspect = (width + inset) / height;
-    if (inset) camera.setViewOffset(width + inset, height, inset, 0, width, height);
+    const free = freeInset();
+    camera.aspect = (width + free) / height;
+    if (free) camera.setViewOffset(width + free, height, free, 0, width, height);
     else camera.clearViewOffset();
     camera.updateProjectionMatrix();
   }
 
+  /** The inset as the view's size allows it (at most half the view). */
+  function freeInset() {
+    return Math.min(inset, Math.floor(width / 2));
+  }
+
   /** Keep `px` at the right of the view free (the readout over it in full screen), and frame again. */
   function setInset(px) {
-    const next = Math.max(0, Math.min(Math.round(px), Math.floor(width / 2)));
+    const next = Math.max(0, Math.round(px));
     if (next === inset) return;
     inset = next;
     project();
@@ -262,7 +268,7 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
   function look(direction) {
     home.direction.copy(direction);
     atHome = true;
-    const fit = fitCamera(home.points, direction, { width: width - inset, height }, margin);
+    const fit = fitCamera(home.points, direction, { width: width - freeInset(), height }, margin);
     const d = fit.direction;
     home.target.copy(fit.target);
     home.distance = fit.distance;
@@ -294,7 +300,7 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
     resize,
     framePoints,
     /** How points (display units) sit in the picture: { inside, fill } (see spreadInView). */
-    spread: (points) => spreadInView(camera, points, width - inset, height),
+    spread: (points) => spreadInView(camera, points, width - freeInset(), height),
     setInset,
     /** Where the camera looks from (a unit vector from the target towards the camera). */
     direction: () => camera.position.clone().sub(controls.target).normalize(),
