@@ -20,6 +20,7 @@ from page_checks import resize
 from PIL import Image
 
 from trinormal import triangle_normal
+from trinormal.colors import palette
 from trinormal.fields import FIELDS as FIELDS_SPEC
 from trinormal.plotting.scale import scaled_label
 
@@ -254,8 +255,6 @@ def _light_and_dark_palettes_both_render(view) -> None:
     assert sum(_corner(light)) > 3 * 200, "the light view is not light"
     assert sum(_corner(dark)) < 3 * 80, "the dark view is not dark"
     # the vertex labels take the dark palette's colours (from trinormal.colors)
-    from trinormal.colors import palette
-
     colour = view.locator('#tn-view [data-vertex="B"]').evaluate("e => getComputedStyle(e).color")
     want = palette()["B"]["dark"]
     rgb = tuple(int(want[i : i + 2], 16) for i in (1, 3, 5))
@@ -735,6 +734,12 @@ def test_collinear_points_are_framed_side_on_full_screen_and_save_picture(page, 
     # seen side-on, not along the line: A and C far apart on the screen
     (ax, ay), (cx, cy) = drawn["points"]["A"], drawn["points"]["C"]
     assert math.hypot(cx - ax, cy - ay) >= 0.5 * min(drawn["width"], drawn["height"])
+    # the axes are named at their ends, in the page's text, in their own greys
+    axes = page.locator("#tn-view .tnx-axis")
+    assert axes.all_inner_texts() == ["x", "y", "z"]
+    greys = [palette()[a]["light"] for a in "xyz"]
+    want = [f"rgb({int(c[1:3], 16)}, {int(c[3:5], 16)}, {int(c[5:7], 16)})" for c in greys]
+    assert axes.evaluate_all("els => els.map(e => getComputedStyle(e).color)") == want
     stage = page.locator("#tn-view .tnx-stage")
     # full screen: the view fills the screen; the f key, with the view focused, returns
     page.get_by_role("button", name="Full screen").click()
