@@ -4,8 +4,10 @@ The 3D explorer, every matplotlib figure and the site draw A, B, C, U, V and N
 in these colours. Each role has a colour for light backgrounds and one for dark
 backgrounds; both keep a contrast of at least 3:1 against their background
 (WCAG's rule for graphics), and the hues come from Okabe and Ito's palette, so
-the code survives the common forms of colour blindness. Colour is never the
-only cue: every point, arrow and face is also labelled. The mesh view of the
+the code survives the common forms of colour blindness. The x, y and z axes are
+neutral greys (lighter from x to z), so no axis shares a colour with U, V, N
+or a face side. Colour is never the only cue: every point, arrow, face and axis
+is also labelled. The mesh view of the
 site's "Check a mesh" page adds three roles drawn over a mesh's faces (faces to
 flip, boundary edges, non-manifold edges); its legend names each with its count.
 
@@ -21,7 +23,15 @@ True
 
 from __future__ import annotations
 
-__all__ = ["DARK_ROLE_COLORS", "ROLES", "ROLE_COLORS", "ROLE_MEANINGS", "color", "palette"]
+__all__ = [
+    "COLOR_CODE",
+    "DARK_ROLE_COLORS",
+    "ROLES",
+    "ROLE_COLORS",
+    "ROLE_MEANINGS",
+    "color",
+    "palette",
+]
 
 #: What each role is, in the words the readouts use.
 ROLE_MEANINGS: dict[str, str] = {
@@ -41,6 +51,14 @@ ROLE_MEANINGS: dict[str, str] = {
     "non_manifold": "mesh edge shared by three faces or more",
 }
 
+#: The colour code in words, as notebooks 01 and 03 state it (a test holds them to it).
+COLOR_CODE = (
+    "U vermillion, V blue, N green; the face yellow where you see its front (the side N "
+    "points out of) and sky blue where you see its back; the points A dark grey, B amber "
+    "(U ends at B), C purple (V ends at C); the axes neutral greys, named x, y and z at "
+    "their ends."
+)
+
 #: The roles, in drawing order.
 ROLES: tuple[str, ...] = tuple(ROLE_MEANINGS)
 
@@ -54,9 +72,11 @@ ROLE_COLORS: dict[str, str] = {
     "N": "#007A5A",  # Okabe-Ito bluish green, darkened for 5:1 on white
     "front": "#F0E442",  # Okabe-Ito yellow: the face N points out of
     "back": "#56B4E9",  # Okabe-Ito sky blue: the other side
-    "x": "#D55E00",
-    "y": "#009E73",
-    "z": "#0072B2",
+    # the axes are neutral greys, told apart by lightness and named at their ends: no axis
+    # shares a hue with U, V, N or a face side
+    "x": "#4D4D4D",
+    "y": "#6E6E6E",
+    "z": "#8C8C8C",
     # a mesh's defects, drawn over its faces (the mesh view of the site's "Check a mesh" page)
     "flipped": "#000000",
     "boundary": "#C1007C",  # Okabe-Ito reddish purple, darkened: 4.5:1 on the front yellow
@@ -73,9 +93,9 @@ DARK_ROLE_COLORS: dict[str, str] = {
     "N": "#3DDC97",
     "front": "#E5D740",
     "back": "#3A8FC4",
-    "x": "#FF8C42",
-    "y": "#3DDC97",
-    "z": "#56B4E9",
+    "x": "#D0D0D0",
+    "y": "#ABABAB",
+    "z": "#8A8A8A",
     "flipped": "#FFFFFF",
     "boundary": "#FF6EC7",
     "non_manifold": "#FF8C42",

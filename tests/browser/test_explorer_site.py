@@ -20,7 +20,9 @@ from page_checks import resize
 from PIL import Image
 
 from trinormal import triangle_normal
+from trinormal.colors import palette
 from trinormal.fields import FIELDS as FIELDS_SPEC
+from trinormal.plotting.scale import scaled_label
 
 FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
 OUTPUTS = {f.key: "#" + f.output_id for f in FIELDS_SPEC}
@@ -253,8 +255,6 @@ def _light_and_dark_palettes_both_render(view) -> None:
     assert sum(_corner(light)) > 3 * 200, "the light view is not light"
     assert sum(_corner(dark)) < 3 * 80, "the dark view is not dark"
     # the vertex labels take the dark palette's colours (from trinormal.colors)
-    from trinormal.colors import palette
-
     colour = view.locator('#tn-view [data-vertex="B"]').evaluate("e => getComputedStyle(e).color")
     want = palette()["B"]["dark"]
     rgb = tuple(int(want[i : i + 2], 16) for i in (1, 3, 5))
@@ -678,19 +678,14 @@ def _scale_label(ratio: float, unit: bool = False) -> str:
     """The label an arrow drawn `ratio` times its true length must carry (ratio a power of 2)."""
     k = round(math.log2(ratio))
     assert ratio == pytest.approx(2.0**k, rel=1e-6), f"drawn {ratio} times: not a power of two"
-    if k == 0:
-        return "N/|N|" if unit else "N"
-    f = str(2 ** abs(k))
-    if k < 0:
-        return f"N/({f}|N|)" if unit else f"N/{f}"
-    return f"{f}N/|N|" if unit else f"{f}N"
+    return scaled_label(2.0**k, unit)
 
 
 #: Triangles and the label their N must carry: true length, shrunk, grown.
 SCALED = [
     ((("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0")), "N"),  # |N| = 1: true length
-    ((("0", "0", "0"), ("4", "0", "0"), ("0", "4", "0")), "N/4"),  # |N| = 16, edges 4
-    ((("0", "0", "0"), ("0.3", "0", "0"), ("0", "0.3", "0")), "4N"),  # |N| = 0.09
+    ((("0", "0", "0"), ("4", "0", "0"), ("0", "4", "0")), "N × ¼"),  # |N| = 16, edges 4
+    ((("0", "0", "0"), ("0.3", "0", "0"), ("0", "0.3", "0")), "N × 4"),  # |N| = 0.09
 ]
 
 
@@ -717,3 +712,65 @@ def test_a_scaled_n_says_by_how_much_in_its_label(view):
         # the unit normal too: drawn `unit_ratio` times its length of 1, and labelled so
         unit_ratio = math.hypot(*drawn["unit"])
         assert _scale_label(unit_ratio, unit=True) in labels, (triangle, labels)
+
+
+# --------------------------------------------------------------------------- the projector
+
+
+def _inside_with_margin(page, margin: float) -> dict[str, list[float]]:
+    """Every vertex and arrow head projects inside the view, `margin` px from each side."""
+    drawn = page.evaluate(PROJECTED)
+    for key, (x, y) in drawn["points"].items():
+        assert margin <= x <= drawn["width"] - margin, (key, x, drawn["width"])
+        assert margin <= y <= drawn["height"] - margin, (key, y, drawn["height"])
+    return drawn
+
+
+def test_collinear_points_are_framed_side_on_full_screen_and_save_picture(page, server, traffic):
+    """The guide's collinear row, a flip after the parallelogram, full screen, Save picture."""
+    page.set_viewport_size({"width": 1280, "height": 720})
+    open_view(page, server + "calculator/?a=0,0,0&b=1,1,1&c=2,2,2")
+    drawn = _inside_with_margin(page, 20)
+    # seen side-on, not along the line: A and C far apart on the screen
+    (ax, ay), (cx, cy) = drawn["points"]["A"], drawn["points"]["C"]
+    assert math.hypot(cx - ax, cy - ay) >= 0.5 * min(drawn["width"], drawn["height"])
+    # the axes are named at their ends, in the page's text, in their own greys
+    axes = page.locator("#tn-view .tnx-axis")
+    assert axes.all_inner_texts() == ["x", "y", "z"]
+    greys = [palette()[a]["light"] for a in "xyz"]
+    want = [f"rgb({int(c[1:3], 16)}, {int(c[3:5], 16)}, {int(c[5:7], 16)})" for c in greys]
+    assert axes.evaluate_all("els => els.map(e => getComputedStyle(e).color)") == want
+    stage = page.locator("#tn-view .tnx-stage")
+    # full screen: the view fills the screen; the f key, with the view focused, returns
+    page.get_by_role("button", name="Full screen").click()
+    root = page.locator("#tn-view .tnx-root")
+    page.wait_for_function("() => document.fullscreenElement !== null")
+    settle(page)
+    assert "tn-fullscreen" in (root.get_attribute("class") or "")
+    box = stage.bounding_box()
+    assert box["width"] >= 0.95 * 1280 and box["height"] >= 0.8 * 720, box
+    assert page.locator("#tn-view .tnx-readout tr[data-key='magnitude']").is_visible()
+    readout = page.locator("#tn-view .tnx-side").bounding_box()
+    drawn = _inside_with_margin(page, 20)
+    for key, (x, _y) in drawn["points"].items():  # the readout over the view covers no point
+        assert box["x"] + x < readout["x"], key
+    stage.focus()
+    page.keyboard.press("f")
+    page.wait_for_function("() => document.fullscreenElement === null")
+    settle(page)
+    assert "tn-fullscreen" not in (root.get_attribute("class") or "")
+    # Save picture: a PNG twice the size of the view on the screen
+    size = page.evaluate(PROJECTED)
+    with page.expect_download() as download:
+        page.get_by_role("button", name="Save picture").click()
+    picture = Image.open(download.value.path())
+    assert picture.format == "PNG"
+    assert picture.size == (2 * size["width"], 2 * size["height"])
+    # a flip after the parallelogram keeps N's head in view, beside the triangle
+    set_triangle(page, ("1", "2", "0"), ("4", "1", "0"), ("2", "4", "1"))
+    page.get_by_role("button", name="Parallelogram").click()
+    page.locator("#tn-view").get_by_role("button", name=re.compile("^Flip the order")).click()
+    settle(page)
+    drawn = _inside_with_margin(page, 20)
+    assert "N" in drawn["points"]
+    assert not traffic.problems()

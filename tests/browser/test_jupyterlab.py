@@ -617,6 +617,20 @@ LAYOUT = """() => {
 }"""
 
 
+#: In full screen: the screen's size (CSS px), the boxes of the view, the readout and its
+#: rows' values, and where the vertices and arrow heads are drawn (px in the view).
+FULL_SCREEN = """() => {
+  const root = document.querySelector('.tnx-root');
+  const box = (e) => { const r = e.getBoundingClientRect();
+                       return {left: r.left, top: r.top, right: r.right, bottom: r.bottom}; };
+  const rows = {};
+  for (const tr of root.querySelectorAll('.tnx-readout tr')) rows[tr.dataset.key] = box(tr.cells[1]);
+  const points = Object.values(root.tnxProject().points);
+  return {screen: [innerWidth, innerHeight], stage: box(root.querySelector('.tnx-stage')), rows,
+          side: box(root.querySelector('.tnx-side')), points};
+}"""
+
+
 def zoom_to(page: Any, zoom: float, sessions: dict[int, Any]) -> None:
     """Browser zoom on a 1280x720 window, as Ctrl+plus sets it, and wait for the page to see it.
 
@@ -688,3 +702,20 @@ def test_view_and_readout_fit_a_projector_at_every_zoom(
     assert all(row["lines"] == 1 for row in m["rows"].values()), m["rows"]
     assert len({round(b["top"]) for b in m["buttons"]}) == 1  # one row
     assert max(b["right"] for b in m["buttons"]) <= m["toolbar"]["right"] + 1
+    # full screen for the projector: the view fills the screen, the four rows over it, none
+    # cut; the f key (the view focused) brings the notebook back
+    page.locator(".tnx-root").get_by_role("button", name="Full screen").click()
+    page.wait_for_function("() => document.fullscreenElement !== null")
+    full = settled(page, FULL_SCREEN)
+    width, height = full["screen"]
+    assert full["stage"]["right"] - full["stage"]["left"] >= 0.95 * width, full
+    assert full["stage"]["bottom"] - full["stage"]["top"] >= 0.75 * height, full
+    for key in ("normal", "magnitude", "area", "unit_normal"):
+        row = full["rows"][key]
+        assert row["left"] >= 0 and row["right"] <= width, (key, row)
+        assert row["top"] >= 0 and row["bottom"] <= height, (key, row)
+    for x, _y in full["points"]:  # the picture keeps clear of the readout over it
+        assert full["stage"]["left"] + x < full["side"]["left"], full
+    page.locator(".tnx-stage").focus()
+    page.keyboard.press("f")
+    page.wait_for_function("() => document.fullscreenElement === null")

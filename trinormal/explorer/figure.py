@@ -3,9 +3,10 @@
 The live explorer draws in 3D in the browser (`trinormal.explorer.view`). A
 notebook saved as HTML, a printed page or a static site has no JavaScript view,
 so `Snapshot` draws the same state with matplotlib: the triangle in 3D
-with U and V from A and N from the centre, and bar charts of the components of
-N and of the unit normal, in the package's one colour code
-([`trinormal.colors`][trinormal.colors]).
+with U and V from A and N from the centre (at the scale, and with the label,
+of `trinormal.plotting.scale`, as the 3D view draws it), and bar charts of the
+components of N and of the unit normal, in the package's one colour code
+([`trinormal.colors`][trinormal.colors]). `Explorer.to_png` returns this picture.
 
 Only the moving artists are redrawn on an update; the axes, ticks and panes come
 from a cached bitmap of the same figure, so a new PNG costs a fraction of a
@@ -28,6 +29,7 @@ from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 from trinormal.colors import ROLE_COLORS
 from trinormal.core import TriangleNormal
 from trinormal.explorer.readout import alt_text
+from trinormal.plotting.scale import drawn_factor, scaled_label
 
 __all__ = ["DPI", "FIGSIZE", "Snapshot"]
 
@@ -99,13 +101,6 @@ def _arrow_segments(start: Vec, vector: Vec, head: float) -> list[list[Vec]]:
         segments.append([tip, _add(back, side, w)])
         segments.append([tip, _add(back, side, -w)])
     return segments
-
-
-def _inside(start: Vec, vector: Vec, divisor: int, centre: Vec, half: float) -> bool:
-    """Say whether ``start + vector / divisor`` lies in the cube of half-width ``half``."""
-    return all(
-        abs(s + v / divisor - c) <= half for s, v, c in zip(start, vector, centre, strict=True)
-    )
 
 
 def _nice_limit(x: float, smallest: float = 1.0) -> float:
@@ -304,14 +299,12 @@ class Snapshot:
         self._n_marker = "$N$"
         return fig, art
 
-    def _view_box(self) -> tuple[Vec, float]:
-        """Choose the 3D box: a centre and a 1-2-5 half-width that frame the triangle.
+    def _view_box(self, points: Sequence[Vec]) -> tuple[Vec, float]:
+        """Choose the 3D box: a centre and a 1-2-5 half-width that frame ``points``.
 
         The centre moves in steps of half the half-width, so small moves keep the
         same box (and the cached background).
         """
-        r = self.result
-        points = (r.a, r.b, r.c)
         lows = [min(p[i] for p in points) for i in range(3)]
         highs = [max(p[i] for p in points) for i in range(3)]
         extent = max(h - lo for h, lo in zip(highs, lows, strict=True))
@@ -332,19 +325,16 @@ class Snapshot:
         r = self.result
         A, B, C = r.a, r.b, r.c
 
-        box = self._view_box()
-        centre, half = box
         centroid = _scaled(_add(_add(A, B), C), 1.0 / 3.0)
+        # N at its true length when it fits beside the triangle, else scaled by a power of
+        # two that its label names (trinormal.plotting.scale), as in the 3D view
+        longest = max(_norm(_sub(p, q)) for p, q in ((A, B), (A, C), (B, C)))
+        factor = drawn_factor(r.magnitude, longest)
+        n_draw = _scaled(r.normal, factor)
+        framed = [A, B, C] if r.degenerate else [A, B, C, _add(centroid, n_draw)]
+        box = self._view_box(framed)
+        centre, half = box
         span = 2.0 * half
-        divisor = 1  # N is halved until it fits the view; its label says so
-        while divisor < 2**60 and (
-            r.magnitude / divisor > 0.4 * span
-            or (
-                r.magnitude / divisor > 0.1 * span
-                and not _inside(centroid, r.normal, divisor, centre, half)
-            )
-        ):
-            divisor *= 2
         if r.degenerate:
             title = f"{r.winding.label}: degenerate, no normal direction"
         else:
@@ -377,11 +367,10 @@ class Snapshot:
             x, y, z = _add(point, shift)
             art["label_" + name].set_data_3d([x], [y], [z])
 
-        # U and V from A; N from A, halved until it fits the view (its label says so)
+        # U and V from A; N from the centroid, scaled when it does not fit (its label says so)
         head = 0.05 * span
-        n_draw = _scaled(r.normal, 1.0 / divisor)
         for name, vec in (("U", r.u), ("V", r.v), ("N", n_draw)):
-            start = centre if name == "N" else A
+            start = centroid if name == "N" else A
             art["arrow_" + name].set_segments(_arrow_segments(start, vec, head))
             if name == "N":  # N's name just past its tip
                 spot = _add(start, vec, 1.0 + 0.07 * span / max(_norm(vec), 1e-300))
@@ -394,10 +383,11 @@ class Snapshot:
         visible_n = not r.degenerate
         art["arrow_N"].set_visible(visible_n)
         art["tip_N"].set_visible(visible_n)
-        marker = "$N$" if divisor == 1 else f"$N/{divisor}$"
+        label = scaled_label(factor)
+        marker = f"${label}$"
         if marker != self._n_marker:  # a new marker costs a text layout: only when it changes
             art["tip_N"].set_marker(marker)
-            art["tip_N"].set_markersize(11 if divisor == 1 else 16 + 4 * len(str(divisor)))
+            art["tip_N"].set_markersize(11 if factor == 1 else 11 + 3 * len(label))
             self._n_marker = marker
 
         # the right-hand rule: a curl from U towards V around A

@@ -509,7 +509,12 @@ class Explorer:
         return self.snapshot.figure
 
     def to_png(self) -> bytes:
-        r"""Draw the current state as a PNG, for print and for outputs without JavaScript.
+        r"""Draw the current state as a PNG, for print, worksheets and outputs without JavaScript.
+
+        The picture is a matplotlib rendering (`Snapshot`) of the same state, in the
+        same colours, with N at the same scale and label as in the 3D view: the kernel
+        cannot reach the browser's WebGL canvas. The view's *Save picture* button
+        downloads the 3D view itself, at twice its size on the screen.
 
         Examples
         --------

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 from trinormal.colors import ROLE_COLORS
 from trinormal.plotting.camera import camera_direction
+from trinormal.plotting.scale import drawn_factor, scaled_label
 from trinormal.plotting.style import FACECOLOR, PALETTE, styled
 
 if TYPE_CHECKING:
@@ -40,9 +41,10 @@ def right_hand_rule_figure(
     U and V start at A; a curved arrow (in N's colour, as in the explorer)
     turns from U towards V, the way the fingers of a right hand curl, with a
     large filled head near V, and N (drawn from the centroid) points where the
-    thumb does. N is drawn at its true length when that is between 0.4 and 1.5
-    times the mean edge; otherwise it is scaled by a power of two and labelled
-    so (``N/4``, ``2N``), and the alt text says which.
+    thumb does. N is drawn at its true length when that is between ¼ and 2
+    times the longest edge; otherwise it is scaled by a power of two and labelled
+    so (``N × ¼``, ``N × 4``), and the alt text says which
+    (`trinormal.plotting.scale`).
     The face is filled in the ``front`` colour when the camera sees the side N
     points out of, and in the ``back`` colour when it sees the other side. The
     axes are the same for both windings of the same points, so the two
@@ -105,7 +107,7 @@ def right_hand_rule_figure(
     direction = "is zero, so it has no direction: the triangle is degenerate"
     drawn = ""
     if unit is not None:
-        n, label, drawn = _drawn_normal(r, unit, sum(lengths) / 3 or 1.0, scale)
+        n, label, drawn = _drawn_normal(r, unit, max(lengths))
         ax.quiver(*centroid, *n, color=ROLE_COLORS["N"], linewidth=3, arrow_length_ratio=0.15)
         tip = [centroid[i] + n[i] for i in range(3)]
         ax.text(*tip, "  " + label, color=ROLE_COLORS["N"], fontsize=15, fontweight="bold")
@@ -148,24 +150,22 @@ def _draw_edges(
 
 
 def _drawn_normal(
-    r: TriangleNormal, unit: Point, mean_edge: float, scale: float
+    r: TriangleNormal, unit: Point, longest_edge: float
 ) -> tuple[list[float], str, str]:
     """Return N as drawn, its label and the alt text's words on its length.
 
-    N is drawn at its true length when that fits the picture; otherwise scaled by
-    a power of two, and the label says by how much (N/4, 2N), as in the explorer.
+    N is drawn at its true length when that fits beside the triangle; otherwise
+    scaled by a power of two, and the label says by how much (``N × ¼``), by the
+    rule of `trinormal.plotting.scale`, as in the explorer.
     """
     length_n = math.sqrt(float(r.exact.magnitude_squared))
-    factor = 1.0
-    if not 0.4 * mean_edge <= length_n <= 1.5 * mean_edge:
-        factor = 2.0 ** round(math.log2(scale / length_n))
+    factor = drawn_factor(length_n, longest_edge)
     n = [x * length_n * factor for x in unit]
+    label = scaled_label(factor)
     if factor == 1.0:
-        return n, "N", "N is drawn at its true length"
+        return n, label, "N is drawn at its true length"
     if factor < 1.0:
-        label = f"N/{round(1 / factor)}"
         return n, label, f"N is drawn at 1/{round(1 / factor)} of its length (labelled {label})"
-    label = f"{round(factor)}N"
     return n, label, f"N is drawn {round(factor)} times longer than it is (labelled {label})"
 
 

@@ -1,36 +1,77 @@
 /*
  * What the explorer frames: the units the triangle is drawn in (the data divided by a power
  * of ten S, less an offset when the triangle is far from the origin), the axes' length and
- * ticks, the box the camera keeps in view, and where the camera first looks from.
+ * ticks, the points the camera keeps in view, where the camera first looks from, and which
+ * views show the triangle (never edge-on to its plane, never along the line of collinear
+ * points). Pure functions of the points: tests/test_view_scale.py runs them in Node.
  */
 import { Vector3 } from "three";
 import { niceCeil, powerOfTen } from "./numbers.js";
 import { DEFAULT_DIRECTION } from "./scene.js";
-import { drawnAt, N_AIM, UNIT_AIM } from "./scaling.js";
+import { drawnAt } from "./scaling.js";
+
+// the views the camera may start from when the usual one is poor: 8 azimuths at 3 elevations
+const CANDIDATES = [20, 35, 55].flatMap((elevation) =>
+  [...Array(8).keys()].map((k) => {
+    const az = ((k * 45 + 37) * Math.PI) / 180;
+    const el = (elevation * Math.PI) / 180;
+    return new Vector3(Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el));
+  }),
+);
+// a view is poor when it looks within about 14 degrees of the triangle's plane (|cos| to N
+// below 0.25), or, for points on a line, within about 45 degrees of that line (|cos| above 0.7)
+const EDGE_ON = 0.25;
+const ALONG_LINE = 0.7;
+
+/**
+ * True when looking from `direction` shows the frame's triangle: not edge-on to its plane,
+ * not along its line when its points are collinear. A frame with neither (one point) takes any.
+ */
+export function showsTriangle(direction, frame) {
+  const d = direction.clone().normalize();
+  if (frame.normal) return Math.abs(d.dot(frame.normal)) >= EDGE_ON;
+  if (frame.line) return Math.abs(d.dot(frame.line)) <= ALONG_LINE;
+  return true;
+}
 
 /**
  * Where the camera first looks from: the usual oblique view, unless it sees the triangle
- * nearly edge-on or N nearly head-on; then the one of 24 views around the scene that sees
- * the front face at about 50 degrees, so the faces, N and the parallelogram can all be seen.
+ * nearly edge-on or N nearly head-on (or looks nearly along the line of collinear points);
+ * then the one of 24 views from above that sees the face at about 50 degrees, its front
+ * rather than its back (for a line: the one nearest the usual view that sees it from at
+ * least 70 degrees), so the face, N and the
+ * parallelogram can all be seen. Both windings of one triangle start from the same view
+ * when the usual one suits them: a flip shows N turning over, not the camera moving.
  */
-function startDirection(normal) {
-  if (!(normal.length() > 0)) return DEFAULT_DIRECTION.clone();
-  const n = normal.clone().normalize();
-  const cos = DEFAULT_DIRECTION.dot(n);
-  if (cos >= 0.35 && cos <= 0.8) return DEFAULT_DIRECTION.clone();
-  // aim for cos(angle to N) = 0.65: the front face well in view, N still clearly an arrow
+function startDirection(normal, line) {
+  if (normal) {
+    const cos = Math.abs(DEFAULT_DIRECTION.dot(normal));
+    if (cos >= 0.35 && cos <= 0.8) return DEFAULT_DIRECTION.clone();
+  } else if (line) {
+    if (Math.abs(DEFAULT_DIRECTION.dot(line)) <= 0.35) return DEFAULT_DIRECTION.clone();
+  } else return DEFAULT_DIRECTION.clone();
+  // a line: the view nearest the usual one among those square to it within about 70 degrees
+  const miss = (d) => {
+    if (!normal) return Math.abs(d.dot(line)) <= 0.35 ? 1 - d.dot(DEFAULT_DIRECTION) : 3 + Math.abs(d.dot(line));
+    const cos = d.dot(normal);
+    return Math.abs(Math.abs(cos) - 0.65) + (cos < 0 ? 0.05 : 0);
+  };
   let best = DEFAULT_DIRECTION.clone();
-  let miss = Math.abs(DEFAULT_DIRECTION.dot(n) - 0.65);
-  for (const elevation of [20, 35, 55]) {
-    for (let k = 0; k < 8; k++) {
-      const az = ((k * 45 + 37) * Math.PI) / 180;
-      const el = (elevation * Math.PI) / 180;
-      const d = new Vector3(Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el));
-      const m = Math.abs(d.dot(n) - 0.65);
-      if (m < miss - 1e-9) [best, miss] = [d, m];
+  for (const d of CANDIDATES) if (miss(d) < miss(best) - 1e-9) best = d.clone();
+  return best;
+}
+
+/** The direction of the line through collinear points (display units), or null when they coincide. */
+function lineOf(disp) {
+  let best = null;
+  let far = 0;
+  for (let i = 0; i < 3; i++) {
+    for (let j = i + 1; j < 3; j++) {
+      const d = disp[j].clone().sub(disp[i]);
+      if (d.length() > far) [far, best] = [d.length(), d];
     }
   }
-  return best;
+  return best && far > 0 ? best.normalize() : null;
 }
 
 /** A data point ([x, y, z]) in the display units of `frame` ({ S, offset }). */
@@ -40,9 +81,12 @@ export function toDisplay(p, { S, offset }) {
 
 /**
  * The frame of the points `pts` (data floats) drawn in `winding`, with the unit normal when
- * `showUnit`: { S, offset, includeOrigin, radius, center, box, L, t, start }.
+ * `showUnit`; `degenerate` when the host calls the triangle degenerate (it is then drawn as
+ * points on a line): { S, offset, includeOrigin, radius, center, box, L, t, start, normal,
+ * line }. `normal` is N's direction as drawn (null for a degenerate triangle), `line` the
+ * direction of the line through collinear points (null otherwise, or when they coincide).
  */
-export function computeFrame(pts, winding, showUnit) {
+export function computeFrame(pts, winding, showUnit, degenerate = false) {
   const ext = Math.max(...pts.flat().map(Math.abs));
   const edges = [
     [0, 1],
@@ -69,10 +113,15 @@ export function computeFrame(pts, winding, showUnit) {
   if (winding === "ACB") n.negate();
   const lMax = Math.max(a.distanceTo(b), a.distanceTo(c), b.distanceTo(c));
   const centroid = a.clone().add(b).add(c).divideScalar(3);
-  if (n.length() > 0) {
+  const plane = !degenerate && n.length() > 0 && Number.isFinite(n.length());
+  if (plane) {
     // n = U x V in display units is N / S^2: N's true length in display units is |n| * S
-    box.push(centroid.clone().add(n.clone().setLength(drawnAt(n.length() * S, N_AIM * lMax).length)));
-    if (showUnit) box.push(centroid.clone().add(n.clone().setLength(drawnAt(1 / S, UNIT_AIM * lMax).length)));
+    box.push(centroid.clone().add(n.clone().setLength(drawnAt(n.length() * S, lMax).length)));
+    if (showUnit) box.push(centroid.clone().add(n.clone().setLength(drawnAt(1 / S, lMax).length)));
+  }
+  if (lMax === 0) {
+    // one point: frame a tick's width around it, so the view does not zoom into a dot
+    for (const sign of [-1, 1]) box.push(a.clone().addScalar((sign * t) / 2));
   }
   const lo = box[0].clone();
   const hi = box[0].clone();
@@ -82,7 +131,9 @@ export function computeFrame(pts, winding, showUnit) {
   }
   const center = lo.clone().add(hi).multiplyScalar(0.5);
   const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
-  return { S, offset, includeOrigin, radius, center, box, L, t, start: startDirection(n) };
+  const normal = plane ? n.clone().normalize() : null;
+  const line = plane ? null : lineOf(disp);
+  return { S, offset, includeOrigin, radius, center, box, L, t, normal, line, start: startDirection(normal, line) };
 }
 
 /** True when two frames draw in the same units (the same S, offset and origin). */

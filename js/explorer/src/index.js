@@ -200,7 +200,7 @@ function render({ model, el }) {
     return showWithoutWebGL(parts, { model, controls: view.controls, keys: KEYS });
   }
   const { stage } = view;
-  Object.assign(view, createLabels(parts.stageEl));
+  Object.assign(view, createLabels(parts.stageEl, view));
   view.drawing = new Drawing(stage.scene);
   view.toolbar = createToolbar(parts.toolbarEl, {
     get,
@@ -209,6 +209,11 @@ function render({ model, el }) {
     reset: () => {
       if (view.frame) applyFrame(view, frameOf(view, view.lastGood || dataPoints(view)), true);
       stage.reset();
+    },
+    onFullscreen(on) {
+      // the readout floats over the view's right side: the picture keeps that part free
+      sync(view);
+      view.stage.setInset(on ? parts.side.offsetWidth + 24 : 0);
     },
   });
 
@@ -247,6 +252,7 @@ function render({ model, el }) {
 
   return () => {
     stopModel();
+    view.toolbar.dispose();
     touch.dispose();
     stopTheme();
     interaction();

@@ -6,8 +6,18 @@
  */
 import { Vector3 } from "three";
 import { setHidden } from "./dom.js";
+import { CORNER } from "./present.js";
 
 const v = new Vector3();
+
+/**
+ * The y of a label centred at (x, y), `w` x `h` half-size, moved down below the buttons in
+ * the view's top right corner (present.js) when it would sit under them.
+ */
+function clearOfCorner(x, y, w, h, size) {
+  const under = x + w > size.width - CORNER.width && y - h < CORNER.height;
+  return under && size.height > CORNER.height + 2 * h + 4 ? CORNER.height + h + 2 : y;
+}
 
 function project(point, camera, size) {
   v.copy(point).project(camera);
@@ -19,7 +29,9 @@ function project(point, camera, size) {
 }
 
 export class LabelLayer {
-  constructor(container) {
+  /** Labels over `container`; `beforeLayout()` runs before each layout (the marks' sizing). */
+  constructor(container, beforeLayout = null) {
+    this.beforeLayout = beforeLayout;
     this.el = document.createElement("div");
     this.el.className = "tnx-labels";
     container.appendChild(this.el);
@@ -61,6 +73,7 @@ export class LabelLayer {
 
   /** Move every label to its projected place. */
   layout(camera, size) {
+    if (this.beforeLayout) this.beforeLayout();
     const placed = [];
     for (const item of this.items.values()) {
       if (!item.visible || !item.anchor) {
@@ -109,6 +122,7 @@ export class LabelLayer {
         // keep the whole label inside the view, so it can always be grabbed
         x = Math.min(Math.max(x, 20), size.width - 20);
         y = Math.min(Math.max(y, 20), size.height - 20);
+        y = clearOfCorner(x, y, 20, 20, size);
         placed.push({ x, y });
       }
       setHidden(item.el, false);
@@ -118,6 +132,7 @@ export class LabelLayer {
         const { w, h } = item.half;
         if (size.width > 2 * w + 4) x = Math.min(Math.max(x, w + 2), size.width - w - 2);
         if (size.height > 2 * h + 4) y = Math.min(Math.max(y, h + 2), size.height - h - 2);
+        y = clearOfCorner(x, y, w, h, size);
       }
       item.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
     }

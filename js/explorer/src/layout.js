@@ -24,6 +24,9 @@ export function createLayout(el) {
   const side = element("div", "tnx-side");
   const toolbarEl = toolbarElement("tnx-toolbar", "3D view");
   const stageEl = element("div", "tnx-stage");
+  // a click gives the view focus (not a Tab stop), so its keys (f: full screen) are its own
+  stageEl.tabIndex = -1;
+  stageEl.dataset.lmSuppressShortcuts = "true";
   // the banner, the refusal of an edit (`error`) and the legend sit under the view, never
   // over a label or an arrow
   const message = element("p", "tnx-message");

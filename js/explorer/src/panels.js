@@ -11,12 +11,14 @@ function readoutValue(st, key) {
   return row ? row.value : null;
 }
 
-/** view: { model, get, side, readout, message, error, controls, vertexEls }; st: the host's state. */
+/** view: { model, get, root, side, readout, message, error, controls, vertexEls }; st: the host's state. */
 export function updatePanels(view, st) {
   const { get, readout, message, error } = view;
-  readout.show(!!get("show_readout"));
-  view.side.classList.toggle("tnx-no-readout", !get("show_readout"));
-  if (get("show_readout")) readout.update(st);
+  // full screen shows the readout over the view even where the page prints it elsewhere
+  const shown = !!get("show_readout") || view.root.classList.contains("tn-fullscreen");
+  readout.show(shown);
+  view.side.classList.toggle("tnx-no-readout", !shown);
+  if (shown) readout.update(st);
   const problem = st.ok === false ? st.error || st.status : st.degenerate ? st.status : "";
   setHidden(message, !problem);
   setText(message, problem || "");

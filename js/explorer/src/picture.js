@@ -6,18 +6,19 @@
  * dark, and what the last drawing left: frame, lastGood, display, heads, scales.
  */
 import { Vector3 } from "three";
+import { Drawing } from "./geometry.js";
 import { setStyle } from "./dom.js";
-import { computeFrame, sameUnits, toDisplay } from "./framing.js";
+import { computeFrame, sameUnits, showsTriangle, toDisplay } from "./framing.js";
 import { LabelLayer } from "./labels.js";
 import { parsePoint, tickText } from "./numbers.js";
-import { drawnAt, N_AIM, scaledLabel, UNIT_AIM } from "./scaling.js";
+import { drawnAt, scaledLabel } from "./scaling.js";
 import { surface } from "./theme.js";
 
 const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
 
 /** The labels over the stage: { labels, vertexEls } (A, B and C are focusable, movable points). */
-export function createLabels(stageEl) {
-  const labels = new LabelLayer(stageEl);
+export function createLabels(stageEl, view) {
+  const labels = new LabelLayer(stageEl, () => sizeToScreen(view));
   const vertexEls = {};
   for (const name of "ABC") {
     const item = labels.label("v:" + name, "vertex", name);
@@ -50,15 +51,85 @@ export function dataPoints(view) {
 
 /** The frame of these points as the view now draws them. */
 export function frameOf(view, pts, winding = view.get("winding")) {
-  return computeFrame(pts, winding, view.get("show_unit_normal"));
+  const st = view.get("state") || {};
+  return computeFrame(pts, winding, view.get("show_unit_normal"), !!st.degenerate);
+}
+
+// sizes on the screen, in px, whatever the zoom: an arrow's shaft radius, a vertex's marker
+// radius (larger on a degenerate triangle's line, where the points are all there is)
+const ARROW_PX = 2.4;
+const VERTEX_PX = 6;
+const DEGENERATE_VERTEX_PX = 8;
+const AXIS_PX = 2;
+const TICK_PX = 2.3;
+const AXIS_NEAREST = 0.4;
+
+/**
+ * Size the 3D marks in screen pixels for the camera as it is now: the arrows and the axes by
+ * their size at the target, each vertex's marker at its own depth. Runs before every picture.
+ */
+function sizeToScreen(view) {
+  const { stage, drawing, frame, last } = view;
+  if (!frame || !last) return;
+  const r = ARROW_PX * stage.pixelAt(stage.controls.target);
+  if (!(Math.abs(r / last.r - 1) < 0.01)) {
+    last.r = r;
+    drawing.update(last);
+    drawing.setAxes(frame.L, frame.t, r * 0.5, view.colors, frame.includeOrigin);
+  }
+  const px = last.degenerate ? DEGENERATE_VERTEX_PX : VERTEX_PX;
+  for (const name of "ABC") {
+    const m = drawing.vertices[name];
+    m.scale.setScalar(px * stage.pixelAt(m.position));
+  }
+  if (frame.includeOrigin) sizeAxes(view);
+}
+
+/**
+ * Draw each axis as thin as AXIS_PX where it is nearest the camera. An axis that passes close
+ * to the camera would swell into a bar across the picture there: the part of it nearer than
+ * AXIS_NEAREST times the target's depth is left out (its arrowhead with it, when that is cut).
+ */
+function sizeAxes(view) {
+  const { stage, drawing, frame } = view;
+  const forward = stage.controls.target.clone().sub(stage.camera.position).normalize();
+  const depthOf = (p) => p.clone().sub(stage.camera.position).dot(forward);
+  const least = AXIS_NEAREST * depthOf(stage.controls.target);
+  for (const a of "xyz") {
+    const e = new Vector3(a === "x" ? 1 : 0, a === "y" ? 1 : 0, a === "z" ? 1 : 0);
+    // the depth along the axis is linear: d(s) = d0 + k s for the point s e, s in [-L, L]
+    const d0 = depthOf(new Vector3());
+    const k = e.dot(forward);
+    let [lo, hi] = [-frame.L, frame.L];
+    if (Math.abs(k) > 1e-12) {
+      const s = (least - d0) / k; // where the axis reaches the least depth
+      if (k > 0) lo = Math.max(lo, s);
+      else hi = Math.min(hi, s);
+    } else if (d0 < least) hi = lo; // all of it too near
+    const { arrow, ticks } = drawing.axes[a];
+    const shown = hi > lo;
+    const r = AXIS_PX * stage.pixelAt(e.clone().multiplyScalar(k > 0 ? lo : hi));
+    Drawing.placeArrow(arrow, e.clone().multiplyScalar(lo), e.clone().multiplyScalar(hi), r, shown);
+    if (shown && hi < frame.L) arrow.head.visible = false;
+    else arrow.head.visible = true;
+    for (const tick of ticks) {
+      if (!tick.visible) continue;
+      tick.scale.setScalar(depthOf(tick.position) < least ? 0 : TICK_PX * stage.pixelAt(tick.position));
+    }
+  }
 }
 
 /** Draw in the frame `next` (axes, grid, ticks); moveCamera as the stage's framePoints' `go`. */
 export function applyFrame(view, next, moveCamera) {
   const { stage, drawing, labels, colors } = view;
   view.frame = next;
-  if (moveCamera !== false) stage.framePoints(next.box, moveCamera, next.start);
-  const r = next.radius * 0.014;
+  if (moveCamera === false) stage.framePoints(next.box, false);
+  else {
+    // keep the learner's direction unless it would show the triangle edge-on (or along its line)
+    const keep = moveCamera === "keep" && showsTriangle(stage.direction(), next);
+    stage.framePoints(next.box, keep ? "keep" : true, next.start);
+  }
+  const r = ARROW_PX * stage.pixelAt(stage.controls.target);
   const ticks = drawing.setAxes(next.L, next.t, r * 0.5, colors, next.includeOrigin);
   drawing.setGrid(next.L, next.t, surface(view.dark), next.includeOrigin);
   labels.hide("tick:");
@@ -75,25 +146,30 @@ export function applyFrame(view, next, moveCamera) {
 }
 
 /**
- * Frame the points again when they call for it (not during a drag): the first drawing, a new
- * triangle from the host, other units, a point that left the view.
+ * Frame the points again after a change (not during a drag): the first drawing, a new
+ * triangle from the host, a flip of the order, new units. The learner's own move (a typed
+ * value, a slider, a key, the end of a drag) keeps the camera while everything framed stays
+ * well inside the view, fills a fair part of it and is not seen edge-on; otherwise it frames
+ * too, keeping the learner's direction.
  */
 export function reframe(view, pts, winding) {
   const { stage } = view;
   if (!view.dragging) {
     const next = frameOf(view, pts, winding);
     const frame = view.frame;
+    const flipped = view.drawnWinding && view.drawnWinding !== winding;
     if (!frame) applyFrame(view, next, true);
-    else if (view.hostMoved) {
-      // a new triangle from the host: frame it, facing it unless the user turned the view
+    else if (view.hostMoved || flipped) {
+      // a new triangle from the host, or N turned over: frame it, facing its front unless the
+      // user turned the view
       applyFrame(view, next, stage.atHome() ? true : "keep");
     } else if (!sameUnits(frame, next)) applyFrame(view, next, "keep"); // drawn in other units now
     else {
-      // the learner's own move: the camera stays (nothing jumps); the axes may grow
-      if (next.L !== frame.L || next.t !== frame.t) applyFrame(view, { ...next, center: frame.center, radius: frame.radius }, false);
-      const shown = pts.map((p) => toDisplay(p, view.frame));
-      if (!stage.inView(shown)) applyFrame(view, next, "keep"); // a point left the view: step back
+      const { inside, fill } = stage.spread(next.box);
+      if (!inside || fill < 0.35 || !showsTriangle(stage.direction(), next)) applyFrame(view, next, "keep");
+      else applyFrame(view, next, false); // the camera stays; the axes may grow
     }
+    view.drawnWinding = winding;
   }
   view.hostMoved = false;
 }
@@ -104,14 +180,14 @@ function arrows(n, S, lMax, degenerate, showUnit) {
   let nDraw = new Vector3();
   let nFactor = 1;
   if (!degenerate) {
-    const d = drawnAt(n.length() * S, N_AIM * lMax);
+    const d = drawnAt(n.length() * S, lMax);
     nFactor = d.factor;
     nDraw = n.clone().setLength(d.length);
   }
   let unitDraw = null;
   let unitFactor = 1;
   if (!degenerate && showUnit) {
-    const d = drawnAt(1 / S, UNIT_AIM * lMax);
+    const d = drawnAt(1 / S, lMax);
     unitFactor = d.factor;
     unitDraw = n.clone().setLength(d.length);
   }
@@ -158,9 +234,10 @@ export function drawTriangle(view, pts, st, winding) {
   labels.label("arrow:N", "arrow", scaledLabel(nFactor));
   labels.label("arrow:unit", "arrow", scaledLabel(unitFactor, true));
   view.scales = { N: nFactor, unit: unitDraw ? unitFactor : null };
-  const r = frame.radius * 0.014;
+  const r = ARROW_PX * view.stage.pixelAt(view.stage.controls.target);
   const g = { A, B, C, P, Q, centroid, nDraw, unitDraw, degenerate, showParallelogram: !!get("show_parallelogram"), r };
   view.drawing.update(g);
+  view.last = g; // redrawn at the screen's sizes before each picture (sizeToScreen)
   view.display = { A, B, C };
   view.heads = { U: P, V: Q, N: degenerate ? null : centroid.clone().add(nDraw), unit: unitDraw ? centroid.clone().add(unitDraw) : null };
   placeLabels(view, g, U, V);

@@ -6,7 +6,10 @@ import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
 export const DEFAULT_DIRECTION = new Vector3(1.0, 0.75, 0.65).normalize();
 const FOV = 40;
-const LABEL_MARGIN = 28;
+const UP = new Vector3(0, 0, 1);
+// px kept free at each side of the view beyond the framed points: a vertex label sits 30 px
+// beyond its point and is about 34 px wide
+export const LABEL_MARGIN = 44;
 
 /**
  * True when WebGL runs on the CPU (SwiftShader, llvmpipe: no usable GPU). Multisampling then
@@ -34,39 +37,56 @@ function basis(up, direction) {
   return { x, y: new Vector3().crossVectors(z, x), z };
 }
 
-/** Where to look so the framed points sit in the middle of the picture (not just of a box). */
-function fitTarget(camera, home, direction) {
-  const { x, y } = basis(camera.up, direction);
-  const xs = home.points.map((p) => p.clone().sub(home.center).dot(x));
-  const ys = home.points.map((p) => p.clone().sub(home.center).dot(y));
-  const cx = (Math.min(...xs) + Math.max(...xs)) / 2;
-  const cy = (Math.min(...ys) + Math.max(...ys)) / 2;
-  return home.center.clone().addScaledVector(x, cx).addScaledVector(y, cy);
+/** The direction the camera can look from (straight above or below: tilted a hair, so "up" stays z). */
+function usable(direction) {
+  const d = direction.clone().normalize();
+  if (Math.abs(d.z) > 0.999) d.set(0, -1e-3, Math.sign(d.z)).normalize();
+  return d;
 }
 
 /**
- * The distance from home's target, looking from `direction`, at which every framed point
- * projects inside a view of `width` x `height` px with LABEL_MARGIN px to spare on each side
- * (for the labels beyond the points and the arrow heads). Exact for the perspective camera.
+ * Where the camera looks from `direction` (a z-up perspective camera of FOV degrees) so that
+ * every one of `points` (display units) projects inside a view of `width` x `height` px with
+ * `margin` px to spare on each side (LABEL_MARGIN: for the labels beyond the points and the
+ * arrow heads): { target, distance, direction }. The target centres the points' picture, not just
+ * their box; the distance is exact for the perspective camera. A pure function of its inputs.
  */
-function fitDistance(camera, home, { width, height }, direction) {
-  const { x, y, z } = basis(camera.up, direction);
+export function fitCamera(points, direction, { width, height }, margin = LABEL_MARGIN) {
+  const d = usable(direction);
+  const { x, y, z } = basis(UP, d);
+  const lo = points[0].clone();
+  const hi = points[0].clone();
+  for (const p of points) {
+    lo.min(p);
+    hi.max(p);
+  }
+  const center = lo.clone().add(hi).multiplyScalar(0.5);
+  const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+  const xs = points.map((p) => p.clone().sub(center).dot(x));
+  const ys = points.map((p) => p.clone().sub(center).dot(y));
+  const target = center
+    .clone()
+    .addScaledVector(x, (Math.min(...xs) + Math.max(...xs)) / 2)
+    .addScaledVector(y, (Math.min(...ys) + Math.max(...ys)) / 2);
+  const w = Math.max(width, 1);
+  const h = Math.max(height, 1);
   const tanV = Math.tan(((FOV / 2) * Math.PI) / 180);
-  const tanH = tanV * camera.aspect;
-  const sx = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(width, 1));
-  const sy = Math.max(0.5, 1 - (2 * LABEL_MARGIN) / Math.max(height, 1));
+  const tanH = (tanV * w) / h;
+  const sx = Math.max(0.4, 1 - (2 * margin) / w);
+  const sy = Math.max(0.4, 1 - (2 * margin) / h);
   let distance = 1e-6;
-  for (const p of home.points) {
-    const q = p.clone().sub(home.target);
+  for (const p of points) {
+    const q = p.clone().sub(target);
     const depth = q.dot(z);
-    distance = Math.max(
-      distance,
-      depth + Math.abs(q.dot(x)) / (tanH * sx),
-      depth + Math.abs(q.dot(y)) / (tanV * sy),
-    );
+    distance = Math.max(distance, depth + Math.abs(q.dot(x)) / (tanH * sx), depth + Math.abs(q.dot(y)) / (tanV * sy));
   }
   // never so close that a point is near the camera
-  return Math.max(distance * 1.02, home.radius * 1.2);
+  return { target, distance: Math.max(distance * 1.02, radius * 1.2), direction: d };
+}
+
+/** The size of one screen pixel, in display units, at `depth` in front of the camera. */
+export function pixelAt(depth, height) {
+  return (2 * Math.tan(((FOV / 2) * Math.PI) / 180) * depth) / Math.max(height, 1);
 }
 
 /** Make `points` (display units) home's framing: what it keeps in view, their box's centre and radius. */
@@ -104,13 +124,29 @@ function zoomCamera(camera, controls, factor) {
   camera.position.copy(controls.target).addScaledVector(offset.normalize(), r);
 }
 
-/** True when every point (display units) projects inside the camera's view, with a margin. */
-function inCameraView(camera, points, margin) {
+/**
+ * How `points` (display units) sit in the camera's picture of `width` x `height` px: inside
+ * (every point in front of the camera and at least half LABEL_MARGIN from each side) and fill
+ * (their spread over the room LABEL_MARGIN leaves, 1 when framed exactly).
+ */
+function spreadInView(camera, points, width, height) {
   camera.updateMatrixWorld();
-  return points.every((p) => {
+  const m = LABEL_MARGIN / 2;
+  let inside = true;
+  const lo = [Infinity, Infinity];
+  const hi = [-Infinity, -Infinity];
+  for (const p of points) {
     const q = p.clone().project(camera);
-    return Math.abs(q.x) <= margin && Math.abs(q.y) <= margin && q.z < 1;
-  });
+    if (!(q.z < 1)) inside = false;
+    const xy = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
+    for (const k of [0, 1]) {
+      lo[k] = Math.min(lo[k], xy[k]);
+      hi[k] = Math.max(hi[k], xy[k]);
+    }
+  }
+  inside = inside && lo[0] >= m && lo[1] >= m && hi[0] <= width - m && hi[1] <= height - m;
+  const room = [Math.max(width - 2 * LABEL_MARGIN, 1), Math.max(height - 2 * LABEL_MARGIN, 1)];
+  return { inside, fill: Math.max((hi[0] - lo[0]) / room[0], (hi[1] - lo[1]) / room[1]) };
 }
 
 /** The renderer, its canvas in `container`, the scene, the camera (z up) and the orbit controls. */
@@ -137,11 +173,12 @@ function createParts(container) {
  * demand (requestRender), keeps a home framing (framePoints, reset, along) and follows the
  * container's size.
  */
-export function createStage(container, { onRender }) {
+export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
   const { renderer, canvas, scene, camera, controls } = createParts(container);
   let frame = 0;
   let width = 1;
   let height = 1;
+  let inset = 0; // px at the right of the view that the picture keeps free (setInset)
   const home = {
     target: new Vector3(),
     distance: 6,
@@ -169,6 +206,34 @@ export function createStage(container, { onRender }) {
     draw();
   }
 
+  /**
+   * The camera's projection for the view's size: with an inset (px covered at the right, by
+   * the readout in full screen) the picture's centre moves into the part left free, at the
+   * same scale (a view offset of a camera as wide as the view and the inset together).
+   */
+  function project() {
+    const free = freeInset();
+    camera.aspect = (width + free) / height;
+    if (free) camera.setViewOffset(width + free, height, free, 0, width, height);
+    else camera.clearViewOffset();
+    camera.updateProjectionMatrix();
+  }
+
+  /** The inset as the view's size allows it (at most half the view). */
+  function freeInset() {
+    return Math.min(inset, Math.floor(width / 2));
+  }
+
+  /** Keep `px` at the right of the view free (the readout over it in full screen), and frame again. */
+  function setInset(px) {
+    const next = Math.max(0, Math.round(px));
+    if (next === inset) return;
+    inset = next;
+    project();
+    if (atHome) look(home.direction);
+    requestRender();
+  }
+
   function resize() {
     const w = Math.max(1, Math.round(container.clientWidth));
     const h = Math.max(1, Math.round(container.clientHeight));
@@ -176,8 +241,7 @@ export function createStage(container, { onRender }) {
     width = w;
     height = h;
     renderer.setSize(w, h, false);
-    camera.aspect = w / h;
-    camera.updateProjectionMatrix();
+    project();
     if (atHome) look(home.direction);
     requestRender();
   }
@@ -204,10 +268,10 @@ export function createStage(container, { onRender }) {
   function look(direction) {
     home.direction.copy(direction);
     atHome = true;
-    const d = direction.clone().normalize();
-    if (Math.abs(d.z) > 0.999) d.set(0, -1e-3, Math.sign(d.z)).normalize();
-    home.target.copy(fitTarget(camera, home, d));
-    home.distance = fitDistance(camera, home, { width, height }, d);
+    const fit = fitCamera(home.points, direction, { width: width - freeInset(), height }, margin);
+    const d = fit.direction;
+    home.target.copy(fit.target);
+    home.distance = fit.distance;
     camera.near = home.distance / 200;
     camera.far = home.distance * 50;
     camera.updateProjectionMatrix();
@@ -235,8 +299,16 @@ export function createStage(container, { onRender }) {
     renderNow,
     resize,
     framePoints,
-    /** True when every point (display units) projects inside the view, with a margin. */
-    inView: (points, margin = 0.92) => inCameraView(camera, points, margin),
+    /** How points (display units) sit in the picture: { inside, fill } (see spreadInView). */
+    spread: (points) => spreadInView(camera, points, width - freeInset(), height),
+    setInset,
+    /** Where the camera looks from (a unit vector from the target towards the camera). */
+    direction: () => camera.position.clone().sub(controls.target).normalize(),
+    /** The size of one screen pixel, in display units, at `point` (display units). */
+    pixelAt: (point) => {
+      const forward = controls.target.clone().sub(camera.position).normalize();
+      return pixelAt(Math.max(point.clone().sub(camera.position).dot(forward), camera.near), height);
+    },
     reset: () => look(home.start),
     /** Turn about the target: `around` radians about z, `over` towards it. For the keyboard. */
     turn: (around, over) => moveBy(() => turnCamera(camera, controls, around, over)),

@@ -3,10 +3,6 @@
  * JupyterLab with body[data-jp-theme-light="false"]. The view follows changes.
  */
 
-const FALLBACK = {
-  A: { light: "#333333", dark: "#E6E6E6" },
-};
-
 export function isDark(doc = document) {
   const body = doc.body;
   if (!body) return false;
@@ -32,9 +28,13 @@ export function watchTheme(onChange, doc = document) {
   return () => observer.disconnect();
 }
 
-/** The colour of one role from the host's palette ({role: {light, dark}}). */
+/**
+ * The colour of one role from the host's palette ({role: {light, dark}}, trinormal.colors,
+ * never copied here); the text's colour for a role the palette lacks.
+ */
 export function roleColor(palette, role, dark) {
-  const entry = (palette && palette[role]) || FALLBACK[role] || FALLBACK.A;
+  const entry = palette && palette[role];
+  if (!entry) return surface(dark).text;
   return dark ? entry.dark : entry.light;
 }
 

@@ -4,6 +4,7 @@
  * edits.js); the others move the camera only.
  */
 import { element, setAttr, setText } from "./dom.js";
+import { addPresentButtons } from "./present.js";
 
 const ORDER = { ABC: "A→B→C", ACB: "A→C→B" };
 
@@ -19,11 +20,11 @@ function button(text, label, onClick) {
 }
 
 /**
- * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset() } (reset:
- * frame the triangle again). Returns { update() }: the buttons' words and pressed states
+ * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset(), onFullscreen(on) }
+ * (reset: frame the triangle again; onFullscreen: after the view enters or leaves full screen). Returns { update() }: the buttons' words and pressed states
  * from the values.
  */
-export function createToolbar(bar, { get, edit, stage, reset }) {
+export function createToolbar(bar, { get, edit, stage, reset, onFullscreen }) {
   const flip = button("", null, () => edit({ winding: get("winding") === "ACB" ? "ABC" : "ACB" }));
   const toggle = (key, text) => button(text, null, () => edit({ [key]: !get(key) }));
   const para = toggle("show_parallelogram", "");
@@ -47,6 +48,11 @@ export function createToolbar(bar, { get, edit, stage, reset }) {
     unit,
   );
 
+  // --- for the projector and worksheets (present.js): Full screen and Save picture, in the
+  // view's corner so this toolbar keeps one row
+  const root = bar.closest(".tn-view") || bar.parentElement;
+  const removePresent = addPresentButtons({ root, stage, filename: "triangle.png", onFullscreen });
+
   function update() {
     const winding = get("winding") === "ACB" ? "ACB" : "ABC";
     setText(flip, `⇄ ${ORDER[winding]}`);
@@ -56,5 +62,5 @@ export function createToolbar(bar, { get, edit, stage, reset }) {
     setAttr(unit, "aria-pressed", !!get("show_unit_normal"));
   }
 
-  return { update };
+  return { update, dispose: removePresent };
 }

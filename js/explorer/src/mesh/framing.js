@@ -6,6 +6,9 @@
 import { Vector3 } from "three";
 import { DEFAULT_DIRECTION } from "../scene.js";
 
+/** Px the camera keeps free at each side of the model (it has no labels beyond its points). */
+export const MARGIN = 28;
+
 /** At most this many vertices, spread over the model, frame the view (besides its extremes). */
 const FRAMING_SAMPLE = 4096;
 

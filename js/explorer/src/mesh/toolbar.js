@@ -4,6 +4,7 @@
  * kernel keeps it), else state of this view (the site).
  */
 import { element, toolbarElement } from "../dom.js";
+import { addPresentButtons } from "../present.js";
 
 /** The toggles and their values where the host has no such key. */
 export const LOCAL_FLAGS = { cull: false, smooth: false, show_face_normals: true, show_vertex_normals: false };
@@ -35,8 +36,11 @@ export function createFlags(model, onLocalChange) {
   };
 }
 
-/** { flags, stage } -> { el, update(arrows) }; arrows.has(kind) says which arrow toggles to show. */
-export function createToolbar({ flags, stage }) {
+/**
+ * { flags, stage, root } -> { el, update(arrows), dispose() }; arrows.has(kind) says which arrow
+ * toggles to show; root is the view's root (what full screen fills the screen with).
+ */
+export function createToolbar({ flags, stage, root }) {
   const el = toolbarElement("tnm-toolbar", "3D view of the mesh");
   const buttons = {};
   for (const [key, text, title] of TOGGLES) {
@@ -52,8 +56,11 @@ export function createToolbar({ flags, stage }) {
   reset.type = "button";
   reset.addEventListener("click", () => stage.reset());
   el.append(reset, ...Object.values(buttons));
+  // for the projector and worksheets (../present.js): in the view's corner
+  const removePresent = addPresentButtons({ root, stage, filename: "mesh.png" });
   return {
     el,
+    dispose: removePresent,
     update(arrows) {
       for (const [key, b] of Object.entries(buttons)) b.setAttribute("aria-pressed", String(flags.get(key)));
       buttons.show_face_normals.hidden = !arrows.has("face");

@@ -39,7 +39,7 @@ import { isDark, roleColor, surface as surfaceColors, watchTheme } from "../them
 import { touchGate } from "../touch.js";
 import { createArrows } from "./arrows.js";
 import { displayPositions, readMesh } from "./data.js";
-import { framingPoints, startDirection } from "./framing.js";
+import { framingPoints, MARGIN, startDirection } from "./framing.js";
 import { createFaceForm, turnWithKeys } from "./keys.js";
 import { createLod } from "./lod.js";
 import { createOutlines, faultSides } from "./outlines.js";
@@ -184,7 +184,7 @@ function render({ model, el }) {
   el.appendChild(root);
   let stage;
   try {
-    stage = createStage(stageEl, { onRender: () => {} });
+    stage = createStage(stageEl, { onRender: () => {}, margin: MARGIN });
   } catch (err) {
     stageEl.remove();
     root.appendChild(element("p", "tnm-nogl", "This browser cannot draw the 3D view (WebGL is not available). The report above does not need it."));
@@ -203,7 +203,7 @@ function render({ model, el }) {
   view.lod = createLod({ stage, surface: view.surface, outlines: view.outlines, root });
   const culled = () => view.flags.get("cull");
   view.picking = createPicking({ stage, surface: view.surface, root, canPick, culled, frame: () => view.current, onPick: pick });
-  view.toolbar = createToolbar({ flags: view.flags, stage });
+  view.toolbar = createToolbar({ flags: view.flags, stage, root });
   root.prepend(view.toolbar.el);
   function pick(face) {
     model.set("picked", face);
@@ -241,6 +241,7 @@ function render({ model, el }) {
   return () => {
     for (const [event, cb] of events) model.off(event, cb);
     stopKeys();
+    view.toolbar.dispose();
     touch.dispose();
     observer.disconnect();
     stopTheme();
