@@ -182,3 +182,32 @@ def test_the_print_command_needs_only_the_standard_library(tmp_path):
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, timeout=60)
     assert run.returncode == 0, run.stderr
     assert zipfile.is_zipfile(tmp_path / "m.3mf")
+
+
+def test_the_explorer_writes_the_model_and_answers_its_download_buttons(tmp_path):
+    from trinormal.explorer import Explorer
+
+    ex = Explorer(a=(0, 0, 0), b=(4, 0, 0), c=(0, 3, 0), winding="ACB")
+    want = print_model((0, 0, 0), (4, 0, 0), (0, 3, 0), winding="ACB")
+    assert ex.to_stl(tmp_path / "t.stl").read_bytes() == want.stl()
+    assert (
+        ex.to_3mf(tmp_path / "t.3mf", marks="braille").read_bytes()
+        == print_model((0, 0, 0), (4, 0, 0), (0, 3, 0), winding="ACB", marks="braille").three_mf()
+    )
+    sent = []
+    ex.view.send = lambda content, buffers=None: sent.append((content, buffers))
+    ex.view._handle_custom_msg({"print": {"marks": "letters", "seq": 7}}, [])
+    assert sent == [({"printed": {"seq": 7, "name": "triangle-letters.stl", "error": ""}},
+                     [want.stl()])]  # fmt: skip
+    ex.set(c=(2, 0, 0))  # on the line through A and B
+    ex.view._handle_custom_msg({"print": {"marks": "braille", "seq": 8}}, [])
+    assert sent[-1] == (
+        {
+            "printed": {
+                "seq": 8,
+                "name": "triangle-braille.stl",
+                "error": PRINT_MESSAGES["degenerate"],
+            }
+        },
+        None,
+    )

@@ -53,6 +53,7 @@ from trinormal.core import triangle_normal
 from trinormal.printmodel import _features as F
 from trinormal.printmodel._features import (
     DEFAULT_SIZE,
+    DOWNLOAD_NAME,
     MARKS,
     PRINT_MESSAGES,
     SIZE_RANGE,
@@ -65,6 +66,7 @@ from trinormal.validation import check_winding
 
 __all__ = [
     "DEFAULT_SIZE",
+    "DOWNLOAD_NAME",
     "MARKS",
     "PRINT_MESSAGES",
     "SIZE_RANGE",
@@ -347,6 +349,7 @@ def site_constants() -> dict[str, Any]:
     """
     return {
         "default_size": DEFAULT_SIZE,
+        "download_name": DOWNLOAD_NAME,
         "size_range": list(SIZE_RANGE),
         "marks": list(MARKS),
         "thickness": THICKNESS,

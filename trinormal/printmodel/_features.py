@@ -24,6 +24,8 @@ DEFAULT_SIZE = 80.0
 SIZE_RANGE = (50.0, 1000.0)
 #: How A, B and C can be marked.
 MARKS = ("letters", "braille")
+#: The name of the file the explorer's "Download for 3D printing" buttons save.
+DOWNLOAD_NAME = "triangle-{marks}.stl"
 #: The plate's thickness, mm.
 THICKNESS = 3.0
 

@@ -19,6 +19,7 @@ import { createEdits } from "./edits.js";
 import { Drawing } from "./geometry.js";
 import { setupInteraction } from "./interaction.js";
 import { createLayout, showWithoutWebGL } from "./layout.js";
+import { createPrinting } from "./printing.js";
 import { readStep } from "./numbers.js";
 import { updateLegend, updatePanels } from "./panels.js";
 import { applyFrame, createLabels, dataPoints, drawTriangle, frameOf, projection, reframe } from "./picture.js";
@@ -159,6 +160,7 @@ function render({ model, el }) {
   const { stage } = view;
   Object.assign(view, createLabels(parts.stageEl));
   view.drawing = new Drawing(stage.scene);
+  const printing = createPrinting(model);
   view.toolbar = createToolbar(parts.toolbarEl, {
     get,
     edit,
@@ -167,6 +169,7 @@ function render({ model, el }) {
       if (view.frame) applyFrame(view, frameOf(view, view.lastGood || dataPoints(view)), true);
       stage.reset();
     },
+    print: printing.request,
   });
 
   // touch: a finger scrolls the page over the view until a tap turns it on (touch.js)
@@ -203,6 +206,7 @@ function render({ model, el }) {
 
   return () => {
     stopModel();
+    printing.stop();
     touch.dispose();
     stopTheme();
     interaction();

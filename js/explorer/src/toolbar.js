@@ -1,7 +1,8 @@
 /*
  * The explorer's toolbar: reset the view, look along x, y or z, flip the order of the
  * vertices, show the parallelogram, show the unit normal. The last three are edits (see
- * edits.js); the others move the camera only.
+ * edits.js); the others move the camera only. Then, in a block of their own, the two
+ * "Download for 3D printing" buttons (marks in letters or in braille; printing.js).
  */
 import { element, setAttr, setText } from "./dom.js";
 
@@ -19,11 +20,11 @@ function button(text, label, onClick) {
 }
 
 /**
- * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset() } (reset:
- * frame the triangle again). Returns { update() }: the buttons' words and pressed states
- * from the values.
+ * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset(), print(marks) }
+ * (reset: frame the triangle again; print: ask for the printable model). Returns { update() }:
+ * the buttons' words and pressed states from the values.
  */
-export function createToolbar(bar, { get, edit, stage, reset }) {
+export function createToolbar(bar, { get, edit, stage, reset, print }) {
   const flip = button("", null, () => edit({ winding: get("winding") === "ACB" ? "ABC" : "ACB" }));
   const toggle = (key, text) => button(text, null, () => edit({ [key]: !get(key) }));
   const para = toggle("show_parallelogram", "");
@@ -46,6 +47,7 @@ export function createToolbar(bar, { get, edit, stage, reset }) {
     para,
     unit,
   );
+  if (print) addPrintButtons(bar, print);
 
   function update() {
     const winding = get("winding") === "ACB" ? "ACB" : "ABC";
@@ -57,4 +59,17 @@ export function createToolbar(bar, { get, edit, stage, reset }) {
   }
 
   return { update };
+}
+
+// ------------------------------------------------------------------ 3D printing (printing.js)
+
+/** The "Download for 3D printing" buttons, letters and braille, and their status line. */
+function addPrintButtons(bar, print) {
+  const status = element("span", "tnx-print-status");
+  status.setAttribute("role", "status");
+  const letters = button("", "Download for 3D printing: STL file, corners marked in letters", () => print("letters", status));
+  letters.append(element("span", "tnx-long", "3D print"), element("span", "tnx-short", "3D"));
+  const braille = button("", "Download for 3D printing: STL file, corners marked in braille", () => print("braille", status));
+  braille.append(element("span", "tnx-long", "3D print ⠃"), element("span", "tnx-short", "⠃"));
+  bar.append(letters, braille, status);
 }
