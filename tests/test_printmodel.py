@@ -14,6 +14,7 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -211,3 +212,27 @@ def test_the_explorer_writes_the_model_and_answers_its_download_buttons(tmp_path
         },
         None,
     )
+
+
+def test_the_readme_and_the_cli_page_show_what_the_command_prints(tmp_path):
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "trinormal",
+            "print-model",
+            "0,0,0",
+            "4,0,0",
+            "0,3,0",
+            "triangle.stl",
+        ],
+        capture_output=True,
+        text=True,
+        encoding="utf-8",
+        timeout=60,
+        cwd=tmp_path,
+    )
+    session = "$ trinormal print-model 0,0,0 4,0,0 0,3,0 triangle.stl\n" + run.stdout
+    root = Path(__file__).resolve().parents[1]
+    for doc in ("README.md", "docs/cli.md"):
+        assert session in (root / doc).read_text(encoding="utf-8"), doc

@@ -76,6 +76,7 @@ __all__ = [
     "build",
     "check_size",
     "print_model",
+    "sample_file",
     "site_constants",
 ]
 
@@ -374,3 +375,23 @@ def site_constants() -> dict[str, Any]:
         "messages": dict(PRINT_MESSAGES),
         "stl_header": _STL_HEADER.decode("ascii"),
     }
+
+
+#: The printed model the "Check a mesh" page offers beside its damaged examples: file name,
+#: the button's words, and the triangle (the one ``trinormal print-model`` is shown with).
+SAMPLE = (
+    "printed-triangle.stl",
+    "A triangle ready to print, with its normal (binary STL from trinormal print-model)",
+    ((1, 0, 0), (0, 2, 0), (0, 0, 3)),
+)
+
+
+def sample_file() -> bytes:
+    """Return the binary STL of `SAMPLE`'s triangle, as ``trinormal print-model`` writes it.
+
+    Examples
+    --------
+    >>> len(sample_file()) == 84 + 50 * 270
+    True
+    """
+    return print_model(*SAMPLE[2]).stl()
