@@ -198,8 +198,9 @@ def test_the_explorer_writes_the_model_and_answers_its_download_buttons(tmp_path
     sent = []
     ex.view.send = lambda content, buffers=None: sent.append((content, buffers))
     ex.view._handle_custom_msg({"print": {"marks": "letters", "seq": 7}}, [])
-    assert sent == [({"printed": {"seq": 7, "name": "triangle-letters.stl", "error": ""}},
-                     [want.stl()])]  # fmt: skip
+    done = PRINT_MESSAGES["downloaded"].format(name="triangle-letters.stl")
+    answer = {"seq": 7, "name": "triangle-letters.stl", "error": "", "done": done}
+    assert sent == [({"printed": answer}, [want.stl()])]
     ex.set(c=(2, 0, 0))  # on the line through A and B
     ex.view._handle_custom_msg({"print": {"marks": "braille", "seq": 8}}, [])
     assert sent[-1] == (

@@ -33,6 +33,8 @@ TRIANGLES = [
     (("1e200", 0, 0), (0, "1e200", 0), (0, 0, "-1e200")),  # huge
     ((0, 0, 0), (10, 0, 0), (9, "0.4", 3)),  # thin: refused
     ((0, 0, 0), (1, 0, 0), ("0.5", "0.05", 0)),  # thin: refused
+    ((3, 6, -8), (-6, -6, -2), (-6, -5, 0)),  # the arrow would touch the mark at A
+    ((7, -3, -8), (-2, 1, 1), (-2, 2, 5)),  # the arrow would touch the ridge V
 ]
 
 
@@ -74,6 +76,7 @@ def test_the_site_makes_pythons_model_byte_for_byte(tmp_path):
     made = sum("stl" in e for e in manifest)
     assert made >= 20 and len(manifest) - made >= 4  # models and refusals both compared
     assert {e["marks"] for e in manifest if "stl" in e} == {"letters", "braille"}
+    assert sum("would touch" in e.get("error", "") for e in manifest) >= 2
     (tmp_path / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps({"print": print_constants()}), encoding="utf-8")

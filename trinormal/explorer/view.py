@@ -170,10 +170,10 @@ class ExplorerView(anywidget.AnyWidget):
     def _print(self, request: dict[str, Any]) -> None:
         """Answer "Download for 3D printing": the STL bytes of the drawn triangle, or why not.
 
-        The answer is ``{"printed": {"seq", "name", "error"}}`` with the file as one buffer
+        The answer is ``{"printed": {"seq", "name", "error", "done"}}`` with the file as one buffer
         (``js/explorer/src/printing.js`` reads it).
         """
-        from trinormal.printmodel import DOWNLOAD_NAME, MARKS, print_model
+        from trinormal.printmodel import DOWNLOAD_NAME, MARKS, PRINT_MESSAGES, print_model
 
         marks = str(request.get("marks")) if request.get("marks") in MARKS else MARKS[0]
         answer = {"seq": request.get("seq", 0), "name": DOWNLOAD_NAME.format(marks=marks)}
@@ -182,7 +182,8 @@ class ExplorerView(anywidget.AnyWidget):
         except ValueError as problem:  # degenerate, too thin, or a coordinate refused
             self.send({"printed": {**answer, "error": str(problem)}})
             return
-        self.send({"printed": {**answer, "error": ""}}, buffers=[model.stl()])
+        done = PRINT_MESSAGES["downloaded"].format(name=answer["name"])
+        self.send({"printed": {**answer, "error": "", "done": done}}, buffers=[model.stl()])
 
     def _set_traits(self, edit: dict[str, Any]) -> str | None:
         unknown = sorted(set(edit) - set(EDIT_FIELDS))

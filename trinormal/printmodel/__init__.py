@@ -152,12 +152,12 @@ class PrintModel:
         >>> xml.splitlines()[7]
         '<vertex x="0" y="0" z="0"/>'
         """
+        order = "→".join(self.names)
         lines = [
             '<?xml version="1.0" encoding="UTF-8"?>',
             '<model unit="millimeter" xml:lang="en-US" '
             'xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">',
-            f'<metadata name="Title">trinormal: the triangle {self.names[0]}→{self.names[1]}→'
-            f"{self.names[2]} with its normal</metadata>",
+            '<metadata name="Title">' + PRINT_MESSAGES["title"].format(order=order) + "</metadata>",
             "<resources>",
             '<object id="1" type="model">',
             "<mesh>",

@@ -81,6 +81,12 @@ PRINT_MESSAGES: dict[str, str] = {
     "marks": "the marks at its corners do not fit inside it",
     "ridge": "the ridge {name} is too short to show",
     "touch": "{first} and {second} would touch",
+    "arrow": "the arrow",
+    "mark": "the mark at {name}",
+    "ridge_name": "the ridge {name}",
+    "edge": "an edge",
+    "title": "trinormal: the triangle {order} with its normal",
+    "downloaded": "Downloaded {name}: the triangle with its normal, ready for a slicer.",
     "size": "size must be a number of millimetres from {low} to {high}, got {got}",
     "marks_kind": "marks must be 'letters' or 'braille', got {got}",
     "format": "{path}: write the model to a file ending in .stl or .3mf",
@@ -293,14 +299,15 @@ def layout(corners: tuple[Point, Point, Point], size: float, marks: str, names: 
 
 def _check_clearance(plan: Layout, radius: float, size: float, names: str) -> None:
     """Refuse a layout where two features come closer than the smallest gap, or reach an edge."""
+    words = PRINT_MESSAGES
     parts: list[tuple[str, Point, Point, float]] = [
-        ("the arrow", plan.centroid, plan.centroid, SHAFT_RADIUS)
+        (words["arrow"], plan.centroid, plan.centroid, SHAFT_RADIUS)
     ]
     for name, spot in zip(names, plan.marks, strict=True):
-        parts.append((f"the mark at {name}", spot, spot, radius))
+        parts.append((words["mark"].format(name=name), spot, spot, radius))
     for name, (s, base, tip) in zip("UV", plan.ridges, strict=True):
-        parts.append((f"the ridge {name}", s, base, RIDGE_WIDTH / 2))
-        parts.append((f"the ridge {name}", base, tip, RIDGE_WIDTH))
+        parts.append((words["ridge_name"].format(name=name), s, base, RIDGE_WIDTH / 2))
+        parts.append((words["ridge_name"].format(name=name), base, tip, RIDGE_WIDTH))
     for i in range(len(parts)):
         for j in range(i + 1, len(parts)):
             a, b = parts[i], parts[j]
@@ -310,7 +317,9 @@ def _check_clearance(plan: Layout, radius: float, size: float, names: str) -> No
     for name, s, e, reach in parts:
         for k in range(3):
             if segment_segment(s, e, c[k], c[(k + 1) % 3]) < reach + MIN_GAP:
-                raise _too_thin(size, PRINT_MESSAGES["touch"].format(first=name, second="an edge"))
+                raise _too_thin(
+                    size, PRINT_MESSAGES["touch"].format(first=name, second=words["edge"])
+                )
 
 
 # --------------------------------------------------------------------------- the solid, built

@@ -151,6 +151,7 @@ export function createModel(initial, onEdit, maxPrecision) {
         answer.error = err.message;
       }
     }
+    if (bytes) answer.done = K.messages.downloaded.replace("{name}", answer.name);
     events.custom({ printed: answer }, bytes ? [new DataView(bytes.buffer)] : []);
   }
 

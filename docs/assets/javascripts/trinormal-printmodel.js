@@ -303,12 +303,13 @@
   }
 
   function checkClearance(lay, radius, size, names) {
-    var parts = [["the arrow", lay.centroid, lay.centroid, K.shaft_radius]];
-    for (var i = 0; i < 3; i++) parts.push(["the mark at " + names[i], lay.marks[i], lay.marks[i], radius]);
+    var words = K.messages;
+    var parts = [[words.arrow, lay.centroid, lay.centroid, K.shaft_radius]];
+    for (var i = 0; i < 3; i++) parts.push([fill(words.mark, { name: names[i] }), lay.marks[i], lay.marks[i], radius]);
     ["U", "V"].forEach(function (name, k) {
       var r = lay.ridges[k];
-      parts.push(["the ridge " + name, r[0], r[1], K.ridge_width / 2]);
-      parts.push(["the ridge " + name, r[1], r[2], K.ridge_width]);
+      parts.push([fill(words.ridge_name, { name: name }), r[0], r[1], K.ridge_width / 2]);
+      parts.push([fill(words.ridge_name, { name: name }), r[1], r[2], K.ridge_width]);
     });
     for (i = 0; i < parts.length; i++) {
       for (var j = i + 1; j < parts.length; j++) {
@@ -322,7 +323,7 @@
     parts.forEach(function (part) {
       for (var k = 0; k < 3; k++) {
         if (segmentSegment(part[1], part[2], c[k], c[(k + 1) % 3]) < part[3] + K.min_gap) {
-          throw tooThin(size, fill(K.messages.touch, { first: part[0], second: "an edge" }));
+          throw tooThin(size, fill(K.messages.touch, { first: part[0], second: words.edge }));
         }
       }
     });
@@ -422,11 +423,10 @@
 
   /** The 3MF model part, the text PrintModel.model_xml() writes. */
   function modelXml(model) {
-    var nm = model.names;
     var lines = [
       '<?xml version="1.0" encoding="UTF-8"?>',
       '<model unit="millimeter" xml:lang="en-US" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">',
-      '<metadata name="Title">trinormal: the triangle ' + nm[0] + "→" + nm[1] + "→" + nm[2] + " with its normal</metadata>",
+      '<metadata name="Title">' + fill(K.messages.title, { order: model.names.split("").join("→") }) + "</metadata>",
       "<resources>",
       '<object id="1" type="model">',
       "<mesh>",

@@ -5,7 +5,8 @@
  * (trinormal-printmodel.js, through explorer-site.js). The protocol, over the model's custom
  * messages:
  *   view -> host  { print: { marks: "letters" | "braille", seq } }
- *   host -> view  { printed: { seq, name, error } } and, when made, one buffer: the STL bytes.
+ *   host -> view  { printed: { seq, name, error, done } } and, when made, one buffer: the STL
+ *   bytes (`done`: the sentence saying so).
  * A refusal (a degenerate triangle, one too thin for its features) comes back as the
  * package's sentence, shown in the status line beside the buttons.
  */
@@ -42,7 +43,7 @@ export function createPrinting(model) {
     if (!data) return;
     const bytes = data instanceof DataView ? new Uint8Array(data.buffer, data.byteOffset, data.byteLength) : new Uint8Array(data);
     download(bytes, answer.name, status.ownerDocument || document);
-    setText(status, `Downloaded ${answer.name}.`);
+    setText(status, answer.done || "");
   }
   model.on("msg:custom", onMessage);
   return {
