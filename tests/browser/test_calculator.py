@@ -209,18 +209,18 @@ def test_winding_precision_degenerate_and_chart(calc):
 
 
 def _print_buttons_download_pythons_model(calc) -> None:
-    """The 3D view's "3D print" buttons save the STL Python writes, byte for byte, or say why not."""
+    """The view's 3D printing buttons save the STL Python writes, byte for byte, or say why not."""
     calc.wait_for_selector("#tn-view[data-ready='true']")
     enter(calc, ("1", "2", "3"), ("-2", "0.5", "4"), ("1/3", "-1", "-2"), winding="ACB")
-    toolbar = calc.locator("#tn-view .tnx-toolbar")
+    group = calc.locator("#tn-view").get_by_role("group", name="3D printing")
     with calc.expect_download() as saved:
-        toolbar.get_by_role("button", name="corners marked in braille").click()
+        group.get_by_role("button", name="Download for 3D printing with braille marks").click()
     assert saved.value.suggested_filename == "triangle-braille.stl"
     want = print_model((1, 2, 3), (-2, "0.5", 4), ("1/3", -1, -2), winding="ACB", marks="braille")
     assert Path(saved.value.path()).read_bytes() == want.stl()
     enter(calc, ("0", "0", "0"), ("1", "1", "1"), ("2", "2", "2"))
-    toolbar.get_by_role("button", name="corners marked in letters").click()
-    assert toolbar.get_by_role("status").inner_text() == PRINT_MESSAGES["degenerate"]
+    group.get_by_role("button", name="Download for 3D printing", exact=True).click()
+    assert group.get_by_role("status").inner_text() == PRINT_MESSAGES["degenerate"]
 
 
 def _winding_flip_turns_the_normal_over(calc) -> None:

@@ -27,7 +27,7 @@ import { createStage } from "./scene.js";
 import { injectStyle } from "./style.js";
 import CSS from "./style.css";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
-import { createToolbar } from "./toolbar.js";
+import { createPrintButtons, createToolbar } from "./toolbar.js";
 import { setStyle } from "./dom.js";
 import { touchGate } from "./touch.js";
 
@@ -169,8 +169,8 @@ function render({ model, el }) {
       if (view.frame) applyFrame(view, frameOf(view, view.lastGood || dataPoints(view)), true);
       stage.reset();
     },
-    print: printing.request,
   });
+  createPrintButtons(parts.side, printing.request);
 
   // touch: a finger scrolls the page over the view until a tap turns it on (touch.js)
   const touch = touchGate({ root: parts.root, stageEl: parts.stageEl, controls: stage.controls, canvas: stage.canvas, activeClass: "tnx-touch-active" });

@@ -1,8 +1,9 @@
 /*
  * The explorer's toolbar: reset the view, look along x, y or z, flip the order of the
  * vertices, show the parallelogram, show the unit normal. The last three are edits (see
- * edits.js); the others move the camera only. Then, in a block of their own, the two
- * "Download for 3D printing" buttons (marks in letters or in braille; printing.js).
+ * edits.js); the others move the camera only. At the end, in a block of their own, the two
+ * "Download for 3D printing" buttons (marks in letters or in braille; printing.js), which
+ * sit beside the view rather than in the toolbar.
  */
 import { element, setAttr, setText } from "./dom.js";
 
@@ -20,11 +21,11 @@ function button(text, label, onClick) {
 }
 
 /**
- * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset(), print(marks) }
- * (reset: frame the triangle again; print: ask for the printable model). Returns { update() }:
- * the buttons' words and pressed states from the values.
+ * Fill `bar` with the buttons. view: { get(key), edit(changes), stage, reset() } (reset:
+ * frame the triangle again). Returns { update() }: the buttons' words and pressed states
+ * from the values.
  */
-export function createToolbar(bar, { get, edit, stage, reset, print }) {
+export function createToolbar(bar, { get, edit, stage, reset }) {
   const flip = button("", null, () => edit({ winding: get("winding") === "ACB" ? "ABC" : "ACB" }));
   const toggle = (key, text) => button(text, null, () => edit({ [key]: !get(key) }));
   const para = toggle("show_parallelogram", "");
@@ -47,7 +48,6 @@ export function createToolbar(bar, { get, edit, stage, reset, print }) {
     para,
     unit,
   );
-  if (print) addPrintButtons(bar, print);
 
   function update() {
     const winding = get("winding") === "ACB" ? "ACB" : "ABC";
@@ -63,13 +63,21 @@ export function createToolbar(bar, { get, edit, stage, reset, print }) {
 
 // ------------------------------------------------------------------ 3D printing (printing.js)
 
-/** The "Download for 3D printing" buttons, letters and braille, and their status line. */
-function addPrintButtons(bar, print) {
-  const status = element("span", "tnx-print-status");
+/**
+ * The "Download for 3D printing" buttons (corners marked in letters, or in braille) and their
+ * status line, as a group of their own at the end of `host` (the column beside the view: the
+ * toolbar above the view is full). print(marks, status): ask the host for the file.
+ */
+export function createPrintButtons(host, print) {
+  const group = element("div", "tnx-print");
+  group.setAttribute("role", "group");
+  group.setAttribute("aria-label", "3D printing");
+  const status = element("p", "tnx-print-status");
   status.setAttribute("role", "status");
-  const letters = button("", "Download for 3D printing: STL file, corners marked in letters", () => print("letters", status));
-  letters.append(element("span", "tnx-long", "3D print"), element("span", "tnx-short", "3D"));
-  const braille = button("", "Download for 3D printing: STL file, corners marked in braille", () => print("braille", status));
-  braille.append(element("span", "tnx-long", "3D print ⠃"), element("span", "tnx-short", "⠃"));
-  bar.append(letters, braille, status);
+  const letters = button("Download for 3D printing", null, () => print("letters", status));
+  letters.title = "An STL file of the triangle as a plate, N as an arrow, U and V as ridges, A, B, C in letters";
+  const braille = button("With braille marks", "Download for 3D printing with braille marks", () => print("braille", status));
+  braille.title = "The same model with A, B and C marked in braille";
+  group.append(letters, braille, status);
+  host.append(group);
 }
