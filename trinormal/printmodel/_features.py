@@ -271,7 +271,11 @@ def layout(corners: tuple[Point, Point, Point], size: float, marks: str, names: 
     radius = MARK_RADIUS[marks]
     if r <= MARGIN + radius + MIN_GAP:
         raise _too_thin(size, PRINT_MESSAGES["marks"])
-    spots = tuple(_inset(q, center, r, MARGIN + radius) for q in p)
+    spots = (
+        _inset(p[0], center, r, MARGIN + radius),
+        _inset(p[1], center, r, MARGIN + radius),
+        _inset(p[2], center, r, MARGIN + radius),
+    )
     line = [_inset(q, center, r, MARGIN + RIDGE_WIDTH / 2) for q in p]
     centroid = ((p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3)
     eu = _unit(line[0], line[1])
@@ -279,7 +283,7 @@ def layout(corners: tuple[Point, Point, Point], size: float, marks: str, names: 
     cos_a = eu[0] * ev[0] + eu[1] * ev[1]
     # the two ridges leave A's corner apart by their width and a gap
     sep = (RIDGE_WIDTH + GAP) / (2 * math.sqrt((1 - cos_a) / 2))
-    out = []
+    out: list[tuple[Point, Point, Point]] = []
     for k, name in ((1, "U"), (2, "V")):
         t0, t1, ex, ey = _ridge(line[0], line[k], (spots[0], spots[k]), radius, sep)
         if t1 - t0 < RIDGE_TIP + RIDGE_WIDTH:
@@ -292,7 +296,7 @@ def layout(corners: tuple[Point, Point, Point], size: float, marks: str, names: 
                 (s[0] + ex * t1, s[1] + ey * t1),
             )
         )
-    plan = Layout(p, centroid, spots, tuple(out))  # type: ignore[arg-type]
+    plan = Layout(p, centroid, spots, tuple(out))
     _check_clearance(plan, radius, size, names)
     return plan
 
