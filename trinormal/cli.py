@@ -25,7 +25,16 @@ the mesh command runs.
 status is about FILE as read), 2 when the file cannot be read. A units hint
 (``a 0.05 mm model is probably in metres``) is advice, not a problem.
 
-A degenerate triangle is an answer (exit status 0). Bad input prints one line
+``trinormal print-model A B C OUT`` writes a model of the triangle for a 3D
+printer (`trinormal.printmodel`): the plate, its normal as an arrow on the
+front face, U and V as ridges, A, B and C in embossed letters (``--braille``:
+in braille), the longest side ``--size`` mm (80 by default); OUT ends in
+``.stl`` or ``.3mf``. A degenerate triangle is refused (status 2)::
+
+    trinormal print-model 0,0,0 4,0,0 0,3,0 triangle.stl
+    trinormal print-model 0,0,0 4,0,0 0,3,0 triangle.3mf --size 120 --braille
+
+``trinormal A B C`` answers a degenerate triangle (exit status 0). Bad input prints one line
 naming the vertex and axis and exits with status 2; an output that cannot be
 written (a full disk) prints one line and exits with status 1. Where the output
 cannot show ``×``, ``−`` or ``→`` (an ASCII terminal, a Windows code page), they
@@ -141,7 +150,8 @@ def _parser() -> argparse.ArgumentParser:
         "N = U × V, |N|, the area, the unit normal and the plane.",
         epilog="Points are x,y,z with decimals (0.1, -2.5e3) or fractions (1/3), read exactly. "
         "Example: trinormal 0,0,0 1,0,0 0,1,0 --steps. "
-        "To check a mesh file: trinormal mesh FILE [--fix OUT] [--json]",
+        "To check a mesh file: trinormal mesh FILE [--fix OUT] [--json]. "
+        "To print the triangle: trinormal print-model A B C OUT [--size MM] [--braille]",
     )
     p.add_argument("points", nargs="*", metavar="POINT", help="A, B and C, each as x,y,z")
     p.add_argument(
@@ -171,7 +181,9 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def _split_argv(argv: Sequence[str]) -> tuple[list[str], list[str]]:
+def _split_argv(
+    argv: Sequence[str], value_options: set[str] = _VALUE_OPTIONS
+) -> tuple[list[str], list[str]]:
     """Separate points (tokens with commas) from options, so ``-1,2,3`` is not an option."""
     options: list[str] = []
     points: list[str] = []
@@ -180,7 +192,7 @@ def _split_argv(argv: Sequence[str]) -> tuple[list[str], list[str]]:
         if take_value:
             options.append(tok)
             take_value = False
-        elif tok in _VALUE_OPTIONS:
+        elif tok in value_options:
             options.append(tok)
             take_value = True
         elif "," in tok and not tok.startswith("--"):
@@ -239,6 +251,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         if args_in[:1] == ["mesh"]:
             return _run_mesh(args_in[1:])
+        if args_in[:1] == ["print-model"]:
+            return _run_print(args_in[1:])
         return _run(args_in)
     except KeyboardInterrupt:
         return 130
@@ -389,6 +403,75 @@ def _run_mesh(args_in: list[str]) -> int:
         _error(f"cannot write the output: {reason}")
         return 1
     return 0 if report.ok else 1  # like a linter: 1 when the report found a problem
+
+
+# --------------------------------------------------------------------------- trinormal print-model
+
+
+def _print_parser() -> argparse.ArgumentParser:
+    from trinormal.printmodel import DEFAULT_SIZE, SIZE_RANGE
+
+    p = _Parser(
+        prog="trinormal print-model",
+        description="Write a model of the triangle ABC for a 3D printer: the triangle as a plate, "
+        "its normal as an arrow standing on the front face (the side from which the corners turn "
+        "counter-clockwise), U and V as ridges from A, the corners marked.",
+        epilog="Example: trinormal print-model 0,0,0 4,0,0 0,3,0 triangle.stl --size 100",
+    )
+    p.add_argument("out", metavar="OUT", help="the file to write: .stl (binary) or .3mf")
+    p.add_argument(
+        "--size",
+        default=str(DEFAULT_SIZE),
+        help=f"the longest side in millimetres, {SIZE_RANGE[0]:g} to {SIZE_RANGE[1]:g} "
+        f"(default {DEFAULT_SIZE:g})",
+    )
+    p.add_argument(
+        "--winding",
+        default="ABC",
+        metavar="{ABC,ACB}",
+        help="the order whose front is the plate's top (default ABC)",
+    )
+    p.add_argument(
+        "--braille", action="store_true", help="mark A, B and C in braille, not in letters"
+    )
+    return p
+
+
+def _run_print(args_in: list[str]) -> int:
+    from trinormal.printmodel import print_model
+
+    options, points = _split_argv(args_in, {"--size", "--winding"})
+    try:
+        args = _print_parser().parse_args(options)
+        if len(points) != 3:
+            raise ValueError(
+                f"expected three points A B C written as x,y,z and the file to write "
+                f"(like 0,0,0 1,0,0 0,1,0 triangle.stl), got {len(points)} points"
+            )
+        a, b, c = (_read_point(p, v) for p, v in zip(points, "ABC", strict=True))
+        marks = "braille" if args.braille else "letters"
+        model = print_model(a, b, c, winding=args.winding, size=args.size, marks=marks)
+        model.write(args.out)
+    except (_UsageError, ValueError, TypeError) as exc:
+        _error(str(exc))
+        return 2
+    except OSError as exc:
+        _error(f"cannot write {args.out}: {exc.strerror or exc}")
+        return 1
+    kind = args.out.rsplit(".", 1)[-1].upper()
+    text = (
+        f"Wrote {args.out} ({kind}): the triangle {model.names[0]}→{model.names[1]}→"
+        f"{model.names[2]}, longest side {model.size:g} mm, marked in {marks}; "
+        f"{len(model.faces)} triangles, one closed solid."
+    )
+    try:
+        _write(sys.stdout, text + "\n")
+    except BrokenPipeError:
+        _silence_stdout()
+    except (OSError, ValueError):
+        _silence_stdout()
+        return 1
+    return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

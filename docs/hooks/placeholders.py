@@ -153,14 +153,19 @@ def _limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
 
 
 def _mesh_examples(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    """``mesh_examples``: one button per example model of the mesh page (list items)."""
+    """``mesh_examples``: one button per example model of the mesh page (list items).
+
+    The damaged models of `trinormal.mesh_page.EXAMPLES`, then the printable
+    triangle of `trinormal.printmodel.SAMPLE` (a model with nothing to fix).
+    """
     from trinormal.mesh_page import EXAMPLES
+    from trinormal.printmodel import SAMPLE
 
     root = relative_root(page)
     return "\n".join(
         f'<li><button type="button" class="md-button" data-example="{root}{MESH_EXAMPLES}/'
         f'{html.escape(name)}">{html.escape(label)}</button></li>'
-        for name, label in EXAMPLES
+        for name, label in [*EXAMPLES, SAMPLE[:2]]  # the damaged models, then a printable one
     )
 
 

@@ -1,8 +1,9 @@
 """``assets/javascripts/trinormal-constants.js``: what the site's JavaScript reads from the package.
 
 The output fields, the colour code, the input limits and messages, the verdicts, the
-degeneracy tolerance, the precision range, the view's grid and range, and the Check a
-mesh page's constants: the hand-written JavaScript lists none of them itself.
+degeneracy tolerance, the precision range, the view's grid and range, the Check a
+mesh page's constants and the printable model's: the hand-written JavaScript lists none
+of them itself.
 """
 
 from __future__ import annotations
@@ -47,7 +48,15 @@ def site_constants() -> dict[str, Any]:
         "format": {"sci_above_log10": SCI_ABOVE_LOG10},
         "view": {"step": view["step"], "bounds": view["bounds"]},
         "mesh": mesh_page_constants(),
+        "print": print_constants(),
     }
+
+
+def print_constants() -> dict[str, Any]:
+    """The printable model's sizes, shapes and messages (trinormal-printmodel.js reads them)."""
+    from trinormal.printmodel import site_constants as print_site_constants
+
+    return print_site_constants()
 
 
 def mesh_page_constants() -> dict[str, Any]:

@@ -78,6 +78,9 @@ def add_explorer_assets(files: Files, config: MkDocsConfig) -> None:
 
     for name, _ in EXAMPLES:
         files.append(File.generated(config, f"{MESH_EXAMPLES}/{name}", content=example_file(name)))
+    from trinormal.printmodel import SAMPLE, sample_file
+
+    files.append(File.generated(config, f"{MESH_EXAMPLES}/{SAMPLE[0]}", content=sample_file()))
 
 
 def on_page_markdown(markdown: str, page: Page, config: MkDocsConfig, files: Files) -> str:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 from urllib.parse import parse_qs, urlsplit
 
 import pytest
@@ -10,6 +11,7 @@ from browser_support import ROOT
 
 from trinormal import triangle_normal
 from trinormal.fields import FIELDS as FIELDS_SPEC
+from trinormal.printmodel import PRINT_MESSAGES, print_model
 
 VECTORS = json.loads((ROOT / "tests/data/calculator_vectors.json").read_text(encoding="utf-8"))
 FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"]
@@ -197,12 +199,28 @@ def test_bad_input_names_the_field_and_dashes_the_outputs(calc):
 
 
 def test_winding_precision_degenerate_and_chart(calc):
-    """Four checks on one visit; each starts by entering a whole triangle (winding ABC,
+    """Five checks on one visit; each starts by entering a whole triangle (winding ABC,
     precision 4), so none depends on the one before, and a failure's traceback names its helper."""
     _winding_flip_turns_the_normal_over(calc)
     _precision_change(calc)
     _degenerate_triangle_says_undefined(calc)
     _chart_draws_signed_bars_with_labels(calc)
+    _print_buttons_download_pythons_model(calc)
+
+
+def _print_buttons_download_pythons_model(calc) -> None:
+    """The view's 3D printing buttons save the STL Python writes, byte for byte, or say why not."""
+    calc.wait_for_selector("#tn-view[data-ready='true']")
+    enter(calc, ("1", "2", "3"), ("-2", "0.5", "4"), ("1/3", "-1", "-2"), winding="ACB")
+    group = calc.locator("#tn-view").get_by_role("group", name="3D printing")
+    with calc.expect_download() as saved:
+        group.get_by_role("button", name="Download for 3D printing with braille marks").click()
+    assert saved.value.suggested_filename == "triangle-braille.stl"
+    want = print_model((1, 2, 3), (-2, "0.5", 4), ("1/3", -1, -2), winding="ACB", marks="braille")
+    assert Path(saved.value.path()).read_bytes() == want.stl()
+    enter(calc, ("0", "0", "0"), ("1", "1", "1"), ("2", "2", "2"))
+    group.get_by_role("button", name="Download for 3D printing", exact=True).click()
+    assert group.get_by_role("status").inner_text() == PRINT_MESSAGES["degenerate"]
 
 
 def _winding_flip_turns_the_normal_over(calc) -> None:

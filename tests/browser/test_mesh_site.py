@@ -25,6 +25,7 @@ from mesh_corpus import damaged
 from page_checks import resize
 
 from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example_file, file_size
+from trinormal.printmodel import SAMPLE, sample_file
 
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # the mkdocs hook, imported as the build imports it
@@ -516,10 +517,18 @@ def test_a_finger_scrolls_the_page_over_the_view_until_a_tap(browser, server):
 def test_examples_are_one_click_away(page, server, traffic):
     open_page(page, server)
     buttons = page.locator("button[data-example]")
-    assert buttons.count() == len(EXAMPLES)
+    assert buttons.count() == len(EXAMPLES) + 1  # and the printable triangle, last
     buttons.nth(0).click()
     want, _ = python_report(EXAMPLES[0][0], example_file(EXAMPLES[0][0]))
     assert reported(page) == want
+    # the model `trinormal print-model` writes, read back, checked and drawn: nothing to fix
+    page.locator("#tn-mesh").evaluate("root => { root.dataset.state = ''; }")
+    buttons.nth(len(EXAMPLES)).click()
+    want, _ = python_report(SAMPLE[0], sample_file())
+    assert reported(page) == want
+    assert want["closed"] and want["outward"] and want["n_components"] == 1
+    assert want["faces_to_flip"] == []
+    page.wait_for_selector("#tn-mesh-view[data-ready='true'] canvas")
     assert not traffic.problems()
 
 

@@ -217,6 +217,9 @@ class ExplorerView(anywidget.AnyWidget):
             self.set_at = {**self.set_at, **dict.fromkeys(fields, self.version)}
 
     def _on_msg(self, _widget: Any, content: Any, _buffers: Any) -> None:
+        if isinstance(content, dict) and isinstance(content.get("print"), dict):
+            self._print(content["print"])
+            return
         if not isinstance(content, dict) or not isinstance(content.get("edit"), dict):
             return
         ident = {"view": str(content.get("view", "")), "seq": content.get("seq", 0)}
@@ -234,6 +237,24 @@ class ExplorerView(anywidget.AnyWidget):
             except Exception as problem:  # a message handler must never raise
                 error = str(problem)
             self.last_edit = {**answer, "ok": error is None, "error": error or ""}
+
+    def _print(self, request: dict[str, Any]) -> None:
+        """Answer "Download for 3D printing": the STL bytes of the drawn triangle, or why not.
+
+        The answer is ``{"printed": {"seq", "name", "error", "done"}}`` with the file as one buffer
+        (``js/explorer/src/printing.js`` reads it).
+        """
+        from trinormal.printmodel import DOWNLOAD_NAME, MARKS, PRINT_MESSAGES, print_model
+
+        marks = str(request.get("marks")) if request.get("marks") in MARKS else MARKS[0]
+        answer = {"seq": request.get("seq", 0), "name": DOWNLOAD_NAME.format(marks=marks)}
+        try:
+            model = print_model(self.a, self.b, self.c, winding=self.winding, marks=marks)
+        except ValueError as problem:  # degenerate, too thin, or a coordinate refused
+            self.send({"printed": {**answer, "error": str(problem)}})
+            return
+        done = PRINT_MESSAGES["downloaded"].format(name=answer["name"])
+        self.send({"printed": {**answer, "error": "", "done": done}}, buffers=[model.stl()])
 
     def _set_traits(self, edit: dict[str, Any]) -> str | None:
         unknown = sorted(set(edit) - set(EDIT_FIELDS))

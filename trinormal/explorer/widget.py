@@ -26,6 +26,7 @@ import html
 import math
 from collections.abc import Callable, Iterable
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 from trinormal.core import TriangleNormal, Winding, triangle_normal
@@ -34,6 +35,7 @@ from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
 from trinormal.explorer.state import coordinate_text, exact_value, view_state
 from trinormal.explorer.view import COORDINATES, ExplorerView
+from trinormal.printmodel import DEFAULT_SIZE, PrintModel, print_model
 from trinormal.validation import (
     MAX_PRECISION,
     MIN_PRECISION,
@@ -526,6 +528,51 @@ class Explorer:
     def render(self) -> None:
         """Bring the snapshot's pixels up to date (see `Snapshot.render`)."""
         self.snapshot.render()
+
+    # ------------------------------------------------------------------ 3D printing
+
+    def print_model(self, size: float = DEFAULT_SIZE, marks: str = "letters") -> PrintModel:
+        """Make the printable model of the current triangle (`trinormal.printmodel.print_model`).
+
+        Examples
+        --------
+        >>> len(Explorer().print_model().faces)
+        270
+        """
+        a, b, c = ([self._texts[p + q] for q in "xyz"] for p in "abc")
+        return print_model(a, b, c, winding=self.winding, size=size, marks=marks)
+
+    def to_stl(self, path: str | Path, size: float = DEFAULT_SIZE, marks: str = "letters") -> Path:
+        """Write the printable model of the current triangle as a binary STL file.
+
+        The plate with the normal as an arrow on its front, U and V as ridges,
+        A, B and C in letters (or ``marks="braille"``), the longest side ``size``
+        mm. A degenerate triangle is refused with a `ValueError` saying why.
+
+        Examples
+        --------
+        >>> import tempfile, os
+        >>> with tempfile.TemporaryDirectory() as d:
+        ...     os.path.getsize(Explorer().to_stl(os.path.join(d, "triangle.stl")))
+        13584
+        """
+        path = Path(path)
+        path.write_bytes(self.print_model(size, marks).stl())
+        return path
+
+    def to_3mf(self, path: str | Path, size: float = DEFAULT_SIZE, marks: str = "letters") -> Path:
+        """Write the printable model of the current triangle as a 3MF file (see `to_stl`).
+
+        Examples
+        --------
+        >>> import tempfile, os, zipfile
+        >>> with tempfile.TemporaryDirectory() as d:
+        ...     zipfile.is_zipfile(Explorer().to_3mf(os.path.join(d, "triangle.3mf")))
+        True
+        """
+        path = Path(path)
+        path.write_bytes(self.print_model(size, marks).three_mf())
+        return path
 
     @property
     def alt_text(self) -> str:

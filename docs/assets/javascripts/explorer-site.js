@@ -135,7 +135,33 @@ export function createModel(initial, onEdit, maxPrecision) {
     return values;
   }
 
+  /**
+   * "Download for 3D printing" (the view's printing.js): the STL of the drawn triangle, made by
+   * trinormal-printmodel.js (the port of trinormal.printmodel), or the package's sentence why not.
+   */
+  function answerPrint(request) {
+    const P = window.TrinormalPrintModel;
+    const K = C.print;
+    const marks = K.marks.includes(request.marks) ? request.marks : K.marks[0];
+    const answer = { seq: request.seq, name: K.download_name.replace("{marks}", marks), error: "" };
+    const st = data.state;
+    let bytes = null;
+    if (!st.ok) answer.error = st.error;
+    else if (st.degenerate) answer.error = P.degenerate().message;
+    else {
+      try {
+        bytes = P.stl(P.build(st.u, st.v, "A" + data.winding.slice(1), K.default_size, marks));
+      } catch (err) {
+        if (!(err instanceof P.PrintModelError)) throw err;
+        answer.error = err.message;
+      }
+    }
+    if (bytes) answer.done = K.messages.downloaded.replace("{name}", answer.name);
+    events.custom({ printed: answer }, bytes ? [new DataView(bytes.buffer)] : []);
+  }
+
   function send(content) {
+    if (content && content.print && typeof content.print === "object") return answerPrint(content.print);
     if (!content || typeof content.edit !== "object") return;
     const ident = { view: String(content.view || ""), seq: content.seq || 0 };
     const base = Number.isInteger(content.base) ? content.base : -1;
@@ -178,6 +204,10 @@ export function modelEvents() {
   return {
     emit(key, value) {
       for (const cb of [...(listeners.get("change:" + key) || [])]) cb({ name: key, new: value });
+    },
+    /** A custom message from the host, as anywidget delivers one: (content, buffers). */
+    custom(content, buffers) {
+      for (const cb of [...(listeners.get("msg:custom") || [])]) cb(content, buffers);
     },
     on(event, cb) {
       if (!listeners.has(event)) listeners.set(event, new Set());

@@ -19,6 +19,7 @@ import { createEdits } from "./edits.js";
 import { Drawing } from "./geometry.js";
 import { setupInteraction } from "./interaction.js";
 import { createLayout, showWithoutWebGL } from "./layout.js";
+import { createPrinting } from "./printing.js";
 import { readStep } from "./numbers.js";
 import { updateLegend, updatePanels } from "./panels.js";
 import { applyFrame, createLabels, dataPoints, drawTriangle, frameOf, projection, reframe } from "./picture.js";
@@ -26,7 +27,7 @@ import { createStage } from "./scene.js";
 import { injectStyle } from "./style.js";
 import CSS from "./style.css";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
-import { createToolbar } from "./toolbar.js";
+import { createPrintButtons, createToolbar } from "./toolbar.js";
 import { setStyle } from "./dom.js";
 import { touchGate } from "./touch.js";
 
@@ -202,6 +203,7 @@ function render({ model, el }) {
   const { stage } = view;
   Object.assign(view, createLabels(parts.stageEl, view));
   view.drawing = new Drawing(stage.scene);
+  const printing = createPrinting(model);
   view.toolbar = createToolbar(parts.toolbarEl, {
     get,
     edit,
@@ -216,6 +218,7 @@ function render({ model, el }) {
       view.stage.setInset(on ? parts.side.offsetWidth + 24 : 0);
     },
   });
+  createPrintButtons(parts.side, printing.request);
 
   // touch: a finger scrolls the page over the view until a tap turns it on (touch.js)
   const touch = touchGate({ root: parts.root, stageEl: parts.stageEl, controls: stage.controls, canvas: stage.canvas, activeClass: "tnx-touch-active" });
@@ -253,6 +256,7 @@ function render({ model, el }) {
   return () => {
     stopModel();
     view.toolbar.dispose();
+    printing.stop();
     touch.dispose();
     stopTheme();
     interaction();

@@ -1,7 +1,9 @@
 /*
  * The explorer's toolbar: reset the view, look along x, y or z, flip the order of the
  * vertices, show the parallelogram, show the unit normal. The last three are edits (see
- * edits.js); the others move the camera only.
+ * edits.js); the others move the camera only. At the end, in a block of their own, the two
+ * "Download for 3D printing" buttons (marks in letters or in braille; printing.js), which
+ * sit beside the view rather than in the toolbar.
  */
 import { element, setAttr, setText } from "./dom.js";
 import { addPresentButtons } from "./present.js";
@@ -63,4 +65,25 @@ export function createToolbar(bar, { get, edit, stage, reset, onFullscreen }) {
   }
 
   return { update, dispose: removePresent };
+}
+
+// ------------------------------------------------------------------ 3D printing (printing.js)
+
+/**
+ * The "Download for 3D printing" buttons (corners marked in letters, or in braille) and their
+ * status line, as a group of their own at the end of `host` (the column beside the view: the
+ * toolbar above the view is full). print(marks, status): ask the host for the file.
+ */
+export function createPrintButtons(host, print) {
+  const group = element("div", "tnx-print");
+  group.setAttribute("role", "group");
+  group.setAttribute("aria-label", "3D printing");
+  const status = element("p", "tnx-print-status");
+  status.setAttribute("role", "status");
+  const letters = button("Download for 3D printing", null, () => print("letters", status));
+  letters.title = "An STL file of the triangle as a plate, N as an arrow, U and V as ridges, A, B, C in letters";
+  const braille = button("With braille marks", "Download for 3D printing with braille marks", () => print("braille", status));
+  braille.title = "The same model with A, B and C marked in braille";
+  group.append(letters, braille, status);
+  host.append(group);
 }
