@@ -338,11 +338,10 @@ def _run_mesh(args_in: list[str]) -> int:
         fixed = None
         if args.fix is not None:
             out_fmt = mesh.io._format_of(args.fix, None)
-            encoding = data.encoding if out_fmt == data.format else None
             # the faces fix_winding turns over are the report's: turn them over once found
             flipped = report.faces_to_flip
             faces = mesh.repair._turn_over(data.faces, flipped)
-            mesh.write_mesh(args.fix, data.vertices, faces, out_fmt, encoding)
+            mesh.write_mesh(args.fix, data, faces, out_fmt)  # in its own format: the file, kept
             fixed = (out_fmt, flipped)
     except ValueError as exc:  # MeshFileError and bad arrays: one line, status 2
         _error(str(exc))

@@ -21,7 +21,7 @@ from typing import Any
 from trinormal.mesh.io import READ_ERRORS, READ_NOTES
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
-from trinormal.tolerances import DEFAULT_TOL
+from trinormal.tolerances import DEFAULT_TOL, PLANAR_TOL
 
 __all__ = [
     "EXAMPLES",
@@ -219,14 +219,15 @@ def site_constants() -> dict[str, Any]:
     Returns
     -------
     dict
-        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol`` and
+        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol``, ``planar_tol``
+        (`trinormal.tolerances.PLANAR_TOL`, for splitting polygons) and
         ``selection`` (the readout of a face picked in the 3D view:
         `trinormal.mesh.selection.selection_constants`).
 
     Examples
     --------
     >>> sorted(site_constants())
-    ['limits', 'messages', 'nouns', 'rows', 'selection', 'summary', 'tol']
+    ['limits', 'messages', 'nouns', 'planar_tol', 'rows', 'selection', 'summary', 'tol']
     """
     return {
         "messages": dict(MESSAGES),
@@ -235,5 +236,6 @@ def site_constants() -> dict[str, Any]:
         "summary": {k: list(t) if isinstance(t, tuple) else t for k, t in SUMMARY.items()},
         "nouns": {k: list(t) for k, t in NOUNS.items()},
         "tol": DEFAULT_TOL,
+        "planar_tol": PLANAR_TOL,
         "selection": selection_constants(),
     }

@@ -10,7 +10,7 @@ import numpy as np
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_ERRORS, MeshFileError, _number, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _fan, _fan_uniform
+from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
 
 #: The PLY property types, by both their names, as numpy type codes.
 _PLY_TYPES = {
@@ -53,8 +53,20 @@ def _read_ply(data: bytes, name: str) -> MeshData:
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
         raise MeshFileError.of(name, "ply_not_finite", vertex=bad)
     polys: list[list[int]] | IntArray = values.get("face", {}).get("_polys", [])
-    faces, source, n_polys = _ply_faces(polys, vertices.shape[0], name)
-    return MeshData(vertices, faces, "ply", encoding, source, n_polys, name)
+    _ply_faces(polys, vertices.shape[0], name)
+    split, sizes = _split(vertices, polys)
+    fields = _polygon_fields(split, sizes)
+    return MeshData(
+        vertices,
+        split.faces,
+        "ply",
+        encoding,
+        split.source,
+        len(sizes),
+        name,
+        source=data,
+        **fields,
+    )
 
 
 def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
@@ -113,13 +125,8 @@ def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
     return fmt, elements, body_start, len(header) + 2
 
 
-def _ply_faces(
-    polys: list[list[int]] | IntArray, nv: int, name: str
-) -> tuple[IntArray, IntArray, int]:
-    """Check the face lists against the ``nv`` vertices and split them into fans.
-
-    Returns the triangles, the face each comes from, and the number of faces.
-    """
+def _ply_faces(polys: list[list[int]] | IntArray, nv: int, name: str) -> None:
+    """Check the face lists against the ``nv`` vertices: three corners or more, each in range."""
     if isinstance(polys, np.ndarray):  # every face has the same number of corners
         if polys.shape[1] < 3:
             raise MeshFileError.of(name, "ply_corners", face=0, count=polys.shape[1])
@@ -127,16 +134,13 @@ def _ply_faces(
         if out_of_range.any():
             row = int(np.flatnonzero(out_of_range.any(axis=1))[0])
             _ply_range_error(name, row, int(polys[row][out_of_range[row]][0]), nv)
-        faces, source = _fan_uniform(polys)
-        return faces, source, polys.shape[0]
+        return
     for row, poly in enumerate(polys):
         if len(poly) < 3:
             raise MeshFileError.of(name, "ply_corners", face=row, count=len(poly))
         outside = [i for i in poly if not 0 <= i < nv]
         if outside:
             _ply_range_error(name, row, outside[0], nv)
-    faces, source = _fan(polys)
-    return faces, source, len(polys)
 
 
 def _ply_range_error(name: str, k: int, index: int, nv: int) -> None:
@@ -190,13 +194,13 @@ def _ply_ascii(
                 toks = row.split()
                 lineno = first_line + pos + r
                 t = 0
-                for pname, _ptype, ctype in el.props:
+                for pname, ptype, ctype in el.props:
                     try:
                         if ctype is None:
                             t += 1
                             continue
                         n = int(toks[t])
-                        items = [int(x) for x in toks[t + 1 : t + 1 + n]]
+                        items = _ascii_list(toks[t + 1 : t + 1 + n], ptype, pname == want)
                         if len(items) != n or n < 0:
                             raise IndexError
                     except (ValueError, IndexError):
@@ -211,6 +215,18 @@ def _ply_ascii(
             out[el.name] = {"_polys": polys}
         pos += el.count
     return out
+
+
+def _ascii_list(toks: list[str], ptype: str, indices: bool) -> list[Any]:
+    """Read a list property's items: numbers of its type; vertex indices must be whole."""
+    if ptype not in ("f4", "f8"):
+        return [int(x) for x in toks]
+    values = [float(x) for x in toks]
+    if not indices:
+        return values
+    if not all(x.is_integer() for x in values):
+        raise ValueError("a vertex index that is not a whole number")
+    return [int(x) for x in values]
 
 
 def _ply_bad_row(rows: list[str], k: int, first: int, name: str) -> None:

@@ -43,7 +43,7 @@ def _read_stl(data: bytes, name: str) -> MeshData:
                 raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
             # float32, as stored: merged before widening
             merged = _merge_corners(rec["corners"].reshape(-1, 3), name, "binary")
-            return replace(merged, notes=notes)
+            return replace(merged, notes=notes, source=data)
     if not _looks_like_text(data):
         raise MeshFileError.of(name, "stl_short")
     return _read_stl_ascii(data, name)
@@ -114,7 +114,7 @@ def _read_stl_ascii(data: bytes, name: str) -> MeshData:
     if in_loop:
         raise MeshFileError.of(name, "stl_ends_in_facet", lineno)
     arr = np.array(corners, dtype=np.float64).reshape(-1, 3)
-    return _merge_corners(arr, name, "ascii")
+    return replace(_merge_corners(arr, name, "ascii"), source=data)
 
 
 #: Odd 64-bit multipliers that mix a corner's three bit patterns into one sort key.
@@ -164,7 +164,9 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
     vertices[rank] = corners[first]
     faces = index.reshape(-1, 3)
     nf = faces.shape[0]
-    return MeshData(vertices, faces, "stl", encoding, np.arange(nf, dtype=np.intp), nf, name)
+    source = np.arange(nf, dtype=np.intp)
+    sizes = np.full(nf, 3, dtype=np.intp)
+    return MeshData(vertices, faces, "stl", encoding, source, nf, name, corners=sizes)
 
 
 def _same_as_previous(rows: npt.NDArray[np.unsignedinteger[Any]]) -> npt.NDArray[np.bool_]:
