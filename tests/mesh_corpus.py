@@ -401,6 +401,7 @@ def _ply_text(body: str, header: str | None = None) -> bytes:
 
 _GOOD_PLY_BODY = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
 _PLY_HEAD = "ply\nformat ascii 1.0\n"
+_FACE_HEAD = "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
 _XYZ = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
 
 
@@ -502,6 +503,28 @@ def unreadable() -> Iterator[tuple[str, bytes]]:
         "huge-count-binary.ply",
         ("ply\nformat binary_big_endian 1.0\n" + huge + "end_header\n").encode(),
     )
+    yield (
+        "unicode-count.ply",
+        _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "\u00b3") + _FACE_HEAD),
+    )
+    yield (
+        "arabic-count.ply",
+        _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "\u0663") + _FACE_HEAD),
+    )
+    tri = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
+    for fmt in ("binary_little_endian", "binary_big_endian"):
+        yield (
+            f"negative-count-{fmt}.ply",
+            ply(tri, [[0, 1, 2]], fmt, count="int")[:-16]
+            + struct.pack("<i" if "little" in fmt else ">i", -3)
+            + bytes(12),
+        )
+        yield f"float-indices-{fmt}.ply", ply(tri, [[0, 1, 2], [0, 2, 1]], fmt, index="float")
+        yield f"float-half-{fmt}.ply", ply(tri, [[0, 1, 2], [0, 1.5, 2]], fmt, index="float")
+        yield f"float-beyond-{fmt}.ply", ply(tri, [[0, 1, 2], [0, 9, 2, 1]], fmt, index="double")
+    yield "float-indices-ascii.ply", ply(tri, [[0, 1, 2]], index="float")
+    yield "float-half-ascii.ply", _ply_text("0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", _PLY_HEAD + _XYZ
+        + "element face 1\nproperty list uchar float vertex_indices\nend_header\n")  # fmt: skip
     yield "zero-count.ply", _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "003") + "element face 01\n"
         "property list uchar int vertex_indices\nend_header\n")  # fmt: skip
 

@@ -509,7 +509,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
       if (polys[q].length < 3) fileError(name, null, "ply_corners", { face: q, count: polys[q].length });
       for (var c = 0; c < polys[q].length; c++) {
         var idx = polys[q][c];
-        if (!(idx >= 0 && idx < nv)) {
+        if (!(idx >= 0 && idx < nv && Number.isInteger(idx))) { // a float list's 1.5 is no vertex
           var valid = nv ? message("ply_valid", { last: nv - 1 }) : message("ply_no_vertices", {});
           fileError(name, null, "ply_index_range", { face: q, index: idx, valid: valid });
         }
@@ -657,7 +657,8 @@ self.TrinormalMesh.part("read", "base", function (base) {
           if (pos + p2.count[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
           var n = view["get" + p2.count[0]](pos, little);
           pos += p2.count[1];
-          if (n < 0 || pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
+          if (n < 0) fileError(name, null, "ply_negative", { element: el.name, row: r2, count: n });
+          if (pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
           if (p2.name === want) {
             var items = new Array(n);
             var getter2 = "get" + p2.type[0];

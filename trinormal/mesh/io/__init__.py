@@ -4,10 +4,10 @@ The readers keep a file exactly as stored, because the report must talk about
 the file the student has:
 
 * OBJ and PLY: every vertex in file order, none merged or dropped; every face
-  in file order. A polygon with n corners becomes n − 2 triangles, a fan from
-  its first corner, wound as stored: ``(a, b, c, d)`` gives ``(a, b, c)`` and
-  ``(a, c, d)``. `MeshData.source_faces` says which polygon each triangle
-  came from.
+  in file order. A polygon with n corners becomes n − 2 triangles, split by
+  ear clipping in its plane (`trinormal.mesh.polygons`), wound as stored: a
+  convex ``(a, b, c, d)`` gives ``(a, b, c)`` and ``(a, c, d)``.
+  `MeshData.source_faces` says which polygon each triangle came from.
 * STL stores each triangle's three corners as coordinates, not as shared
   vertices. Corners with exactly equal coordinates become one vertex (exact
   equality, never a tolerance: ``-0.0`` equals ``0.0``), numbered in order of
@@ -15,7 +15,8 @@ the file the student has:
   the same model saved as OBJ.
 
 A file that cannot be read raises `MeshFileError`, one sentence naming the
-file and, in a text file, the line.
+file and, in a text file, the line. `write_mesh` of a read model writes its
+file back with only the faces a fix turns over changed (`rewrite`).
 
 One module per format, as three.js has one loader per format: `obj`, `stl`
 and `ply` each read and write their format; `mesh_data` holds what they

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_ERRORS, MeshFileError, _number, _show, _text
@@ -52,8 +53,8 @@ def _read_ply(data: bytes, name: str) -> MeshData:
     if not np.isfinite(vertices).all():
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
         raise MeshFileError.of(name, "ply_not_finite", vertex=bad)
-    polys: list[list[int]] | IntArray = values.get("face", {}).get("_polys", [])
-    _ply_faces(polys, vertices.shape[0], name)
+    polys: list[list[Any]] | npt.NDArray[Any] = values.get("face", {}).get("_polys", [])
+    polys = _ply_faces(polys, vertices.shape[0], name)
     split, sizes = _split(vertices, polys)
     fields = _polygon_fields(split, sizes)
     return MeshData(
@@ -96,7 +97,7 @@ def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
                 raise MeshFileError.of(name, "ply_format", lineno)
             fmt = toks[1]
         elif toks[0] == "element":
-            if len(toks) != 3 or not toks[2].isdigit():
+            if len(toks) != 3 or not (toks[2].isascii() and toks[2].isdigit()):  # not '²' '٣'
                 raise MeshFileError.of(name, "ply_element", lineno)
             elements.append(_Element(toks[1], int(toks[2]), [], lineno))
         elif toks[0] == "property":
@@ -125,25 +126,39 @@ def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
     return fmt, elements, body_start, len(header) + 2
 
 
-def _ply_faces(polys: list[list[int]] | IntArray, nv: int, name: str) -> None:
-    """Check the face lists against the ``nv`` vertices: three corners or more, each in range."""
+def _ply_faces(
+    polys: list[list[Any]] | npt.NDArray[Any], nv: int, name: str
+) -> list[list[int]] | IntArray:
+    """Check the face lists against the ``nv`` vertices: three corners or more, each in range.
+
+    Returns them as integers: a list of a float type must hold whole numbers (a vertex 1.5
+    is out of range).
+    """
     if isinstance(polys, np.ndarray):  # every face has the same number of corners
         if polys.shape[1] < 3:
             raise MeshFileError.of(name, "ply_corners", face=0, count=polys.shape[1])
-        out_of_range = (polys < 0) | (polys >= nv)
+        out_of_range = (polys < 0) | (polys >= nv) | (polys != np.floor(polys))
         if out_of_range.any():
             row = int(np.flatnonzero(out_of_range.any(axis=1))[0])
-            _ply_range_error(name, row, int(polys[row][out_of_range[row]][0]), nv)
-        return
+            _ply_range_error(name, row, polys[row][out_of_range[row]][0].item(), nv)
+        table: IntArray = polys.astype(np.intp)
+        return table
     for row, poly in enumerate(polys):
         if len(poly) < 3:
             raise MeshFileError.of(name, "ply_corners", face=row, count=len(poly))
-        outside = [i for i in poly if not 0 <= i < nv]
+        outside = [i for i in poly if not (0 <= i < nv and float(i).is_integer())]
         if outside:
             _ply_range_error(name, row, outside[0], nv)
+    return (
+        [[int(i) for i in p] for p in polys]
+        if any(isinstance(i, float) for p in polys[:1] for i in p)
+        else polys
+    )
 
 
-def _ply_range_error(name: str, k: int, index: int, nv: int) -> None:
+def _ply_range_error(name: str, k: int, index: float, nv: int) -> None:
+    if isinstance(index, float) and index.is_integer():
+        index = int(index)  # a whole number from a float list, written as the page writes it
     valid = READ_ERRORS["ply_valid"].format(last=nv - 1) if nv else READ_ERRORS["ply_no_vertices"]
     raise MeshFileError.of(name, "ply_index_range", face=k, index=index, valid=valid)
 
@@ -282,6 +297,8 @@ def _ply_binary_lists(
                 p += np.dtype(ptype).itemsize
             else:
                 (n,) = struct.unpack_from(order + _STRUCT[ctype], data, p)
+                if n < 0:
+                    raise struct.error  # a negative count: the rows one by one find the error
                 fields.append((pname + "#n", order + ctype))
                 fields.append((pname, order + ptype, (n,)))
                 p += np.dtype(ctype).itemsize + n * np.dtype(ptype).itemsize
@@ -292,7 +309,7 @@ def _ply_binary_lists(
                 (arr[p[0] + "#n"] == dt[p[0]].shape[0]).all() for p in el.props if p[2] is not None
             )
             if uniform:
-                table = arr[want].astype(np.intp) if want else np.empty((0, 3), np.intp)
+                table = arr[want] if want else np.empty((0, 3), np.intp)
                 return table, pos + dt.itemsize * el.count
     except struct.error:
         pass
@@ -306,6 +323,10 @@ def _ply_binary_lists(
                         raise struct.error
                     continue
                 (n,) = struct.unpack_from(order + _STRUCT[ctype], data, pos)
+                if n < 0:
+                    raise MeshFileError.of(
+                        name, "ply_negative", element=el.name, row=r, count=n
+                    ) from None
                 pos += np.dtype(ctype).itemsize
                 items = struct.unpack_from(f"{order}{n}{_STRUCT[ptype]}", data, pos)
                 pos += n * np.dtype(ptype).itemsize
