@@ -71,6 +71,7 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
     r = check(m.vertices, m.faces)
     fixed, _ = fix_winding(m.vertices, m.faces)
     write_mesh(scratch, m, fixed)
+    before, after = m.normals_against(), m.normals_against(fixed)
     return {
         "report": _finite_or_text(r.to_dict()),
         "summary": r.summary(width=0).split("\n"),
@@ -81,6 +82,8 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
         "nonplanar_polygons": int(m.nonplanar.size),
         "crossing_polygons": int(m.crossing.size),
         "notes": list(m.notes),
+        "normals_against": None if before is None else int(before.size),
+        "normals_against_fixed": None if after is None else int(after.size),
     }
 
 
@@ -692,6 +695,9 @@ def kept() -> Iterator[tuple[str, bytes]]:
     yield "cad-attributes.stl", bytes(data)
     yield "cad-attributes-trailing.stl", bytes(data) + b"\x00\x01\x02"
     yield "cad-attributes-fine.stl", stl_binary(v, np.asarray(f).tolist(), header)
+    signed = tetra()[0] - 0.0 * np.array([1.0, 0.0, 0.0])  # -0.0 corners: the whole file is kept
+    signed[0, 0] = -0.0
+    yield "negative-zero.stl", stl_binary(signed, turned(tetra()[1], [1]), header)
     text = (
         stl_ascii(v, polys)
         .replace(b"solid model", b"solid part_1 (mm)")

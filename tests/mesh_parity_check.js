@@ -108,6 +108,8 @@ function run(M, name, bytes) {
     notes: mesh.notes,
   };
   var faces = M.fixWinding(mesh.faces, report);
+  shown.normals_against = M.normalsAgainst(mesh, mesh.faces, false);
+  shown.normals_against_fixed = M.normalsAgainst(mesh, faces, true);
   return { shown: shown, repaired: M.write(mesh, faces) };
 }
 

@@ -88,6 +88,7 @@ def test_the_command_line_fix_keeps_the_file(tmp_path):
         text=True,
     )
     assert out.read_bytes() == textured_obj(), run.stderr
+    assert "The stored normals of 1 face point against its winding." in run.stdout
 
 
 def _area(points: np.ndarray) -> float:
@@ -123,3 +124,29 @@ def test_the_concave_cap_is_not_reported_degenerate_or_flipped():
     r = check(m.vertices, m.faces)
     assert r.closed and r.consistent_winding and r.outward and r.ok
     assert len(r.degenerate_faces) == 0 and len(r.faces_to_flip) == 0
+
+
+def test_stored_normals_against_the_winding_are_counted_before_and_after_the_fix(tmp_path):
+    """OBJ vn kept as they were: they agreed with the winding the fix restores."""
+    m = parse_mesh(textured_obj((1, 4)), "obj", "box.obj")
+    fixed, _ = fix_winding(m.vertices, m.faces)
+    assert m.normals_against().tolist() == [1, 4]
+    assert m.normals_against(fixed).tolist() == []
+    assert m.describe().endswith("The stored normals of 2 faces point against their winding.")
+    stl = dict(kept())["named-solid-normals.stl"]  # every facet says +z
+    s = parse_mesh(stl, "stl")
+    fixed, flipped = fix_winding(s.vertices, s.faces)
+    before, after = s.normals_against(), s.normals_against(fixed)
+    assert set(after.tolist()) == set(before.tolist()) - set(flipped.tolist())  # recomputed
+    assert parse_mesh(textured_obj(), "obj").normals_against().tolist() == []
+    assert parse_mesh(rich_ply("ascii"), "ply").normals_against().tolist() == [0]  # the floor
+    assert parse_mesh(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "obj").normals_against() is None
+
+
+def test_a_binary_stl_with_negative_zero_corners_is_kept_whole(tmp_path):
+    data = dict(kept())["negative-zero.stl"]
+    m = parse_mesh(data, "stl")
+    assert m.stl_records is None and m.source == data
+    out = _fixed(tmp_path, "z.stl", data)
+    assert out[84 + 12 : 84 + 16] == data[84 + 12 : 84 + 16] == b"\x00\x00\x00\x80"  # -0.0
+    assert _fixed(tmp_path, "z2.stl", out) == out  # nothing left to turn over: as it was

@@ -516,7 +516,16 @@ self.TrinormalMesh.part("read", "base", function (base) {
       }
     }
     for (q = 0; q < polys.length; q++) out.add(polys[q]);
-    return Object.assign(out.result(), { vertices: vertices, binary: fmt !== "ascii" });
+    var normals = null;
+    if (v.nx && v.ny && v.nz) {
+      normals = new Float64Array(3 * nv);
+      for (r = 0; r < nv; r++) {
+        normals[3 * r] = v.nx[r];
+        normals[3 * r + 1] = v.ny[r];
+        normals[3 * r + 2] = v.nz[r];
+      }
+    }
+    return Object.assign(out.result(), { vertices: vertices, binary: fmt !== "ascii", vertex_normals: normals });
   }
 
   function faceListName(el) {

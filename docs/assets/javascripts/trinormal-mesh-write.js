@@ -289,6 +289,106 @@ self.TrinormalMesh.part("write", "check", function (base) {
     return out;
   }
 
+  // ------------------------------------------------------------------ stored normals (io/stored.py)
+
+  /** Each face's stored normal (3 numbers a face), or null when the file stores none. */
+  function storedNormals(mesh) {
+    var np = mesh.polygons, out = new Float64Array(3 * np), i, k;
+    var I = base.internal;
+    if (mesh.format === "stl" && mesh.binary) {
+      var view = new DataView(mesh.bytes.buffer, mesh.bytes.byteOffset, mesh.bytes.byteLength);
+      for (i = 0; i < np; i++) for (k = 0; k < 3; k++) out[3 * i + k] = view.getFloat32(84 + 50 * i + 4 * k, true);
+      return out;
+    }
+    var lines = decode(mesh.bytes).lines;
+    if (mesh.format === "stl") {
+      var facet = 0, current = [0, 0, 0];
+      lines.forEach(function (l) {
+        var toks = I.tokens(l[0]), kw = toks.length ? toks[0].toLowerCase() : "";
+        if (kw === "facet") {
+          current = [0, 0, 0];
+          if (toks.length >= 5 && toks[1].toLowerCase() === "normal") {
+            var xyz = [I.pyFloat(toks[2]), I.pyFloat(toks[3]), I.pyFloat(toks[4])];
+            if (xyz.indexOf(undefined) < 0) current = xyz;
+          }
+        } else if (kw === "endloop") {
+          out.set(current, 3 * facet++);
+          current = [0, 0, 0];
+        }
+      });
+      return out;
+    }
+    if (mesh.format === "ply") {
+      var vn = mesh.vertex_normals;
+      if (!vn) return null;
+      for (i = 0; i < mesh.source.length; i++) {
+        for (k = 0; k < 3; k++) {
+          var c0 = mesh.faces[3 * i], c1 = mesh.faces[3 * i + 1], c2 = mesh.faces[3 * i + 2];
+          out[3 * mesh.source[i] + k] += vn[3 * c0 + k] + vn[3 * c1 + k] + vn[3 * c2 + k];
+        }
+      }
+      return out;
+    }
+    var normals = [], face = -1, pending = "";
+    lines.forEach(function (l) {
+      var raw = l[0];
+      if (raw.charAt(raw.length - 1) === "\\") {
+        pending += raw.slice(0, -1) + " ";
+        return;
+      }
+      var line = pending + raw;
+      pending = "";
+      var hash = line.indexOf("#");
+      var toks = I.tokens(hash < 0 ? line : line.slice(0, hash));
+      if (!toks.length) return;
+      if (toks[0] === "vn" && toks.length >= 4) {
+        var n3 = [I.pyFloat(toks[1]), I.pyFloat(toks[2]), I.pyFloat(toks[3])];
+        normals.push(n3.indexOf(undefined) < 0 ? n3 : [0, 0, 0]);
+      } else if (toks[0] === "f" || toks[0] === "fo") {
+        face++;
+        var total = [0, 0, 0];
+        for (var t = 1; t < toks.length; t++) {
+          var refs = toks[t].split("/");
+          var j = refs.length >= 3 ? I.pyInt(refs[2]) : undefined;
+          var at = typeof j !== "number" || j === 0 ? -1 : j > 0 ? j - 1 : normals.length + j;
+          if (at < 0 || at >= normals.length) {
+            total = [0, 0, 0];
+            break;
+          }
+          for (k = 0; k < 3; k++) total[k] += normals[at][k];
+        }
+        out.set(total, 3 * face);
+      }
+    });
+    return normals.length ? out : null;
+  }
+
+  /**
+   * How many faces' stored normals point against the winding of `faces` (io/stored.py's
+   * against); `turned` (flags) are faces a fix turned over, whose STL normals are recomputed.
+   * null when the file stores no normals.
+   */
+  function normalsAgainst(mesh, faces, turned) {
+    var normals = storedNormals(mesh);
+    if (!normals) return null;
+    var V = mesh.vertices, area = new Float64Array(3 * mesh.polygons);
+    for (var t = 0; t < mesh.source.length; t++) {
+      var a = 3 * faces[3 * t], b = 3 * faces[3 * t + 1], c = 3 * faces[3 * t + 2];
+      var ux = V[b] - V[a], uy = V[b + 1] - V[a + 1], uz = V[b + 2] - V[a + 2];
+      var vx = V[c] - V[a], vy = V[c + 1] - V[a + 1], vz = V[c + 2] - V[a + 2];
+      var p = 3 * mesh.source[t];
+      area[p] += uy * vz - uz * vy;
+      area[p + 1] += uz * vx - ux * vz;
+      area[p + 2] += ux * vy - uy * vx;
+    }
+    var count = 0;
+    for (var f = 0; f < mesh.polygons; f++) {
+      var dot = area[3 * f] * normals[3 * f] + area[3 * f + 1] * normals[3 * f + 1] + area[3 * f + 2] * normals[3 * f + 2];
+      if (dot < 0 && !(turned && turned[f] && mesh.format === "stl")) count++;
+    }
+    return count;
+  }
+
   /**
    * The file the mesh was read from with the faces `faces` turns over turned over, byte for
    * byte as trinormal.mesh.write_mesh writes a read model back (trinormal/mesh/io/rewrite.py):
@@ -311,5 +411,12 @@ self.TrinormalMesh.part("write", "check", function (base) {
     return encode(doc, new Uint8Array(0));
   }
 
-  return { fixWinding: fixWinding, write: write, repr: repr };
+  return {
+    fixWinding: fixWinding,
+    write: write,
+    repr: repr,
+    normalsAgainst: function (mesh, faces, fixed) {
+      return normalsAgainst(mesh, faces, fixed ? turnedPolygons(mesh, faces).flags : null);
+    },
+  };
 });

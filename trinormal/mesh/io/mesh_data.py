@@ -55,8 +55,15 @@ class MeshData:
         plane (`trinormal.tolerances.PLANAR_TOL`): their split is a guess.
     crossing : ndarray of int
         The polygons that cross themselves.
-    corners : ndarray of int, shape (P,)
-        How many corners each face of the file has.
+    vertex_normals : ndarray, shape (V, 3), or None
+        A PLY file's ``nx ny nz`` vertex properties, when it has them.
+    stl_records : ndarray or None
+        A binary STL's stored normal and attribute bytes, a record per triangle, when
+        ``source`` holds only its header and what follows its records (its corners are
+        ``vertices[faces]``, exactly): a binary STL keeps 14 bytes a triangle, not 50.
+    stl_against : ndarray of int or None
+        With ``stl_records``: the facets whose stored normal points against their
+        winding as read (`normals_against`).
     """
 
     vertices: FloatArray = field(repr=False)
@@ -70,7 +77,15 @@ class MeshData:
     source: bytes = field(default=b"", repr=False)
     nonplanar: IntArray = field(default_factory=lambda: _none(), repr=False)
     crossing: IntArray = field(default_factory=lambda: _none(), repr=False)
-    corners: IntArray = field(default_factory=lambda: _none(), repr=False)
+    stl_records: Any = field(default=None, repr=False)
+    stl_against: IntArray | None = field(default=None, repr=False)
+    vertex_normals: FloatArray | None = field(default=None, repr=False)
+
+    @property
+    def corners(self) -> IntArray:
+        """How many corners each face of the file has, shape (P,)."""
+        out: IntArray = np.bincount(self.source_faces, minlength=self.n_polygons) + 2
+        return out
 
     @property
     def split_polygons(self) -> int:
@@ -79,6 +94,30 @@ class MeshData:
             return 0
         counts = np.bincount(self.source_faces, minlength=self.n_polygons)
         return int((counts > 1).sum())
+
+    def normals_against(self, faces: IntArray | None = None) -> IntArray | None:
+        r"""Return the faces whose stored normals point against the winding (None: none stored).
+
+        Parameters
+        ----------
+        faces : ndarray of int, shape (F, 3), optional
+            The triangles as wound: by default as read; after a fix, the fixed ones, and
+            then, as `write_mesh` writes the file, an STL facet turned over has a
+            recomputed normal and agrees (`trinormal.mesh.io.stored`).
+
+        Examples
+        --------
+        >>> from trinormal.mesh import parse_mesh, fix_winding
+        >>> m = parse_mesh(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n", "obj")
+        >>> m.normals_against()
+        array([0])
+        """
+        from trinormal.mesh.io.rewrite import _turned_polygons
+        from trinormal.mesh.io.stored import against
+
+        if faces is None:
+            return against(self, self.faces, None)
+        return against(self, faces, _turned_polygons(self, faces))
 
     def describe(self) -> str:
         r"""Say in one sentence what was read: vertices, faces, and polygons and triangles.
@@ -99,8 +138,9 @@ class MeshData:
         text = f"Read {self.path} ({self.format.upper()}{enc}): {nv} {_plural(nv, 'vertex')}"
         nf = self.faces.shape[0]
         if nf == np_:
-            return text + f", {np_} {_plural(np_, 'face')}."
-        noun = "quad" if self.corners.size and (self.corners == 4).all() else "polygon"
+            return text + f", {np_} {_plural(np_, 'face')}." + self._normals_sentence()
+        corners = self.corners
+        noun = "quad" if corners.size and (corners == 4).all() else "polygon"
         text += f", {np_:,} {_plural(np_, noun)}, {nf:,} {_plural(nf, 'triangle')}"
         odd = []
         if self.nonplanar.size:
@@ -118,7 +158,17 @@ class MeshData:
                 "several surfaces through "
                 f"{'its' if k == 1 else 'their'} corners"
             )
-        return text + "."
+        return text + "." + self._normals_sentence()
+
+    def _normals_sentence(self) -> str:
+        bad = self.normals_against()
+        if bad is None or bad.size == 0:
+            return ""
+        k = bad.size
+        return (
+            f" The stored normals of {k:,} {_plural(k, 'face')} point against "
+            f"{'its' if k == 1 else 'their'} winding."
+        )
 
 
 def _plural(n: int, noun: str) -> str:
@@ -149,5 +199,4 @@ def _polygon_fields(split: Split, sizes: IntArray) -> dict[str, Any]:
     return {
         "nonplanar": np.flatnonzero(split.nonplanar).astype(np.intp),
         "crossing": np.flatnonzero(split.crossing).astype(np.intp),
-        "corners": sizes,
     }

@@ -46,8 +46,7 @@ def _read_obj(data: bytes, name: str) -> MeshData:
     vertices, faces = plain
     nf = faces.shape[0]
     source = np.arange(nf, dtype=np.intp)
-    corners = np.full(nf, 3, dtype=np.intp)
-    return MeshData(vertices, faces, "obj", "ascii", source, nf, name, source=data, corners=corners)
+    return MeshData(vertices, faces, "obj", "ascii", source, nf, name, source=data)
 
 
 def _read_plain(data: bytes) -> tuple[FloatArray, IntArray] | None:

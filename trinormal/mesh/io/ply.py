@@ -54,6 +54,9 @@ def _read_ply(data: bytes, name: str) -> MeshData:
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
         raise MeshFileError.of(name, "ply_not_finite", vertex=bad)
     polys: list[list[Any]] | npt.NDArray[Any] = values.get("face", {}).get("_polys", [])
+    normals = None
+    if all(k in vdata for k in ("nx", "ny", "nz")):
+        normals = np.stack([np.asarray(vdata[k], dtype=np.float64) for k in ("nx", "ny", "nz")], 1)
     polys = _ply_faces(polys, vertices.shape[0], name)
     split, sizes = _split(vertices, polys)
     fields = _polygon_fields(split, sizes)
@@ -66,6 +69,7 @@ def _read_ply(data: bytes, name: str) -> MeshData:
         len(sizes),
         name,
         source=data,
+        vertex_normals=normals,
         **fields,
     )
 

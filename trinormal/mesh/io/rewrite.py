@@ -41,19 +41,20 @@ def _turned_polygons(m: MeshData, faces: IntArray) -> IntArray:
             f"write_mesh of a read model takes its {m.faces.shape[0]} triangles, "
             f"some turned over; got {faces.shape[0]}"
         )
-    changed = np.flatnonzero((faces != m.faces).any(axis=1))
-    old, new = m.faces[changed], faces[changed]
+    f, g = faces, m.faces  # columns compared one at a time: a (F, 3) .any(axis=1) is slow
+    changed = np.flatnonzero((f[:, 0] != g[:, 0]) | (f[:, 1] != g[:, 1]) | (f[:, 2] != g[:, 2]))
+    old, new = g[changed], f[changed]
     odd = np.zeros(changed.size, dtype=bool)
-    for order in ((0, 2, 1), (2, 1, 0), (1, 0, 2)):
-        odd |= (new == old[:, order]).all(axis=1)
+    for i, j, c in ((0, 2, 1), (2, 1, 0), (1, 0, 2)):
+        odd |= (new[:, 0] == old[:, i]) & (new[:, 1] == old[:, j]) & (new[:, 2] == old[:, c])
     if not odd.all():
         row = int(changed[np.flatnonzero(~odd)[0]])
         raise ValueError(
             f"write_mesh of a read model only turns faces over: triangle {row} is "
             f"{faces[row].tolist()}, not {m.faces[row].tolist()} turned over"
         )
-    if changed.size == 0:
-        return changed
+    if changed.size == 0 or m.n_polygons == m.faces.shape[0]:  # every face a triangle
+        return changed.astype(np.intp)
     n = np.bincount(m.source_faces, minlength=m.n_polygons)
     k = np.bincount(m.source_faces[changed], minlength=m.n_polygons)
     first = np.zeros(m.n_polygons, dtype=bool)
@@ -65,10 +66,10 @@ def _turned_polygons(m: MeshData, faces: IntArray) -> IntArray:
     return out
 
 
-def _rewrite(m: MeshData, faces: IntArray) -> bytes:
+def _rewrite(m: MeshData, faces: IntArray) -> bytes | bytearray:
     """Return the file of ``m`` with the faces ``faces`` turns over turned over."""
     turned = _turned_polygons(m, faces)
-    if turned.size == 0:
+    if turned.size == 0 and m.stl_records is None:
         return m.source
     if m.format == "stl" and m.encoding == "binary":
         return _stl_binary(m, faces, turned)
@@ -160,12 +161,34 @@ def _obj(lines: list[str], turned: IntArray) -> None:
 # --------------------------------------------------------------------------- STL
 
 
-def _stl_binary(m: MeshData, faces: IntArray, turned: IntArray) -> bytes:
-    buf = bytearray(m.source)
-    rec = np.frombuffer(buf, dtype=_STL_RAW, count=m.faces.shape[0], offset=84)
-    rec["b"][turned], rec["c"][turned] = rec["c"][turned], rec["b"][turned].copy()
-    rec["n"][turned] = face_normals(m.vertices, faces[turned]).astype(np.float32)
-    return bytes(buf)
+def _stl_binary(m: MeshData, faces: IntArray, turned: IntArray) -> bytes | bytearray:
+    if m.stl_records is None:  # the whole file was kept
+        buf = bytearray(m.source)
+        rec = np.frombuffer(buf, dtype=_STL_RAW, count=m.faces.shape[0], offset=84)
+        rec["b"][turned], rec["c"][turned] = rec["c"][turned], rec["b"][turned].copy()
+        rec["n"][turned] = face_normals(m.vertices, faces[turned]).astype(np.float32)
+        return buf
+    return _stl_records(m, faces, turned)
+
+
+def _stl_records(m: MeshData, faces: IntArray, turned: IntArray) -> bytearray:
+    """Build a binary STL from its kept header, normals and attribute bytes and the faces.
+
+    Every corner is ``vertices[faces]`` as float32, the number the file holds.
+    """
+    nf = faces.shape[0]
+    buf = bytearray(84 + 50 * nf + len(m.source) - 84)
+    buf[:84] = m.source[:84]
+    buf[84 + 50 * nf :] = m.source[84:]
+    rec = np.frombuffer(
+        buf, dtype=[("n", "<f4", (3,)), ("c", "<f4", (3, 3)), ("a", "V2")], count=nf, offset=84
+    )
+    rec["n"], rec["a"] = m.stl_records["normal"], m.stl_records["attr"]
+    for k in range(3):
+        rec["c"][:, k] = m.vertices[faces[:, k]]
+    raw = np.frombuffer(buf, dtype=_STL_RAW, count=nf, offset=84)
+    raw["n"][turned] = face_normals(m.vertices, faces[turned]).astype(np.float32)
+    return buf
 
 
 def _stl_ascii(lines: list[str], m: MeshData, faces: IntArray, turned: IntArray) -> None:
