@@ -49,7 +49,9 @@ class MeshData:
         disagrees with its size, for one. Empty for a file read as it is.
     source : bytes
         The file's bytes, as read: what `write_mesh` writes back, with the
-        records of the faces a fix turns over changed and nothing else.
+        records of the faces a fix turns over changed and nothing else. A binary
+        STL keeps its 84-byte header and any bytes after its records here, the
+        rest in ``stl_records``.
     nonplanar : ndarray of int
         The polygons (faces of the file, from 0) whose corners are not on one
         plane (`trinormal.tolerances.PLANAR_TOL`): their split is a guess.
