@@ -9,8 +9,9 @@ reversed faces, polygons, extreme scales and files that cannot be read (one at l
 reason of `trinormal.mesh.io.READ_ERRORS`), and small files with random edits.
 
 `outcome(name, data)` is what Python makes of a file, as the page shows it: the report
-(``check(...).to_dict()``), its sentences, the format, and the repaired file (`fix_winding`,
-then `write_mesh` in the same format and encoding); or the sentence of the error.
+(``check(...).to_dict()``), its sentences, the format, the polygons the split found not
+planar or crossing themselves, and the repaired file (`fix_winding`, then `write_mesh` of the
+read model: the file itself with the faces turned over); or the sentence of the error.
 ``tests/test_mesh_parity.py`` runs the page's JavaScript on the same files in Node.
 """
 
@@ -69,7 +70,8 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
         return {"error": str(exc), "key": exc.key}
     r = check(m.vertices, m.faces)
     fixed, _ = fix_winding(m.vertices, m.faces)
-    write_mesh(scratch, m.vertices, fixed, m.format, m.encoding)
+    write_mesh(scratch, m, fixed)
+    before, after = m.normals_against(), m.normals_against(fixed)
     return {
         "report": _finite_or_text(r.to_dict()),
         "summary": r.summary(width=0).split("\n"),
@@ -77,7 +79,11 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
         "binary": m.encoding == "binary",
         "polygons": m.n_polygons,
         "split_polygons": m.split_polygons,
+        "nonplanar_polygons": int(m.nonplanar.size),
+        "crossing_polygons": int(m.crossing.size),
         "notes": list(m.notes),
+        "normals_against": None if before is None else int(before.size),
+        "normals_against_fixed": None if after is None else int(after.size),
     }
 
 
@@ -418,6 +424,7 @@ def _ply_text(body: str, header: str | None = None) -> bytes:
 
 _GOOD_PLY_BODY = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
 _PLY_HEAD = "ply\nformat ascii 1.0\n"
+_FACE_HEAD = "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
 _XYZ = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
 
 
@@ -519,6 +526,28 @@ def unreadable() -> Iterator[tuple[str, bytes]]:
         "huge-count-binary.ply",
         ("ply\nformat binary_big_endian 1.0\n" + huge + "end_header\n").encode(),
     )
+    yield (
+        "unicode-count.ply",
+        _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "\u00b3") + _FACE_HEAD),
+    )
+    yield (
+        "arabic-count.ply",
+        _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "\u0663") + _FACE_HEAD),
+    )
+    tri = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
+    for fmt in ("binary_little_endian", "binary_big_endian"):
+        yield (
+            f"negative-count-{fmt}.ply",
+            ply(tri, [[0, 1, 2]], fmt, count="int")[:-16]
+            + struct.pack("<i" if "little" in fmt else ">i", -3)
+            + bytes(12),
+        )
+        yield f"float-indices-{fmt}.ply", ply(tri, [[0, 1, 2], [0, 2, 1]], fmt, index="float")
+        yield f"float-half-{fmt}.ply", ply(tri, [[0, 1, 2], [0, 1.5, 2]], fmt, index="float")
+        yield f"float-beyond-{fmt}.ply", ply(tri, [[0, 1, 2], [0, 9, 2, 1]], fmt, index="double")
+    yield "float-indices-ascii.ply", ply(tri, [[0, 1, 2]], index="float")
+    yield "float-half-ascii.ply", _ply_text("0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", _PLY_HEAD + _XYZ
+        + "element face 1\nproperty list uchar float vertex_indices\nend_header\n")  # fmt: skip
     yield "zero-count.ply", _ply_text(_GOOD_PLY_BODY, _PLY_HEAD + _XYZ.replace("3", "003") + "element face 01\n"
         "property list uchar int vertex_indices\nend_header\n")  # fmt: skip
 
@@ -572,6 +601,133 @@ def lenient() -> Iterator[tuple[str, bytes]]:
         yield f"zero-bytes.{ext}", b""
 
 
+# --------------------------------------------------------------------------- what a fix keeps
+
+
+def _box_quads() -> tuple[np.ndarray, list[list[int]]]:
+    v, _ = cube()
+    return v, [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+
+
+def textured_obj(flip: tuple[int, ...] = (), crlf: bool = False) -> bytes:
+    """Textured quads as exporters write them: vt, vn, usemtl, g, o, s, comments, colours.
+
+    Faces ``flip`` are written turned over (corners, with their references, reversed).
+    """
+    v, quads = _box_quads()
+    lines = ["# Blender 4.2 export", "mtllib box.mtl", "o Box"]
+    lines += [f"v {x:.6f} {y:.6f} {z:.6f} 0.8 0.{k} 0.1" for k, (x, y, z) in enumerate(v.tolist())]
+    lines += ["vt 0.0 0.0", "vt 1.0 0.0", "vt 1.0 1.0", "vt 0.0 1.0"]
+    normals = ["0 0 -1", "0 0 1", "0 -1 0", "0 1 0", "-1 0 0", "1 0 0"]
+    lines += [f"vn {n}" for n in normals]
+    lines += ["g sides", "usemtl red", "s 1"]
+    for k, q in enumerate(quads):
+        if k == 3:
+            lines += ["# the top and the sides", "g top", "usemtl blue", "s off"]
+        refs = [f"{i + 1}/{c + 1}/{k + 1}" for c, i in enumerate(q)]
+        if k in flip:
+            refs = [refs[0], *refs[:0:-1]]
+        lines.append("f  " + "  ".join(refs) + ("  # a comment" if k == 1 else ""))
+    lines.append("l 1 2")
+    return ("\r\n" if crlf else "\n").join(lines).encode() + b"\n"
+
+
+def l_prism(flip: tuple[int, ...] = ()) -> Model:
+    """A prism over an L: two concave hexagon caps and six quad sides."""
+    ring = [(1, 2), (0, 2), (0, 0), (2, 0), (2, 1), (1, 1)]
+    v = np.array([(x, y, z) for z in (0.0, 1.0) for x, y in ring], dtype=np.float64)
+    polys = [[5, 4, 3, 2, 1, 0], [6, 7, 8, 9, 10, 11]]
+    polys += [[k, (k + 1) % 6, 6 + (k + 1) % 6, 6 + k] for k in range(6)]
+    return v, turned(polys, flip)
+
+
+def warped() -> Model:
+    """Quads over a wavy grid (not planar), one self-crossing quad and a flat pentagon."""
+    xs = np.arange(4.0)
+    v = np.array([(x, y, 0.3 * math.sin(x + 2 * y)) for y in xs for x in xs])
+    polys = [
+        [4 * j + i, 4 * j + i + 1, 4 * j + i + 5, 4 * j + i + 4] for j in range(3) for i in range(3)
+    ]
+    polys = turned(polys, [4])
+    bow = np.array([[10, 0, 0], [12, 2, 0], [12, 0, 0], [10, 1, 0.0]])
+    star = np.array([[20 + math.cos(a), math.sin(a), 0] for a in np.arange(5) * 4 * math.pi / 5])
+    return np.vstack([v, bow, star]), [*polys, [16, 17, 18, 19], [20, 21, 22, 23, 24]]
+
+
+def rich_ply(
+    fmt: str, count: str = "uchar", index: str = "int", flip: tuple[int, ...] = ()
+) -> bytes:
+    """A PLY of the L prism with vertex normals and colours, face flags and texture lists."""
+    v, polys = l_prism(flip)
+    head = ["ply", f"format {fmt} 1.0", "comment made by tests/mesh_corpus.py", "obj_info an L"]
+    head += [f"element vertex {len(v)}"] + [f"property float {a}" for a in "xyz"]
+    head += ["property float nx", "property float ny", "property float nz"]
+    head += ["property uchar red", "property uchar green", "property uchar blue"]
+    head += [f"element face {len(polys)}", "property uchar flags"]
+    head += [f"property list {count} {index} vertex_indices", "property list uchar float texcoord"]
+    head += ["comment after the faces", "element material 1", "property uchar id", "end_header"]
+    text = ("\n".join(head) + "\n").encode()
+    uv = [[(k % 3) * 0.5, (k // 3) * 0.25] for k in range(12)]
+    if fmt == "ascii":
+        rows = [" ".join(f"{x:g}" for x in row) + f" 0 0 1 {k} 20 200" for k, row in enumerate(v)]
+        rows += [
+            f"{k % 3} {len(p)} "
+            + " ".join(map(str, p))
+            + f"  {2 * len(p)} "
+            + " ".join(f"{c:g}" for i in p for c in uv[i])
+            for k, p in enumerate(polys)
+        ]
+        return text + ("\n".join([*rows, "9"]) + "\n").encode()
+    o = "<" if fmt == "binary_little_endian" else ">"
+    codes = {"uchar": "B", "int": "i", "uint": "I", "ushort": "H"}
+    body = b"".join(struct.pack(o + "6f3B", *row, 0, 0, 1, k, 20, 200) for k, row in enumerate(v))
+    for k, p in enumerate(polys):
+        body += struct.pack(f"{o}B{codes[count]}{len(p)}{codes[index]}", k % 3, len(p), *p)
+        body += struct.pack(f"{o}B{2 * len(p)}f", 2 * len(p), *[c for i in p for c in uv[i]])
+    return text + body + b"\x09"
+
+
+def kept() -> Iterator[tuple[str, bytes]]:
+    """Files whose repair must keep everything: rich OBJ, PLY and STL, polygons of every kind."""
+    for flip, tag in (((), "fine"), ((1, 4), "flipped")):
+        yield f"textured-{tag}.obj", textured_obj(flip)
+        yield f"textured-crlf-{tag}.obj", textured_obj(flip, crlf=True)
+        for fmt, short in (
+            ("ascii", "ascii"),
+            ("binary_little_endian", "le"),
+            ("binary_big_endian", "be"),
+        ):
+            yield f"rich-{short}-{tag}.ply", rich_ply(fmt, flip=flip)
+        yield f"rich-int-{tag}.ply", rich_ply("binary_little_endian", "int", "uint", flip)
+    yield "rich-all-inside-out.ply", rich_ply("ascii", flip=tuple(range(8)))
+    continued = textured_obj((2,)).replace(b"f  1/1/3", b"f  1/1/3 \\\n")
+    yield "textured-continued.obj", continued
+    yield "bom-flipped.obj", b"\xef\xbb\xbf" + textured_obj((0,))
+    yield "latin1-flipped.obj", b"# caf\xe9\n" + textured_obj((5,))
+    for name, model in (("l-prism", l_prism((0, 3))), ("warped", warped())):
+        yield from every_encoding(name, model)
+    v, f = icosphere(1)
+    polys = turned(np.asarray(f).tolist(), [0, 7, 8])
+    header = b"COLOR=\xff\x00\x00\xff MATERIAL=\x01\x02 exported by a CAD program"
+    data = bytearray(stl_binary(v, polys, header))
+    for i in range(len(polys)):
+        data[84 + 50 * i + 48 : 84 + 50 * i + 50] = struct.pack("<H", 0x8000 | i * 37)
+    yield "cad-attributes.stl", bytes(data)
+    yield "cad-attributes-trailing.stl", bytes(data) + b"\x00\x01\x02"
+    yield "cad-attributes-fine.stl", stl_binary(v, np.asarray(f).tolist(), header)
+    signed = tetra()[0] - 0.0 * np.array([1.0, 0.0, 0.0])  # -0.0 corners: the whole file is kept
+    signed[0, 0] = -0.0
+    yield "negative-zero.stl", stl_binary(signed, turned(tetra()[1], [1]), header)
+    text = (
+        stl_ascii(v, polys)
+        .replace(b"solid model", b"solid part_1 (mm)")
+        .replace(b"endsolid model", b"endsolid part_1 (mm)")
+    )
+    second = stl_ascii(*tetra((3, 0, 0))).replace(b"model", b"Tetra")
+    yield "named-solids.stl", text + second.replace(b"\n", b"\r\n")
+    yield "named-solid-normals.stl", text.replace(b"facet normal 0 0 0", b"FACET NORMAL 0 0 1")
+
+
 def corpus() -> list[tuple[str, bytes]]:
     """Every file of the corpus, as (name, bytes); names are unique."""
     files = [(p.name, p.read_bytes()) for d in STORED for p in sorted(d.rglob("*")) if p.is_file()]
@@ -579,6 +735,7 @@ def corpus() -> list[tuple[str, bytes]]:
     for name, model in models():
         files += every_encoding(name, model)
     files += variants()
+    files += kept()
     files += unreadable()
     rng = random.Random(31)  # seeded: the same damaged files every run
     small = [(n, d) for n, d in files if 0 < len(d) < 4000 and "." in n[1:]]

@@ -44,6 +44,8 @@ def write_corpus(folder: Path) -> list[dict]:
         entry["expected"] = outcome(name, data, repaired)
         if "error" not in entry["expected"]:
             entry["repaired"] = repaired.name
+            if not entry["expected"]["report"]["faces_to_flip"]:  # nothing to turn over
+                assert repaired.read_bytes() == data, name
         manifest.append(entry)
     (folder / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
     return manifest

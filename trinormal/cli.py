@@ -359,12 +359,12 @@ def _run_mesh(args_in: list[str]) -> int:
         fixed = None
         if args.fix is not None:
             out_fmt = mesh.io._format_of(args.fix, None)
-            encoding = data.encoding if out_fmt == data.format else None
             # the faces fix_winding turns over are the report's: turn them over once found
             flipped = report.faces_to_flip
             faces = mesh.repair._turn_over(data.faces, flipped)
-            mesh.write_mesh(args.fix, data.vertices, faces, out_fmt, encoding)
-            fixed = (out_fmt, flipped)
+            mesh.write_mesh(args.fix, data, faces, out_fmt)  # in its own format: the file, kept
+            against = data.normals_against(faces) if out_fmt == data.format else None
+            fixed = (out_fmt, flipped, against)
     except ValueError as exc:  # MeshFileError and bad arrays: one line, status 2
         _error(str(exc))
         return 2
@@ -381,6 +381,8 @@ def _run_mesh(args_in: list[str]) -> int:
         }
         if fixed is not None:
             out["fixed"] = {"file": args.fix, "format": fixed[0], "flipped": fixed[1].tolist()}
+            if fixed[2] is not None:  # stored normals that disagree with the fixed winding
+                out["fixed"]["normals_against"] = fixed[2].tolist()
         text = json.dumps(out, ensure_ascii=False)
         if _encodable(text, sys.stdout) != text:
             text = json.dumps(out, ensure_ascii=True)
@@ -392,6 +394,12 @@ def _run_mesh(args_in: list[str]) -> int:
                 f"Wrote {args.fix} ({fixed[0].upper()}): {n} {'face' if n == 1 else 'faces'} "
                 "turned over."
             )
+            if fixed[2] is not None and fixed[2].size:
+                k = fixed[2].size
+                lines.append(
+                    f"The stored normals of {k:,} {'face' if k == 1 else 'faces'} point against "
+                    "the fixed winding; the file keeps them as they were."
+                )
         text = "\n".join(lines)
     try:
         _write(sys.stdout, text + "\n")

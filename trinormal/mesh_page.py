@@ -22,7 +22,7 @@ from trinormal.mesh.io import READ_ERRORS, READ_NOTES
 from trinormal.mesh.printing import printing_constants
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
-from trinormal.tolerances import DEFAULT_TOL
+from trinormal.tolerances import DEFAULT_TOL, PLANAR_TOL
 
 __all__ = [
     "EXAMPLES",
@@ -220,7 +220,8 @@ def site_constants() -> dict[str, Any]:
     Returns
     -------
     dict
-        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol`` and
+        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol``, ``planar_tol``
+        (`trinormal.tolerances.PLANAR_TOL`, for splitting polygons) and
         ``selection`` (the readout of a face picked in the 3D view:
         `trinormal.mesh.selection.selection_constants`) and ``printing`` (the report for
         printing's templates and limits: `trinormal.mesh.printing.printing_constants`).
@@ -228,7 +229,7 @@ def site_constants() -> dict[str, Any]:
     Examples
     --------
     >>> sorted(site_constants())
-    ['limits', 'messages', 'nouns', 'printing', 'rows', 'selection', 'summary', 'tol']
+    ['limits', 'messages', 'nouns', 'planar_tol', 'printing', 'rows', 'selection', 'summary', 'tol']
     """
     return {
         "messages": dict(MESSAGES),
@@ -237,6 +238,7 @@ def site_constants() -> dict[str, Any]:
         "summary": {k: list(t) if isinstance(t, tuple) else t for k, t in SUMMARY.items()},
         "nouns": {k: list(t) for k, t in NOUNS.items()},
         "tol": DEFAULT_TOL,
+        "planar_tol": PLANAR_TOL,
         "selection": selection_constants(),
         "printing": printing_constants(),
     }

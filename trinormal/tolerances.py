@@ -33,6 +33,7 @@ from __future__ import annotations
 __all__ = [
     "DEFAULT_TOL",
     "MAGNITUDE_ULPS",
+    "PLANAR_TOL",
     "UNIT_NORMAL_ULPS",
 ]
 
@@ -47,3 +48,9 @@ UNIT_NORMAL_ULPS: int = 2
 
 #: ... and |N| and the area are within this many units in the last place.
 MAGNITUDE_ULPS: int = 1
+
+#: A polygon of a mesh file is *not planar* when its corners spread along its normal
+#: (Newell's) by more than this times its longest side: far above float64 rounding
+#: (about 1e-16 of the size), far below a warp anyone models on purpose. Its split into
+#: triangles then chooses a surface the file does not define (`trinormal.mesh.polygons`).
+PLANAR_TOL: float = 1e-6

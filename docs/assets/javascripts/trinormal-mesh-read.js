@@ -24,23 +24,162 @@ self.TrinormalMesh.part("read", "base", function (base) {
     return base.slice(dot + 1).toLowerCase();
   }
 
-  /** Triangles made of polygons, and how many polygons there were and had more than 3 corners. */
-  function Polygons() {
+  /**
+   * Triangles made of polygons, split in their planes (splitPolygon), and what the split found:
+   * how many polygons, how many had more than 3 corners, which triangle came from which polygon,
+   * how many polygons are not planar or cross themselves, and whether all of them are quads.
+   */
+  function Polygons(V) {
+    this.V = V;
     this.faces = new Growable(Uint32Array, 1024);
+    this.source = new Growable(Uint32Array, 1024);
     this.count = 0;
     this.split = 0;
+    this.nonplanar = 0;
+    this.crossing = 0;
+    this.quads = true;
   }
-  /** A polygon as triangles: a fan from its first corner, wound as stored. */
   Polygons.prototype.add = function (corners) {
     var n = corners.length;
-    for (var k = 1; k + 1 < n; k++) {
-      this.faces.push(corners[0]);
-      this.faces.push(corners[k]);
-      this.faces.push(corners[k + 1]);
+    var tris = [[0, 1, 2]];
+    if (n > 3) {
+      var points = corners.map(function (c) { return [this.V[3 * c], this.V[3 * c + 1], this.V[3 * c + 2]]; }, this);
+      var r = splitPolygon(points);
+      tris = r.triangles;
+      if (r.nonplanar) this.nonplanar++;
+      if (r.crossing) this.crossing++;
     }
+    for (var t = 0; t < tris.length; t++) {
+      for (var k = 0; k < 3; k++) this.faces.push(corners[tris[t][k]]);
+      this.source.push(this.count);
+    }
+    if (n !== 4) this.quads = false;
     this.count++;
     if (n > 3) this.split++;
   };
+  /** What a reader returns of its polygons (with vertices, binary and notes added). */
+  Polygons.prototype.result = function () {
+    return {
+      faces: this.faces.array(), source: this.source.array(), polygons: this.count, split_polygons: this.split,
+      nonplanar_polygons: this.nonplanar, crossing_polygons: this.crossing, quads: this.quads && this.count > 0,
+    };
+  };
+
+  // ------------------------------------------------------------------ polygons (trinormal/mesh/polygons.py)
+
+  var PLANAR_TOL = base.internal.MESH.planar_tol;
+
+  function orient(xs, ys, a, b, c) {
+    return (xs[b] - xs[a]) * (ys[c] - ys[a]) - (ys[b] - ys[a]) * (xs[c] - xs[a]);
+  }
+
+  /**
+   * One polygon ([x, y, z] corners) split by ear clipping in its plane, as Python's
+   * split_polygon, operation for operation: {triangles: [[i, j, k]...], nonplanar, crossing}.
+   */
+  function splitPolygon(points) {
+    var n = points.length, i;
+    var fan = [];
+    for (i = 1; i + 1 < n; i++) fan.push([0, i, i + 1]);
+    var p0 = points[0];
+    var d = points.map(function (p) { return [p[0] - p0[0], p[1] - p0[1], p[2] - p0[2]]; });
+    var m = 0;
+    d.forEach(function (p) { m = Math.max(m, Math.max(Math.abs(p[0]), Math.abs(p[1]), Math.abs(p[2]))); });
+    if (!(m > 0 && Number.isFinite(m))) return { triangles: fan, nonplanar: false, crossing: false };
+    var q = d.map(function (p) { return [p[0] / m, p[1] / m, p[2] / m]; });
+    var nx = 0, ny = 0, nz = 0;
+    for (i = 0; i < n; i++) {
+      var a = q[i], b = q[(i + 1) % n];
+      nx += (a[1] - b[1]) * (a[2] + b[2]);
+      ny += (a[2] - b[2]) * (a[0] + b[0]);
+      nz += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    var u, v, s;
+    if (Math.abs(nz) >= Math.abs(nx) && Math.abs(nz) >= Math.abs(ny)) { u = 0; v = 1; s = nz; }
+    else if (Math.abs(ny) >= Math.abs(nx)) { u = 2; v = 0; s = ny; }
+    else { u = 1; v = 2; s = nx; }
+    var xs, ys;
+    if (s === 0) {
+      var spread = [0, 1, 2].map(function (k) {
+        var hi = -Infinity, lo = Infinity;
+        q.forEach(function (p) { hi = Math.max(hi, p[k]); lo = Math.min(lo, p[k]); });
+        return hi - lo;
+      });
+      var w = spread[2] <= spread[1] && spread[2] <= spread[0] ? 2 : spread[1] <= spread[0] ? 1 : 0;
+      xs = q.map(function (p) { return p[(w + 1) % 3]; });
+      ys = q.map(function (p) { return p[(w + 2) % 3]; });
+      return { triangles: fan, nonplanar: false, crossing: crosses(xs, ys) };
+    }
+    var sign = s > 0 ? 1 : -1;
+    var nonplanar = notPlanar(q, nx, ny, nz);
+    xs = q.map(function (p) { return p[u]; });
+    ys = q.map(function (p) { return p[v]; });
+    var convex = n === 4;
+    for (i = 0; i < 4 && convex; i++) convex = sign * orient(xs, ys, (i + 3) % 4, i, (i + 1) % 4) > 0;
+    return { triangles: clip(xs, ys, sign), nonplanar: nonplanar, crossing: !convex && crosses(xs, ys) };
+  }
+
+  function notPlanar(q, nx, ny, nz) {
+    var n = q.length, hi = -Infinity, lo = Infinity, longest = 0;
+    for (var i = 0; i < n; i++) {
+      var p = q[i], e = q[(i + 1) % n];
+      var dot = p[0] * nx + p[1] * ny + p[2] * nz;
+      hi = Math.max(hi, dot);
+      lo = Math.min(lo, dot);
+      var dx = e[0] - p[0], dy = e[1] - p[1], dz = e[2] - p[2];
+      longest = Math.max(longest, dx * dx + dy * dy + dz * dz);
+    }
+    var norm = Math.sqrt(nx * nx + ny * ny + nz * nz);
+    return hi - lo > PLANAR_TOL * Math.sqrt(longest) * norm;
+  }
+
+  function crosses(xs, ys) {
+    var n = xs.length;
+    function opposite(x, y) { return (x > 0 && y < 0) || (x < 0 && y > 0); }
+    for (var i = 0; i < n - 2; i++) {
+      for (var j = i + 2; j < n; j++) {
+        if (i === 0 && j === n - 1) continue;
+        var a = i, b = i + 1, c = j, d = (j + 1) % n;
+        if (opposite(orient(xs, ys, a, b, c), orient(xs, ys, a, b, d)) && opposite(orient(xs, ys, c, d, a), orient(xs, ys, c, d, b))) return true;
+      }
+    }
+    return false;
+  }
+
+  function clip(xs, ys, sign) {
+    var rest = [];
+    for (var i = 0; i < xs.length; i++) rest.push(i);
+    var out = [];
+    var at = 1;
+    while (rest.length > 3) {
+      var k = rest.length, found = -1, a, b, c;
+      for (var t = 0; t < k; t++) {
+        var pos = (at + t) % k;
+        a = rest[(pos + k - 1) % k]; b = rest[pos]; c = rest[(pos + 1) % k];
+        if (isEar(xs, ys, sign, rest, a, b, c)) { found = pos; break; }
+      }
+      if (found < 0) {
+        for (var j = 1; j < k - 1; j++) out.push([rest[0], rest[j], rest[j + 1]]);
+        return out;
+      }
+      out.push([a, b, c]);
+      rest.splice(found, 1);
+      at = found < rest.length ? found : 0;
+    }
+    out.push([rest[0], rest[1], rest[2]]);
+    return out;
+  }
+
+  function isEar(xs, ys, sign, rest, a, b, c) {
+    if (sign * orient(xs, ys, a, b, c) <= 0) return false;
+    for (var i = 0; i < rest.length; i++) {
+      var p = rest[i];
+      if (p === a || p === b || p === c) continue;
+      if ((xs[p] === xs[a] && ys[p] === ys[a]) || (xs[p] === xs[b] && ys[p] === ys[b]) || (xs[p] === xs[c] && ys[p] === ys[c])) continue;
+      if (sign * orient(xs, ys, a, b, p) >= 0 && sign * orient(xs, ys, b, c, p) >= 0 && sign * orient(xs, ys, c, a, p) >= 0) return false;
+    }
+    return true;
+  }
 
   // ------------------------------------------------------------------ OBJ
 
@@ -111,7 +250,8 @@ self.TrinormalMesh.part("read", "base", function (base) {
       }
     }
     if (nv === 0 && !polys.length) fileError(name, null, "obj_empty", {});
-    var out = new Polygons();
+    var V = coords.array();
+    var out = new Polygons(V);
     for (var k = 0; k < polys.length; k++) {
       for (var c = 0; c < polys[k].length; c++) {
         var index = polys[k][c];
@@ -122,7 +262,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
       }
       out.add(polys[k]);
     }
-    return { vertices: coords.array(), faces: out.faces.array(), polygons: out.count, split_polygons: out.split, binary: false };
+    return Object.assign(out.result(), { vertices: V, binary: false });
   }
 
   // ------------------------------------------------------------------ STL
@@ -171,6 +311,13 @@ self.TrinormalMesh.part("read", "base", function (base) {
     return { vertices: out.slice(0, 3 * nv), faces: faces };
   }
 
+  /** 0, 1, ..., n - 1: each triangle of an STL file is its own face. */
+  function series(n) {
+    var out = new Uint32Array(n);
+    for (var i = 0; i < n; i++) out[i] = i;
+    return out;
+  }
+
   function readStl(bytes, name, progress) {
     var view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     if (bytes.length >= 84) {
@@ -195,7 +342,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
           }
         }
         var merged = mergeCorners(corners, function (p) { progress(0.4 + 0.6 * p); });
-        return { vertices: merged.vertices, faces: merged.faces, polygons: n, split_polygons: 0, binary: true, notes: notes };
+        return { vertices: merged.vertices, faces: merged.faces, source: series(n), polygons: n, split_polygons: 0, binary: true, notes: notes };
       }
     }
     if (!looksLikeText(bytes)) fileError(name, null, "stl_short", {});
@@ -260,7 +407,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
     if (inLoop) fileError(name, lineno, "stl_ends_in_facet", {});
     var merged = mergeCorners(corners.array(), function (p) { progress(0.5 + 0.5 * p); });
     var nf = merged.faces.length / 3;
-    return { vertices: merged.vertices, faces: merged.faces, polygons: nf, split_polygons: 0, binary: false };
+    return { vertices: merged.vertices, faces: merged.faces, source: series(nf), polygons: nf, split_polygons: 0, binary: false };
   }
 
   // ------------------------------------------------------------------ PLY
@@ -280,7 +427,11 @@ self.TrinormalMesh.part("read", "base", function (base) {
     return -1;
   }
 
-  function readPly(bytes, name, progress) {
+  /**
+   * A PLY file's header, as ply.py's _ply_header reads it: {fmt, elements (name, count, rows,
+   * props: {name, type, count}, line), bodyStart, bodyLine, vert}; a bad header throws Python's error.
+   */
+  function plyHeader(bytes, name) {
     var end = findBytes(bytes, "end_header", 0);
     if (!(bytes[0] === 112 && bytes[1] === 108 && bytes[2] === 121) || end < 0) fileError(name, 1, "ply_not_ply", {});
     var nl = bytes.indexOf(10, end);
@@ -328,6 +479,12 @@ self.TrinormalMesh.part("read", "base", function (base) {
       var has = vert.props.some(function (p) { return p.name === axis && p.count === null; });
       if (!has) fileError(name, vert.line, "ply_no_axis", { axis: axis });
     });
+    return { fmt: fmt, elements: elements, bodyStart: bodyStart, bodyLine: header.length + 2, vert: vert };
+  }
+
+  function readPly(bytes, name, progress) {
+    var head = plyHeader(bytes, name);
+    var fmt = head.fmt, elements = head.elements, bodyStart = head.bodyStart, vert = head.vert;
     var face = null;
     elements.forEach(function (e) {
       if (!face && e.name === "face") face = e;
@@ -335,7 +492,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
     if (face) I.checkFaceCount(name, face.rows);
     var values =
       fmt === "ascii"
-        ? plyAscii(bytes, bodyStart, header.length + 2, elements, name, progress)
+        ? plyAscii(bytes, bodyStart, head.bodyLine, elements, name, progress)
         : plyBinary(bytes, bodyStart, elements, fmt === "binary_little_endian", name, progress);
     var v = values.vertex;
     var nv = vert.count;
@@ -347,25 +504,28 @@ self.TrinormalMesh.part("read", "base", function (base) {
       }
     }
     var polys = (values.face && values.face._polys) || [];
-    var out = new Polygons();
+    var out = new Polygons(vertices);
     for (var q = 0; q < polys.length; q++) {
       if (polys[q].length < 3) fileError(name, null, "ply_corners", { face: q, count: polys[q].length });
       for (var c = 0; c < polys[q].length; c++) {
         var idx = polys[q][c];
-        if (!(idx >= 0 && idx < nv)) {
+        if (!(idx >= 0 && idx < nv && Number.isInteger(idx))) { // a float list's 1.5 is no vertex
           var valid = nv ? message("ply_valid", { last: nv - 1 }) : message("ply_no_vertices", {});
           fileError(name, null, "ply_index_range", { face: q, index: idx, valid: valid });
         }
       }
-      out.add(polys[q]);
     }
-    return {
-      vertices: vertices,
-      faces: out.faces.array(),
-      polygons: out.count,
-      split_polygons: out.split,
-      binary: fmt !== "ascii",
-    };
+    for (q = 0; q < polys.length; q++) out.add(polys[q]);
+    var normals = null;
+    if (v.nx && v.ny && v.nz) {
+      normals = new Float64Array(3 * nv);
+      for (r = 0; r < nv; r++) {
+        normals[3 * r] = v.nx[r];
+        normals[3 * r + 1] = v.ny[r];
+        normals[3 * r + 2] = v.nz[r];
+      }
+    }
+    return Object.assign(out.result(), { vertices: vertices, binary: fmt !== "ascii", vertex_normals: normals });
   }
 
   function faceListName(el) {
@@ -438,8 +598,11 @@ self.TrinormalMesh.part("read", "base", function (base) {
             if (typeof n === "bigint") n = undefined; // more items than any row has
             var items = [];
             if (n !== undefined && n >= 0) {
+              var isFloat = p2.type[0].charAt(0) === "F";
               for (var q = t + 1; q < Math.min(t + 1 + n, row.length); q++) {
-                var x = pyInt(row[q]);
+                // a list's items are numbers of its type; vertex indices must be whole numbers
+                var x = isFloat ? pyFloat(row[q]) : pyInt(row[q]);
+                if (isFloat && p2.name === want && !Number.isInteger(x)) x = undefined;
                 if (x === undefined) {
                   n = undefined;
                   break;
@@ -503,7 +666,8 @@ self.TrinormalMesh.part("read", "base", function (base) {
           if (pos + p2.count[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
           var n = view["get" + p2.count[0]](pos, little);
           pos += p2.count[1];
-          if (n < 0 || pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
+          if (n < 0) fileError(name, null, "ply_negative", { element: el.name, row: r2, count: n });
+          if (pos + n * p2.type[1] > size) fileError(name, null, "ply_binary_row", { element: el.name, row: r2, count: el.rows });
           if (p2.name === want) {
             var items = new Array(n);
             var getter2 = "get" + p2.type[0];
@@ -536,10 +700,12 @@ self.TrinormalMesh.part("read", "base", function (base) {
     mesh.format = ext;
     mesh.name = name;
     mesh.notes = mesh.notes || [];
+    mesh.bytes = bytes;
+    if (mesh.nonplanar_polygons === undefined) Object.assign(mesh, { nonplanar_polygons: 0, crossing_polygons: 0, quads: false });
     if (mesh.faces.length === 0) fileError(name, null, "no_faces", {});
     I.checkFaceCount(name, mesh.faces.length / 3);
     return mesh;
   }
 
-  return { FORMATS: FORMATS, read: read };
+  return { FORMATS: FORMATS, read: read, plyLayout: { header: plyHeader, faceListName: faceListName, isFixed: isFixed } };
 });

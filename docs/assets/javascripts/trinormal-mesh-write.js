@@ -39,102 +39,384 @@ self.TrinormalMesh.part("write", "check", function (base) {
     return sign + digits.slice(0, exp + 1) + "." + digits.slice(exp + 1);
   }
 
-  /** Three numbers of `values` from `at`, as Python writes f"{x!r} {y!r} {z!r}". */
-  function triple(values, at) {
-    return repr(values[at]) + " " + repr(values[at + 1]) + " " + repr(values[at + 2]);
-  }
+  // ------------------------------------------------------------------ the file, faces turned over
 
-  function encodeText(lines) {
-    return new TextEncoder().encode(lines.join("\n") + "\n");
-  }
-
-  function writeObj(V, faces) {
-    var lines = ["# written by trinormal"];
-    for (var i = 0; i < V.length; i += 3) lines.push("v " + triple(V, i));
-    for (i = 0; i < faces.length; i += 3) lines.push("f " + (faces[i] + 1) + " " + (faces[i + 1] + 1) + " " + (faces[i + 2] + 1));
-    return encodeText(lines);
-  }
-
-  function writeStlBinary(V, faces, normals) {
-    var nf = faces.length / 3;
-    var view = new DataView(new ArrayBuffer(84 + 50 * nf));
-    var head = "binary STL written by trinormal";
-    for (var i = 0; i < 80; i++) view.setUint8(i, i < head.length ? head.charCodeAt(i) : 32);
-    view.setUint32(80, nf, true);
-    for (i = 0; i < nf; i++) {
-      var at = 84 + 50 * i;
-      for (var k = 0; k < 3; k++, at += 4) view.setFloat32(at, normals[3 * i + k], true);
-      for (var c = 0; c < 3; c++) {
-        var p = 3 * faces[3 * i + c];
-        for (var a = 0; a < 3; a++, at += 4) view.setFloat32(at, V[p + a], true);
+  /**
+   * Which faces of the file `faces` turns over (rewrite.py's _turned_polygons): more than half
+   * of a polygon's triangles, or half and its first one. A Uint8Array flag per polygon, and
+   * whether any is set.
+   */
+  function turnedPolygons(mesh, faces) {
+    var old = mesh.faces, src = mesh.source, np = mesh.polygons;
+    var n = new Uint32Array(np), k = new Uint32Array(np), first = new Uint8Array(np);
+    for (var t = 0; t < src.length; t++) {
+      var p = src[t];
+      var changed = old[3 * t] !== faces[3 * t] || old[3 * t + 1] !== faces[3 * t + 1] || old[3 * t + 2] !== faces[3 * t + 2];
+      if (n[p] === 0 && changed) first[p] = 1;
+      n[p]++;
+      if (changed) k[p]++;
+    }
+    var flags = new Uint8Array(np), any = false;
+    for (p = 0; p < np; p++) {
+      if (2 * k[p] > n[p] || (2 * k[p] === n[p] && first[p])) {
+        flags[p] = 1;
+        any = true;
       }
     }
-    return new Uint8Array(view.buffer);
+    return { flags: flags, any: any };
   }
 
-  function writeStlAscii(V, faces, normals) {
-    var lines = ["solid trinormal"];
-    for (var i = 0; i < faces.length; i += 3) {
-      lines.push("facet normal " + triple(normals, i), "outer loop");
-      for (var k = 0; k < 3; k++) lines.push("vertex " + triple(V, 3 * faces[i + k]));
-      lines.push("endloop", "endfacet");
+  /** The text of `bytes` as the readers decode it (UTF-8, else Latin-1), in lines with their breaks. */
+  function decode(bytes) {
+    var text, utf8 = true;
+    try {
+      text = new TextDecoder("utf-8", { fatal: true, ignoreBOM: true }).decode(bytes);
+    } catch (err) {
+      text = base.internal.latin1(bytes);
+      utf8 = false;
     }
-    lines.push("endsolid trinormal");
-    return encodeText(lines);
+    var bom = text.charAt(0) === "\ufeff" ? "\ufeff" : "";
+    text = text.slice(bom.length);
+    var contents = base.internal.splitlines(text), lines = [], pos = 0;
+    for (var i = 0; i < contents.length; i++) {
+      pos += contents[i].length;
+      var end = text.substr(pos, 2) === "\r\n" ? "\r\n" : text.charAt(pos);
+      pos += end.length;
+      lines.push([contents[i], end]);
+    }
+    return { lines: lines, bom: bom, utf8: utf8 };
   }
 
-  /** PLY: float32 coordinates when every one is a float32 number, float64 otherwise. */
-  function writePly(V, faces, binary) {
-    var nv = V.length / 3, nf = faces.length / 3;
-    var single = true;
-    for (var i = 0; i < V.length && single; i++) single = Math.fround(V[i]) === V[i];
-    var vtype = single ? "float" : "double";
-    var lines = [
-      "ply",
-      "format " + (binary ? "binary_little_endian" : "ascii") + " 1.0",
-      "comment written by trinormal",
-      "element vertex " + nv,
-      "property " + vtype + " x",
-      "property " + vtype + " y",
-      "property " + vtype + " z",
-      "element face " + nf,
-      "property list uchar int vertex_indices",
-      "end_header",
-    ];
-    if (!binary) {
-      for (i = 0; i < V.length; i += 3) lines.push(triple(V, i));
-      for (i = 0; i < faces.length; i += 3) lines.push("3 " + faces[i] + " " + faces[i + 1] + " " + faces[i + 2]);
-      return encodeText(lines);
+  function encode(doc, prefix) {
+    var text = doc.bom + doc.lines.map(function (l) { return l[0] + l[1]; }).join("");
+    var body;
+    if (doc.utf8) body = new TextEncoder().encode(text);
+    else {
+      body = new Uint8Array(text.length);
+      for (var i = 0; i < text.length; i++) body[i] = text.charCodeAt(i);
     }
-    var head = encodeText(lines);
-    var size = single ? 4 : 8;
-    var out = new Uint8Array(head.length + 3 * size * nv + 13 * nf);
-    out.set(head, 0);
+    var out = new Uint8Array(prefix.length + body.length);
+    out.set(prefix, 0);
+    out.set(body, prefix.length);
+    return out;
+  }
+
+  /** Where each token of a line starts and ends. */
+  function spans(content) {
+    var at = 0;
+    return base.internal.tokens(content).map(function (tok) {
+      at = content.indexOf(tok, at);
+      at += tok.length;
+      return [at - tok.length, at];
+    });
+  }
+
+  function replaced(content, where, tokens) {
+    var out = "", at = 0;
+    for (var i = 0; i < where.length; i++) {
+      out += content.slice(at, where[i][0]) + tokens[i];
+      at = where[i][1];
+    }
+    return out + content.slice(at);
+  }
+
+  /** Corners of `per` items each: the first kept, the others in reverse order. */
+  function reversedCorners(items, per) {
+    var out = items.slice(0, per);
+    for (var i = items.length - per; i >= per; i -= per) out = out.concat(items.slice(i, i + per));
+    return out;
+  }
+
+  function turnObj(lines, flags) {
+    var face = -1, first = null, logical = "";
+    for (var i = 0; i < lines.length; i++) {
+      var content = lines[i][0];
+      if (content.charAt(content.length - 1) === "\\") {
+        if (first === null) first = i;
+        logical += content.slice(0, -1) + " ";
+        continue;
+      }
+      var start = first === null ? i : first;
+      var whole = logical + content;
+      first = null;
+      logical = "";
+      var hash = whole.indexOf("#");
+      var code = hash < 0 ? whole : whole.slice(0, hash);
+      var toks = base.internal.tokens(code);
+      if (!toks.length || (toks[0] !== "f" && toks[0] !== "fo")) continue;
+      face++;
+      if (!flags[face]) continue;
+      var line = replaced(whole, spans(code), [toks[0]].concat(reversedCorners(toks.slice(1), 1)));
+      for (var k = start; k < i; k++) lines[k] = ["", ""];
+      lines[i] = [line, lines[i][1]];
+    }
+  }
+
+  function turnStlAscii(lines, flags, normalOf) {
+    var facet = -1, facetLine = null, loop = [];
+    for (var i = 0; i < lines.length; i++) {
+      var toks = base.internal.tokens(lines[i][0]);
+      var kw = toks.length ? toks[0].toLowerCase() : "";
+      if (kw === "facet") facetLine = i;
+      else if (kw === "outer") loop = [];
+      else if (kw === "vertex") loop.push(i);
+      else if (kw === "endloop") {
+        facet++;
+        if (flags[facet]) {
+          var b = lines[loop[1]][0];
+          lines[loop[1]] = [lines[loop[2]][0], lines[loop[1]][1]];
+          lines[loop[2]] = [b, lines[loop[2]][1]];
+          if (facetLine !== null) {
+            var where = spans(lines[facetLine][0]);
+            if (where.length >= 5) {
+              var t = base.internal.tokens(lines[facetLine][0]);
+              var nrm = normalOf(facet);
+              t[2] = repr(nrm[0]);
+              t[3] = repr(nrm[1]);
+              t[4] = repr(nrm[2]);
+              lines[facetLine] = [replaced(lines[facetLine][0], where, t), lines[facetLine][1]];
+            }
+          }
+        }
+        facetLine = null;
+      }
+    }
+  }
+
+  /** The unit normals of the turned-over triangles, by face: normalOf(i) = [x, y, z]. */
+  function normalsOf(mesh, faces, flags) {
+    var list = [];
+    for (var i = 0; i < flags.length; i++) if (flags[i]) list.push(i);
+    var tri = new Uint32Array(3 * list.length);
+    list.forEach(function (f, j) { tri.set(faces.subarray(3 * f, 3 * f + 3), 3 * j); });
+    var n = base.internal.faceNormals(mesh.vertices, tri), at = {};
+    list.forEach(function (f, j) { at[f] = j; });
+    return function (f) { return [n[3 * at[f]], n[3 * at[f] + 1], n[3 * at[f] + 2]]; };
+  }
+
+  function turnStlBinary(mesh, flags, normalOf) {
+    var out = new Uint8Array(mesh.bytes);
     var view = new DataView(out.buffer);
-    var at = head.length;
-    for (i = 0; i < V.length; i++, at += size) {
-      if (single) view.setFloat32(at, V[i], true);
-      else view.setFloat64(at, V[i], true);
-    }
-    for (i = 0; i < faces.length; i += 3) {
-      view.setUint8(at++, 3);
-      for (var j = 0; j < 3; j++, at += 4) view.setInt32(at, faces[i + j], true);
+    for (var i = 0; i < flags.length; i++) {
+      if (!flags[i]) continue;
+      var at = 84 + 50 * i;
+      var b = out.slice(at + 24, at + 36);
+      out.copyWithin(at + 24, at + 36, at + 48);
+      out.set(b, at + 36);
+      var nrm = normalOf(i);
+      for (var k = 0; k < 3; k++) view.setFloat32(at + 4 * k, nrm[k], true);
     }
     return out;
   }
 
-  /**
-   * The mesh as a file in its own format and encoding (a big-endian PLY is written little
-   * endian), written as trinormal.mesh.write_mesh writes it, byte for byte: a Uint8Array.
-   * An STL holds each face's unit normal, as trinormal.mesh.face_normals gives it.
-   */
-  function write(mesh, faces) {
-    var V = mesh.vertices;
-    if (mesh.format === "obj") return writeObj(V, faces);
-    if (mesh.format === "ply") return writePly(V, faces, mesh.binary);
-    var normals = base.internal.faceNormals(V, faces);
-    return mesh.binary ? writeStlBinary(V, faces, normals) : writeStlAscii(V, faces, normals);
+  /** Turn over every list of a face row with a whole number of items per corner. */
+  function turnLists(items, lists, want) {
+    var corners = lists.filter(function (l) { return l.name === want; })[0].n;
+    lists.forEach(function (l) {
+      if (l.n && corners >= 3 && l.n % corners === 0) {
+        var turned = reversedCorners(items.slice(l.at, l.at + l.n), l.n / corners);
+        for (var i = 0; i < l.n; i++) items[l.at + i] = turned[i];
+      }
+    });
   }
 
-  return { fixWinding: fixWinding, write: write, repr: repr };
+  function turnPly(mesh, flags) {
+    var layout = base.plyLayout, bytes = mesh.bytes;
+    var head = layout.header(bytes, mesh.name);
+    var els = head.elements, faceAt = 0;
+    while (els[faceAt].name !== "face") faceAt++;
+    var face = els[faceAt], want = layout.faceListName(face);
+    if (head.fmt === "ascii") {
+      var doc = decode(bytes.subarray(head.bodyStart));
+      var before = 0;
+      for (var e = 0; e < faceAt; e++) before += els[e].count;
+      for (var r = 0; r < flags.length; r++) {
+        if (!flags[r]) continue;
+        var line = doc.lines[before + r], where = spans(line[0]), toks = base.internal.tokens(line[0]);
+        var lists = [], t = 0;
+        face.props.forEach(function (p) {
+          if (p.count === null) { t += 1; return; }
+          var n = base.internal.pyInt(toks[t]);
+          lists.push({ name: p.name, at: t + 1, n: n });
+          t += 1 + n;
+        });
+        turnLists(toks, lists, want);
+        doc.lines[before + r] = [replaced(line[0], where, toks), line[1]];
+      }
+      return encode(doc, bytes.subarray(0, head.bodyStart));
+    }
+    var little = head.fmt === "binary_little_endian";
+    var view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    var out = new Uint8Array(bytes);
+    var pos = head.bodyStart;
+    function skip(el, rows) {
+      if (layout.isFixed(el)) {
+        var size = 0;
+        el.props.forEach(function (p) { size += p.type[1]; });
+        pos += rows * size;
+        return;
+      }
+      for (var i = 0; i < rows; i++) {
+        el.props.forEach(function (p) {
+          if (p.count === null) { pos += p.type[1]; return; }
+          var n = view["get" + p.count[0]](pos, little);
+          pos += p.count[1] + n * p.type[1];
+        });
+      }
+    }
+    for (e = 0; e < faceAt; e++) skip(els[e], els[e].count);
+    var row = 0;
+    for (r = 0; r < flags.length; r++) {
+      if (!flags[r]) continue;
+      skip(face, r - row);
+      row = r;
+      var at = pos, rowLists = [];
+      face.props.forEach(function (p) {
+        if (p.count === null) { at += p.type[1]; return; }
+        var n = view["get" + p.count[0]](at, little);
+        at += p.count[1];
+        rowLists.push({ name: p.name, start: at, n: n, size: p.type[1] });
+        at += n * p.type[1];
+      });
+      var corners = rowLists.filter(function (l) { return l.name === want; })[0].n;
+      rowLists.forEach(function (l) {
+        if (!(l.n && corners >= 3 && l.n % corners === 0)) return;
+        var items = [];
+        for (var i = 0; i < l.n; i++) items.push(bytes.slice(l.start + l.size * i, l.start + l.size * (i + 1)));
+        reversedCorners(items, l.n / corners).forEach(function (item, j) { out.set(item, l.start + l.size * j); });
+      });
+    }
+    return out;
+  }
+
+  // ------------------------------------------------------------------ stored normals (io/stored.py)
+
+  /** Each face's stored normal (3 numbers a face), or null when the file stores none. */
+  function storedNormals(mesh) {
+    var np = mesh.polygons, out = new Float64Array(3 * np), i, k;
+    var I = base.internal;
+    if (mesh.format === "stl" && mesh.binary) {
+      var view = new DataView(mesh.bytes.buffer, mesh.bytes.byteOffset, mesh.bytes.byteLength);
+      for (i = 0; i < np; i++) for (k = 0; k < 3; k++) out[3 * i + k] = view.getFloat32(84 + 50 * i + 4 * k, true);
+      return out;
+    }
+    var lines = decode(mesh.bytes).lines;
+    if (mesh.format === "stl") {
+      var facet = 0, current = [0, 0, 0];
+      lines.forEach(function (l) {
+        var toks = I.tokens(l[0]), kw = toks.length ? toks[0].toLowerCase() : "";
+        if (kw === "facet") {
+          current = [0, 0, 0];
+          if (toks.length >= 5 && toks[1].toLowerCase() === "normal") {
+            var xyz = [I.pyFloat(toks[2]), I.pyFloat(toks[3]), I.pyFloat(toks[4])];
+            if (xyz.indexOf(undefined) < 0) current = xyz;
+          }
+        } else if (kw === "endloop") {
+          out.set(current, 3 * facet++);
+          current = [0, 0, 0];
+        }
+      });
+      return out;
+    }
+    if (mesh.format === "ply") {
+      var vn = mesh.vertex_normals;
+      if (!vn) return null;
+      for (i = 0; i < mesh.source.length; i++) {
+        for (k = 0; k < 3; k++) {
+          var c0 = mesh.faces[3 * i], c1 = mesh.faces[3 * i + 1], c2 = mesh.faces[3 * i + 2];
+          out[3 * mesh.source[i] + k] += vn[3 * c0 + k] + vn[3 * c1 + k] + vn[3 * c2 + k];
+        }
+      }
+      return out;
+    }
+    var normals = [], face = -1, pending = "";
+    lines.forEach(function (l) {
+      var raw = l[0];
+      if (raw.charAt(raw.length - 1) === "\\") {
+        pending += raw.slice(0, -1) + " ";
+        return;
+      }
+      var line = pending + raw;
+      pending = "";
+      var hash = line.indexOf("#");
+      var toks = I.tokens(hash < 0 ? line : line.slice(0, hash));
+      if (!toks.length) return;
+      if (toks[0] === "vn" && toks.length >= 4) {
+        var n3 = [I.pyFloat(toks[1]), I.pyFloat(toks[2]), I.pyFloat(toks[3])];
+        normals.push(n3.indexOf(undefined) < 0 ? n3 : [0, 0, 0]);
+      } else if (toks[0] === "f" || toks[0] === "fo") {
+        face++;
+        var total = [0, 0, 0];
+        for (var t = 1; t < toks.length; t++) {
+          var refs = toks[t].split("/");
+          var j = refs.length >= 3 ? I.pyInt(refs[2]) : undefined;
+          var at = typeof j !== "number" || j === 0 ? -1 : j > 0 ? j - 1 : normals.length + j;
+          if (at < 0 || at >= normals.length) {
+            total = [0, 0, 0];
+            break;
+          }
+          for (k = 0; k < 3; k++) total[k] += normals[at][k];
+        }
+        out.set(total, 3 * face);
+      }
+    });
+    return normals.length ? out : null;
+  }
+
+  /**
+   * How many faces' stored normals point against the winding of `faces` (io/stored.py's
+   * against); `turned` (flags) are faces a fix turned over, whose STL normals are recomputed.
+   * null when the file stores no normals.
+   */
+  function normalsAgainst(mesh, faces, turned) {
+    var normals = storedNormals(mesh);
+    if (!normals) return null;
+    var V = mesh.vertices, area = new Float64Array(3 * mesh.polygons);
+    for (var t = 0; t < mesh.source.length; t++) {
+      var a = 3 * faces[3 * t], b = 3 * faces[3 * t + 1], c = 3 * faces[3 * t + 2];
+      var ux = V[b] - V[a], uy = V[b + 1] - V[a + 1], uz = V[b + 2] - V[a + 2];
+      var vx = V[c] - V[a], vy = V[c + 1] - V[a + 1], vz = V[c + 2] - V[a + 2];
+      var p = 3 * mesh.source[t];
+      area[p] += uy * vz - uz * vy;
+      area[p + 1] += uz * vx - ux * vz;
+      area[p + 2] += ux * vy - uy * vx;
+    }
+    var count = 0;
+    for (var f = 0; f < mesh.polygons; f++) {
+      var dot = area[3 * f] * normals[3 * f] + area[3 * f + 1] * normals[3 * f + 1] + area[3 * f + 2] * normals[3 * f + 2];
+      if (dot < 0 && !(turned && turned[f] && mesh.format === "stl")) count++;
+    }
+    return count;
+  }
+
+  /**
+   * The file the mesh was read from with the faces `faces` turns over turned over, byte for
+   * byte as trinormal.mesh.write_mesh writes a read model back (trinormal/mesh/io/rewrite.py):
+   * everything else in the file stays; an STL facet turned over gets its normal recomputed.
+   * A Uint8Array.
+   */
+  function write(mesh, faces) {
+    var turned = turnedPolygons(mesh, faces);
+    if (!turned.any) return new Uint8Array(mesh.bytes);
+    if (mesh.format === "obj") {
+      var doc = decode(mesh.bytes);
+      turnObj(doc.lines, turned.flags);
+      return encode(doc, new Uint8Array(0));
+    }
+    if (mesh.format === "ply") return turnPly(mesh, turned.flags);
+    var normalOf = normalsOf(mesh, faces, turned.flags);
+    if (mesh.binary) return turnStlBinary(mesh, turned.flags, normalOf);
+    doc = decode(mesh.bytes);
+    turnStlAscii(doc.lines, turned.flags, normalOf);
+    return encode(doc, new Uint8Array(0));
+  }
+
+  return {
+    fixWinding: fixWinding,
+    write: write,
+    repr: repr,
+    normalsAgainst: function (mesh, faces, fixed) {
+      return normalsAgainst(mesh, faces, fixed ? turnedPolygons(mesh, faces).flags : null);
+    },
+  };
 });

@@ -4,10 +4,10 @@ The readers keep a file exactly as stored, because the report must talk about
 the file the student has:
 
 * OBJ and PLY: every vertex in file order, none merged or dropped; every face
-  in file order. A polygon with n corners becomes n − 2 triangles, a fan from
-  its first corner, wound as stored: ``(a, b, c, d)`` gives ``(a, b, c)`` and
-  ``(a, c, d)``. `MeshData.source_faces` says which polygon each triangle
-  came from.
+  in file order. A polygon with n corners becomes n − 2 triangles, split by
+  ear clipping in its plane (`trinormal.mesh.polygons`), wound as stored: a
+  convex ``(a, b, c, d)`` gives ``(a, b, c)`` and ``(a, c, d)``.
+  `MeshData.source_faces` says which polygon each triangle came from.
 * STL stores each triangle's three corners as coordinates, not as shared
   vertices. Corners with exactly equal coordinates become one vertex (exact
   equality, never a tolerance: ``-0.0`` equals ``0.0``), numbered in order of
@@ -15,7 +15,8 @@ the file the student has:
   the same model saved as OBJ.
 
 A file that cannot be read raises `MeshFileError`, one sentence naming the
-file and, in a text file, the line.
+file and, in a text file, the line. `write_mesh` of a read model writes its
+file back with only the faces a fix turns over changed (`rewrite`).
 
 One module per format, as three.js has one loader per format: `obj`, `stl`
 and `ply` each read and write their format; `mesh_data` holds what they
@@ -53,6 +54,7 @@ from trinormal.mesh.io.errors import OTHER_ERRORS, READ_ERRORS, READ_NOTES, Mesh
 from trinormal.mesh.io.mesh_data import MeshData
 from trinormal.mesh.io.obj import _encode_obj, _read_obj
 from trinormal.mesh.io.ply import _encode_ply, _read_ply
+from trinormal.mesh.io.rewrite import _rewrite
 from trinormal.mesh.io.stl import _encode_stl, _read_stl
 
 __all__ = [
@@ -209,28 +211,39 @@ def _format_of(name: str, format: str | None) -> str:
 
 def write_mesh(
     path: str | os.PathLike[str],
-    vertices: npt.ArrayLike,
-    faces: npt.ArrayLike,
+    vertices: npt.ArrayLike | MeshData,
+    faces: npt.ArrayLike | None = None,
     format: str | None = None,
     encoding: str | None = None,
 ) -> None:
-    """Write a triangle mesh as OBJ, STL or PLY.
+    """Write a triangle mesh as OBJ, STL or PLY, or a file read by `read_mesh` back.
 
     Parameters
     ----------
     path : str or path-like
         The file to write.
-    vertices : array_like, shape (V, 3)
-        Vertex coordinates.
+    vertices : array_like, shape (V, 3), or MeshData
+        Vertex coordinates; or a model `read_mesh` read, to write back.
     faces : array_like of int, shape (F, 3)
-        Vertex indices of each triangle.
+        Vertex indices of each triangle. For a read model: its ``faces`` with
+        some turned over (as `fix_winding` returns them); by default as read.
     format : {"obj", "stl", "ply"}, optional
         By default the file's extension.
     encoding : {"binary", "ascii"}, optional
-        For STL and PLY; binary by default. OBJ is always text.
+        For STL and PLY; binary by default (a read model: its own). OBJ is always text.
 
     Notes
     -----
+    A read model written in its own format is its file with faces turned over,
+    nothing else (`trinormal.mesh.io.rewrite`): comments, groups, materials,
+    texture coordinates, normals, colours, polygons, PLY properties, STL headers
+    and attribute bytes stay, in their order; only the records of the faces
+    turned over change (a polygon's corners, each with its own references, in
+    reverse order after the first; an STL facet's stored normal, recomputed).
+    With nothing turned over the file is written back byte for byte. In another
+    format, only the vertices and triangles are written, as below.
+
+
     Text formats write every coordinate with the shortest decimal that reads
     back as the same float64, so reading the file gives the same numbers. A
     binary STL holds float32 coordinates (the format has nothing else); a
@@ -247,6 +260,15 @@ def write_mesh(
     """
     name = os.fspath(path)
     fmt = _format_of(name, format)
+    if isinstance(vertices, MeshData):
+        model = vertices
+        f = model.faces if faces is None else _check_faces(faces, model.vertices.shape[0])
+        if fmt == model.format and encoding in (None, model.encoding):
+            _save(name, _rewrite(model, f))
+            return
+        vertices, faces = model.vertices, f
+    if faces is None:
+        raise ValueError("write_mesh needs faces with vertices")
     enc = encoding or ENCODINGS[fmt][0]
     if enc not in ENCODINGS[fmt]:
         raise MeshFileError.of(
@@ -258,7 +280,10 @@ def write_mesh(
         )
     v, _ = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
-    data = _encode(v, f, fmt, enc)
+    _save(name, _encode(v, f, fmt, enc))
+
+
+def _save(name: str, data: bytes | bytearray) -> None:
     try:
         with open(name, "wb") as fh:
             fh.write(data)

@@ -71,6 +71,7 @@ READ_ERRORS: dict[str, str] = {
     "ply_too_many": "this '{element}' row has {count} values too many",
     "ply_binary_short": "the file ends inside the '{element}' element ({rows} of {count} rows)",
     "ply_binary_row": "the file ends inside '{element}' row {row} of {count}",
+    "ply_negative": "'{element}' row {row} gives a list {count} items: a count is never negative",
 }
 
 #: What a reader says of a file it reads although it breaks its format where the format

@@ -1,17 +1,22 @@
-"""What a reader returns: `MeshData`, with polygons split into triangles as a fan.
+"""What a reader returns: `MeshData`, with polygons split into triangles in their planes.
 
-A polygon with n corners becomes n − 2 triangles, a fan from its first corner,
-wound as stored: ``(a, b, c, d)`` gives ``(a, b, c)`` and ``(a, c, d)``.
-`MeshData.source_faces` says which polygon each triangle came from.
+A polygon with n corners becomes n − 2 triangles, wound as stored, by ear
+clipping in the polygon's plane (`trinormal.mesh.polygons`): a convex polygon
+``(a, b, c, d)`` gives the fan ``(a, b, c)``, ``(a, c, d)``; a concave one is
+covered exactly. `MeshData.source_faces` says which polygon each triangle came
+from. `MeshData.source` keeps the file's bytes, so that `write_mesh` can write
+the file back as it was, with only the faces the fix turns over changed.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from trinormal.mesh._arrays import FloatArray, IntArray
+from trinormal.mesh.polygons import Split, split_polygons
 
 __all__ = ["MeshData"]
 
@@ -25,7 +30,7 @@ class MeshData:
     vertices : ndarray, shape (V, 3)
         Coordinates in float64, in file order (STL: in order of first use).
     faces : ndarray of int, shape (F, 3)
-        Triangles, in file order; polygons split into fans.
+        Triangles, in file order; polygons split in their planes (`trinormal.mesh.polygons`).
     format : str
         ``"obj"``, ``"stl"`` or ``"ply"``.
     encoding : str
@@ -42,6 +47,25 @@ class MeshData:
         What the reader forgave, one sentence each ("NAME: NOTE", from
         `trinormal.mesh.io.READ_NOTES`): a binary STL whose triangle count
         disagrees with its size, for one. Empty for a file read as it is.
+    source : bytes
+        The file's bytes, as read: what `write_mesh` writes back, with the
+        records of the faces a fix turns over changed and nothing else. A binary
+        STL keeps its 84-byte header and any bytes after its records here, the
+        rest in ``stl_records``.
+    nonplanar : ndarray of int
+        The polygons (faces of the file, from 0) whose corners are not on one
+        plane (`trinormal.tolerances.PLANAR_TOL`): their split is a guess.
+    crossing : ndarray of int
+        The polygons that cross themselves.
+    vertex_normals : ndarray, shape (V, 3), or None
+        A PLY file's ``nx ny nz`` vertex properties, when it has them.
+    stl_records : ndarray or None
+        A binary STL's stored normal and attribute bytes, a record per triangle, when
+        ``source`` holds only its header and what follows its records (its corners are
+        ``vertices[faces]``, exactly): a binary STL keeps 14 bytes a triangle, not 50.
+    stl_against : ndarray of int or None
+        With ``stl_records``: the facets whose stored normal points against their
+        winding as read (`normals_against`).
     """
 
     vertices: FloatArray = field(repr=False)
@@ -52,6 +76,18 @@ class MeshData:
     n_polygons: int
     path: str
     notes: tuple[str, ...] = ()
+    source: bytes = field(default=b"", repr=False)
+    nonplanar: IntArray = field(default_factory=lambda: _none(), repr=False)
+    crossing: IntArray = field(default_factory=lambda: _none(), repr=False)
+    stl_records: Any = field(default=None, repr=False)
+    stl_against: IntArray | None = field(default=None, repr=False)
+    vertex_normals: FloatArray | None = field(default=None, repr=False)
+
+    @property
+    def corners(self) -> IntArray:
+        """How many corners each face of the file has, shape (P,)."""
+        out: IntArray = np.bincount(self.source_faces, minlength=self.n_polygons) + 2
+        return out
 
     @property
     def split_polygons(self) -> int:
@@ -61,62 +97,108 @@ class MeshData:
         counts = np.bincount(self.source_faces, minlength=self.n_polygons)
         return int((counts > 1).sum())
 
+    def normals_against(self, faces: IntArray | None = None) -> IntArray | None:
+        r"""Return the faces whose stored normals point against the winding (None: none stored).
+
+        Parameters
+        ----------
+        faces : ndarray of int, shape (F, 3), optional
+            The triangles as wound: by default as read; after a fix, the fixed ones, and
+            then, as `write_mesh` writes the file, an STL facet turned over has a
+            recomputed normal and agrees (`trinormal.mesh.io.stored`).
+
+        Examples
+        --------
+        >>> from trinormal.mesh import parse_mesh, fix_winding
+        >>> m = parse_mesh(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nf 1//1 2//1 3//1\n", "obj")
+        >>> m.normals_against()
+        array([0])
+        """
+        from trinormal.mesh.io.rewrite import _turned_polygons
+        from trinormal.mesh.io.stored import against
+
+        if faces is None:
+            return against(self, self.faces, None)
+        return against(self, faces, _turned_polygons(self, faces))
+
     def describe(self) -> str:
-        r"""Say in one sentence: what was read, and how polygons were split.
+        r"""Say in one sentence what was read: vertices, faces, and polygons and triangles.
 
         Examples
         --------
         >>> from trinormal.mesh import parse_mesh
         >>> m = parse_mesh(b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", "obj")
+        >>> print(m.describe())
+        Read <bytes> (OBJ): 4 vertices, 1 quad, 2 triangles.
+        >>> m = parse_mesh(b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 1\nf 1 2 3 4\n", "obj")
         >>> print(m.describe())  # doctest: +NORMALIZE_WHITESPACE
-        Read <bytes> (OBJ): 4 vertices, 1 face; 1 polygon with more than three corners split
-        into 2 triangles, a fan from its first corner.
+        Read <bytes> (OBJ): 4 vertices, 1 quad, 2 triangles; 1 quad is not planar: its
+        triangles are one of several surfaces through its corners.
         """
         nv, np_ = self.vertices.shape[0], self.n_polygons
         enc = "" if self.format == "obj" else f", {self.encoding}"
-        text = (
-            f"Read {self.path} ({self.format.upper()}{enc}): "
-            f"{nv} {'vertex' if nv == 1 else 'vertices'}, {np_} {'face' if np_ == 1 else 'faces'}"
-        )
-        k = self.split_polygons
-        if k:
-            tri = int(np.isin(self.source_faces, _multi(self.source_faces, np_)).sum())
-            text += (
-                f"; {k} {'polygon' if k == 1 else 'polygons'} with more than three corners "
-                f"split into {tri} triangles, a fan from {'its' if k == 1 else 'each'} first corner"
+        text = f"Read {self.path} ({self.format.upper()}{enc}): {nv} {_plural(nv, 'vertex')}"
+        nf = self.faces.shape[0]
+        if nf == np_:
+            return text + f", {np_} {_plural(np_, 'face')}." + self._normals_sentence()
+        corners = self.corners
+        noun = "quad" if corners.size and (corners == 4).all() else "polygon"
+        text += f", {np_:,} {_plural(np_, noun)}, {nf:,} {_plural(nf, 'triangle')}"
+        odd = []
+        if self.nonplanar.size:
+            k = self.nonplanar.size
+            odd.append(f"{k:,} {_plural(k, noun)} {'is' if k == 1 else 'are'} not planar")
+        if self.crossing.size:
+            k = self.crossing.size
+            odd.append(
+                f"{k:,} {_plural(k, noun)} {'crosses itself' if k == 1 else 'cross themselves'}"
             )
-        return text + "."
+        if odd:
+            k = self.nonplanar.size + self.crossing.size
+            text += (
+                f"; {' and '.join(odd)}: {'its' if k == 1 else 'their'} triangles are one of "
+                "several surfaces through "
+                f"{'its' if k == 1 else 'their'} corners"
+            )
+        return text + "." + self._normals_sentence()
+
+    def _normals_sentence(self) -> str:
+        bad = self.normals_against()
+        if bad is None or bad.size == 0:
+            return ""
+        k = bad.size
+        return (
+            f" The stored normals of {k:,} {_plural(k, 'face')} point against "
+            f"{'its' if k == 1 else 'their'} winding."
+        )
 
 
-def _multi(source: IntArray, n: int) -> IntArray:
-    counts = np.bincount(source, minlength=n)
-    out: IntArray = np.flatnonzero(counts > 1)
-    return out
+def _plural(n: int, noun: str) -> str:
+    if n == 1:
+        return noun
+    return "vertices" if noun == "vertex" else noun + "s"
 
 
-def _fan(polys: list[list[int]]) -> tuple[IntArray, IntArray]:
-    """Split polygons into triangles: a fan from each one's first corner, in order."""
-    if not polys:
-        return np.empty((0, 3), np.intp), np.empty(0, np.intp)
+def _none() -> IntArray:
+    return np.empty(0, dtype=np.intp)
+
+
+def _split(vertices: FloatArray, polys: list[list[int]] | IntArray) -> tuple[Split, IntArray]:
+    """Split the polygons (a list of corner lists, or a (P, n) table) in their planes.
+
+    Returns the split and each polygon's number of corners.
+    """
+    if isinstance(polys, np.ndarray):
+        sizes = np.full(polys.shape[0], polys.shape[1], dtype=np.intp)
+        return split_polygons(vertices, polys.astype(np.intp).ravel(), sizes), sizes
     sizes = np.fromiter((len(p) for p in polys), dtype=np.intp, count=len(polys))
-    if sizes.size and (sizes == 3).all():
-        return np.array(polys, dtype=np.intp).reshape(-1, 3), np.arange(len(polys), dtype=np.intp)
-    n_tri = sizes - 2
-    source = np.repeat(np.arange(len(polys), dtype=np.intp), n_tri)
     flat = np.fromiter((i for p in polys for i in p), dtype=np.intp, count=int(sizes.sum()))
-    start = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.intp)
-    k = np.arange(source.size) - np.repeat(np.cumsum(n_tri) - n_tri, n_tri)  # 0 .. n-3
-    first = start[source]
-    faces = np.stack([flat[first], flat[first + k + 1], flat[first + k + 2]], axis=1)
-    return faces.astype(np.intp).reshape(-1, 3), source
+    return split_polygons(vertices, flat, sizes), sizes
 
 
-def _fan_uniform(polys: IntArray) -> tuple[IntArray, IntArray]:
-    """`_fan` for polygons that all have the same number of corners, shape (P, n)."""
-    p, n = polys.shape
-    k = np.arange(n - 2)
-    faces = np.stack(
-        [np.repeat(polys[:, :1], n - 2, axis=1), polys[:, k + 1], polys[:, k + 2]], axis=2
-    )
-    source = np.repeat(np.arange(p, dtype=np.intp), n - 2)
-    return faces.reshape(-1, 3).astype(np.intp), source
+def _polygon_fields(split: Split, sizes: IntArray) -> dict[str, Any]:
+    """Return the `MeshData` fields that say what the split found."""
+    return {
+        "nonplanar": np.flatnonzero(split.nonplanar).astype(np.intp),
+        "crossing": np.flatnonzero(split.crossing).astype(np.intp),
+    }

@@ -15,7 +15,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import MeshFileError, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _fan
+from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
 
 # OBJ statements that carry no triangle (texture, normals, grouping, materials, curves)
 _OBJ_IGNORED = frozenset(
@@ -34,7 +34,7 @@ _MAX_TOKEN = 40
 
 
 def _read_obj(data: bytes, name: str) -> MeshData:
-    """Read OBJ text; polygons become fans (`_fan`).
+    """Read OBJ text; polygons are split in their planes (`_split`).
 
     A file of plain lines only is read in one go by `_read_plain`; any other
     file, and every file with an error, line by line by `_read_lines`, which
@@ -45,7 +45,8 @@ def _read_obj(data: bytes, name: str) -> MeshData:
         return _read_lines(data, name)
     vertices, faces = plain
     nf = faces.shape[0]
-    return MeshData(vertices, faces, "obj", "ascii", np.arange(nf, dtype=np.intp), nf, name)
+    source = np.arange(nf, dtype=np.intp)
+    return MeshData(vertices, faces, "obj", "ascii", source, nf, name, source=data)
 
 
 def _read_plain(data: bytes) -> tuple[FloatArray, IntArray] | None:
@@ -268,8 +269,11 @@ def _read_lines(data: bytes, name: str) -> MeshData:
                 vertices=_vertices(nv),
             )
     vertices = np.array(coords, dtype=np.float64).reshape(-1, 3)
-    faces, source = _fan(polys)
-    return MeshData(vertices, faces, "obj", "ascii", source, len(polys), name)
+    split, sizes = _split(vertices, polys)
+    fields = _polygon_fields(split, sizes)
+    return MeshData(
+        vertices, split.faces, "obj", "ascii", split.source, len(polys), name, source=data, **fields
+    )
 
 
 def _is_float(tok: str) -> bool:

@@ -7,10 +7,11 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_ERRORS, MeshFileError, _number, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _fan, _fan_uniform
+from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
 
 #: The PLY property types, by both their names, as numpy type codes.
 _PLY_TYPES = {
@@ -52,9 +53,25 @@ def _read_ply(data: bytes, name: str) -> MeshData:
     if not np.isfinite(vertices).all():
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
         raise MeshFileError.of(name, "ply_not_finite", vertex=bad)
-    polys: list[list[int]] | IntArray = values.get("face", {}).get("_polys", [])
-    faces, source, n_polys = _ply_faces(polys, vertices.shape[0], name)
-    return MeshData(vertices, faces, "ply", encoding, source, n_polys, name)
+    polys: list[list[Any]] | npt.NDArray[Any] = values.get("face", {}).get("_polys", [])
+    normals = None
+    if all(k in vdata for k in ("nx", "ny", "nz")):
+        normals = np.stack([np.asarray(vdata[k], dtype=np.float64) for k in ("nx", "ny", "nz")], 1)
+    polys = _ply_faces(polys, vertices.shape[0], name)
+    split, sizes = _split(vertices, polys)
+    fields = _polygon_fields(split, sizes)
+    return MeshData(
+        vertices,
+        split.faces,
+        "ply",
+        encoding,
+        split.source,
+        len(sizes),
+        name,
+        source=data,
+        vertex_normals=normals,
+        **fields,
+    )
 
 
 def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
@@ -84,7 +101,7 @@ def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
                 raise MeshFileError.of(name, "ply_format", lineno)
             fmt = toks[1]
         elif toks[0] == "element":
-            if len(toks) != 3 or not toks[2].isdigit():
+            if len(toks) != 3 or not (toks[2].isascii() and toks[2].isdigit()):  # not '²' '٣'
                 raise MeshFileError.of(name, "ply_element", lineno)
             elements.append(_Element(toks[1], int(toks[2]), [], lineno))
         elif toks[0] == "property":
@@ -114,32 +131,38 @@ def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
 
 
 def _ply_faces(
-    polys: list[list[int]] | IntArray, nv: int, name: str
-) -> tuple[IntArray, IntArray, int]:
-    """Check the face lists against the ``nv`` vertices and split them into fans.
+    polys: list[list[Any]] | npt.NDArray[Any], nv: int, name: str
+) -> list[list[int]] | IntArray:
+    """Check the face lists against the ``nv`` vertices: three corners or more, each in range.
 
-    Returns the triangles, the face each comes from, and the number of faces.
+    Returns them as integers: a list of a float type must hold whole numbers (a vertex 1.5
+    is out of range).
     """
     if isinstance(polys, np.ndarray):  # every face has the same number of corners
         if polys.shape[1] < 3:
             raise MeshFileError.of(name, "ply_corners", face=0, count=polys.shape[1])
-        out_of_range = (polys < 0) | (polys >= nv)
+        out_of_range = (polys < 0) | (polys >= nv) | (polys != np.floor(polys))
         if out_of_range.any():
             row = int(np.flatnonzero(out_of_range.any(axis=1))[0])
-            _ply_range_error(name, row, int(polys[row][out_of_range[row]][0]), nv)
-        faces, source = _fan_uniform(polys)
-        return faces, source, polys.shape[0]
+            _ply_range_error(name, row, polys[row][out_of_range[row]][0].item(), nv)
+        table: IntArray = polys.astype(np.intp)
+        return table
     for row, poly in enumerate(polys):
         if len(poly) < 3:
             raise MeshFileError.of(name, "ply_corners", face=row, count=len(poly))
-        outside = [i for i in poly if not 0 <= i < nv]
+        outside = [i for i in poly if not (0 <= i < nv and float(i).is_integer())]
         if outside:
             _ply_range_error(name, row, outside[0], nv)
-    faces, source = _fan(polys)
-    return faces, source, len(polys)
+    return (
+        [[int(i) for i in p] for p in polys]
+        if any(isinstance(i, float) for p in polys[:1] for i in p)
+        else polys
+    )
 
 
-def _ply_range_error(name: str, k: int, index: int, nv: int) -> None:
+def _ply_range_error(name: str, k: int, index: float, nv: int) -> None:
+    if isinstance(index, float) and index.is_integer():
+        index = int(index)  # a whole number from a float list, written as the page writes it
     valid = READ_ERRORS["ply_valid"].format(last=nv - 1) if nv else READ_ERRORS["ply_no_vertices"]
     raise MeshFileError.of(name, "ply_index_range", face=k, index=index, valid=valid)
 
@@ -190,13 +213,13 @@ def _ply_ascii(
                 toks = row.split()
                 lineno = first_line + pos + r
                 t = 0
-                for pname, _ptype, ctype in el.props:
+                for pname, ptype, ctype in el.props:
                     try:
                         if ctype is None:
                             t += 1
                             continue
                         n = int(toks[t])
-                        items = [int(x) for x in toks[t + 1 : t + 1 + n]]
+                        items = _ascii_list(toks[t + 1 : t + 1 + n], ptype, pname == want)
                         if len(items) != n or n < 0:
                             raise IndexError
                     except (ValueError, IndexError):
@@ -211,6 +234,18 @@ def _ply_ascii(
             out[el.name] = {"_polys": polys}
         pos += el.count
     return out
+
+
+def _ascii_list(toks: list[str], ptype: str, indices: bool) -> list[Any]:
+    """Read a list property's items: numbers of its type; vertex indices must be whole."""
+    if ptype not in ("f4", "f8"):
+        return [int(x) for x in toks]
+    values = [float(x) for x in toks]
+    if not indices:
+        return values
+    if not all(x.is_integer() for x in values):
+        raise ValueError("a vertex index that is not a whole number")
+    return [int(x) for x in values]
 
 
 def _ply_bad_row(rows: list[str], k: int, first: int, name: str) -> None:
@@ -266,6 +301,8 @@ def _ply_binary_lists(
                 p += np.dtype(ptype).itemsize
             else:
                 (n,) = struct.unpack_from(order + _STRUCT[ctype], data, p)
+                if n < 0:
+                    raise struct.error  # a negative count: the rows one by one find the error
                 fields.append((pname + "#n", order + ctype))
                 fields.append((pname, order + ptype, (n,)))
                 p += np.dtype(ctype).itemsize + n * np.dtype(ptype).itemsize
@@ -276,7 +313,7 @@ def _ply_binary_lists(
                 (arr[p[0] + "#n"] == dt[p[0]].shape[0]).all() for p in el.props if p[2] is not None
             )
             if uniform:
-                table = arr[want].astype(np.intp) if want else np.empty((0, 3), np.intp)
+                table = arr[want] if want else np.empty((0, 3), np.intp)
                 return table, pos + dt.itemsize * el.count
     except struct.error:
         pass
@@ -290,6 +327,10 @@ def _ply_binary_lists(
                         raise struct.error
                     continue
                 (n,) = struct.unpack_from(order + _STRUCT[ctype], data, pos)
+                if n < 0:
+                    raise MeshFileError.of(
+                        name, "ply_negative", element=el.name, row=r, count=n
+                    ) from None
                 pos += np.dtype(ctype).itemsize
                 items = struct.unpack_from(f"{order}{n}{_STRUCT[ptype]}", data, pos)
                 pos += n * np.dtype(ptype).itemsize

@@ -18,6 +18,7 @@ import numpy.typing as npt
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_NOTES, MeshFileError, _number, _show, _text
 from trinormal.mesh.io.mesh_data import MeshData
+from trinormal.mesh.io.stored import _stl_dots
 from trinormal.mesh.normals import face_normals
 
 _STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attr", "<u2")])
@@ -42,11 +43,39 @@ def _read_stl(data: bytes, name: str) -> MeshData:
                 bad = int(np.flatnonzero(~finite)[0])
                 raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
             # float32, as stored: merged before widening
-            merged = _merge_corners(rec["corners"].reshape(-1, 3), name, "binary")
-            return replace(merged, notes=notes)
+            corners = rec["corners"].reshape(-1, 3)
+            merged = _merge_corners(corners, name, "binary")
+            return replace(merged, notes=notes, **_kept(data, rec, corners))
     if not _looks_like_text(data):
         raise MeshFileError.of(name, "stl_short")
     return _read_stl_ascii(data, name)
+
+
+#: A binary STL record's stored normal and attribute bytes, as raw bytes.
+_KEPT = np.dtype([("normal", "<f4", (3,)), ("attr", "V2")])
+
+
+def _kept(data: bytes, rec: Any, corners: Any) -> dict[str, Any]:
+    """Keep what `write_mesh` needs to write a binary STL back (source, stl_records).
+
+    Its corners are the read vertices, exactly, unless one is -0.0 (read as 0.0): then
+    the whole file is kept; else its header and trailing bytes, and each record's
+    normal and attribute bytes (14 bytes of 50). The facets whose stored normal points
+    against their winding are found here, from the records in file order.
+    """
+    n = rec.shape[0]
+    if np.signbit(corners[corners == 0]).any():
+        return {"source": data}
+    raw = np.frombuffer(data, dtype=np.uint8, count=50 * n, offset=84).reshape(n, 50)
+    kept = np.empty((n, 14), dtype=np.uint8)  # plain byte columns copy fast
+    kept[:, :12], kept[:, 12:] = raw[:, :12], raw[:, 48:]
+    kept_records = kept.view(_KEPT).reshape(n)
+    against = np.flatnonzero(_stl_dots(data, n, kept_records["normal"].astype(np.float64)) < 0)
+    return {
+        "source": data[:84] + data[84 + 50 * n :],
+        "stl_records": kept_records,
+        "stl_against": against.astype(np.intp),
+    }
 
 
 def _looks_like_text(data: bytes) -> bool:
@@ -114,7 +143,7 @@ def _read_stl_ascii(data: bytes, name: str) -> MeshData:
     if in_loop:
         raise MeshFileError.of(name, "stl_ends_in_facet", lineno)
     arr = np.array(corners, dtype=np.float64).reshape(-1, 3)
-    return _merge_corners(arr, name, "ascii")
+    return replace(_merge_corners(arr, name, "ascii"), source=data)
 
 
 #: Odd 64-bit multipliers that mix a corner's three bit patterns into one sort key.
@@ -164,7 +193,8 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
     vertices[rank] = corners[first]
     faces = index.reshape(-1, 3)
     nf = faces.shape[0]
-    return MeshData(vertices, faces, "stl", encoding, np.arange(nf, dtype=np.intp), nf, name)
+    source = np.arange(nf, dtype=np.intp)
+    return MeshData(vertices, faces, "stl", encoding, source, nf, name)
 
 
 def _same_as_previous(rows: npt.NDArray[np.unsignedinteger[Any]]) -> npt.NDArray[np.bool_]:
