@@ -30,6 +30,7 @@ from typing import Any
 
 from trinormal.core import TriangleNormal, Winding, triangle_normal
 from trinormal.display import exact_literals, format_number
+from trinormal.explorer.describe import describe
 from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
 from trinormal.explorer.state import coordinate_text, exact_value, view_state
@@ -506,6 +507,33 @@ class Explorer:
     def alt_text(self) -> str:
         """A sentence describing the current state, for screen readers and static pages."""
         return alt_text(self.result, self._precision)
+
+    def describe(self, viewer: Iterable[float] | None = None) -> str:
+        """Say in one line which way N points, and what a viewer sees: the view's description.
+
+        Parameters
+        ----------
+        viewer : sequence of 3 float, optional
+            The direction from the triangle towards the viewer, such as ``(0, 0, 1)``
+            (looking down the z axis, as the view's *z* button does). Without it: what
+            is seen from the triangle's front.
+
+        Returns
+        -------
+        str
+            The sentences of ``trinormal.explorer.describe``, the rule the 3D view
+            writes under the picture.
+
+        Examples
+        --------
+        >>> ex = Explorer()
+        >>> ex.describe()
+        'N points straight up, along +z. From its front (the side N points to), A→B→C turns counter-clockwise.'
+        >>> ex.set(winding="ACB")
+        >>> ex.describe(viewer=(0, 0, 1))
+        'N points straight down, along −z. You see the back of the triangle (N points away from you), and A→C→B turns clockwise.'
+        """  # noqa: E501
+        return describe(self.result, None if viewer is None else tuple(viewer))
 
     # ------------------------------------------------------------------ display
 
