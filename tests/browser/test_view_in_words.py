@@ -4,7 +4,7 @@ One page load of the calculator, as a screen-reader user works: the accessibilit
 the toolbar, its buttons, the view and its description; Tab and Enter look down the z axis;
 Tab reaches vertex C and the arrow keys move it across the line AB, and the live description
 (the same words as ``trinormal.explorer.describe`` in Python) changes once per key press, within
-half a second, from the front to the back; Listen plays U, V and N as tones whose pan, pitch and
+half a second, from the front to the back; the arrow keys on the focused view turn the camera underneath; Listen plays U, V and N as tones whose pan, pitch and
 brightness follow the vectors (Web Audio, instrumented here rather than listened to), never
 before it is pressed; the flip turns the back into the front again. With reduced motion the
 view jumps; in forced colours the controls, the focus and the description stay visible; every
@@ -87,7 +87,7 @@ def test_the_calculators_view_is_described_heard_and_driven_by_keyboard(page, se
     # the accessibility tree: a toolbar of named buttons, the view as a group, its description
     tree = page.locator("#tn-view").aria_snapshot()
     for line in ('toolbar "3D view"', 'button "View along the z axis"', 'button "Listen to U, V',
-                 'group "3D view of the triangle ABC and its normal N"', "- status:"):  # fmt: skip
+                 'group "3D view of the triangle ABC and its normal N', "- status:"):  # fmt: skip
         assert line in tree, (line, tree)
     described = page.locator("#tn-view .tnx-stage").get_attribute("aria-describedby")
     assert page.locator(f"#{described}").get_attribute("aria-live") == "polite"
@@ -136,6 +136,12 @@ def test_the_calculators_view_is_described_heard_and_driven_by_keyboard(page, se
     flipped = triangle_normal((0, 0, 0), (1, 0, 0), (0, "-0.1", 0), winding="ACB")
     _said(page, describe(flipped, (0, 0, 1)))
     assert "A→C→B turns counter-clockwise" in describe(flipped, (0, 0, 1))
+
+    # no drag needed to turn the view: Tab to it, the arrow keys take the camera underneath
+    _tab_to(page, "#tn-view .tnx-stage")
+    for _ in range(12):
+        page.keyboard.press("ArrowDown")
+    _said(page, describe(flipped, (0, 0, -1)))
 
     # targets of at least 24 x 24 px; axe-core clean with all of this on the page
     sizes = page.evaluate(

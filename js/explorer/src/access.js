@@ -1,7 +1,8 @@
 /*
  * The explorer for a reader who cannot see the picture: the view described in words under it
  * (describe.js, the rule of trinormal.explorer.describe), in a polite live region that is also
- * the stage's accessible description (aria-describedby), and the Listen button (audio.js).
+ * the stage's accessible description (aria-describedby), the Listen button (audio.js), and the
+ * view turned by keys on the focused stage.
  *
  * The description follows the host's state (a cell, an answered edit, a flip) and the camera
  * (a drag, a key, a view button). It is written once a change settles, SETTLE_MS after the last
@@ -14,6 +15,7 @@ import { injectStyle } from "./style.js";
 import CSS from "./access.css";
 
 const SETTLE_MS = 250;
+const TURN = 15 * (Math.PI / 180); // one arrow key (Shift: three times as far)
 
 let ids = 0;
 
@@ -24,6 +26,33 @@ function viewerOf(view) {
   const c = d.A.clone().add(d.B).add(d.C).divideScalar(3);
   const v = view.stage.camera.position.clone().sub(c);
   return [v.x, v.y, v.z];
+}
+
+/**
+ * Turn the view from the keyboard on the focused stage itself (not on a vertex, whose arrow keys
+ * move it): arrow keys turn, + and − zoom, Home looks from where "Reset view" does. The drag's
+ * alternative for a reader without a pointer (WCAG 2.5.7), as in the mesh view.
+ */
+function turnWithKeys(stageEl, stage) {
+  const onKey = (event) => {
+    if (event.target !== stageEl || event.altKey || event.ctrlKey || event.metaKey) return;
+    const step = event.shiftKey ? 3 * TURN : TURN;
+    const keys = {
+      ArrowLeft: () => stage.turn(-step, 0),
+      ArrowRight: () => stage.turn(step, 0),
+      ArrowUp: () => stage.turn(0, step),
+      ArrowDown: () => stage.turn(0, -step),
+      "+": () => stage.zoom(0.8),
+      "=": () => stage.zoom(0.8),
+      "-": () => stage.zoom(1.25),
+      Home: () => stage.reset(),
+    };
+    if (!keys[event.key]) return;
+    event.preventDefault(); // the page does not scroll
+    keys[event.key]();
+  };
+  stageEl.addEventListener("keydown", onKey);
+  return () => stageEl.removeEventListener("keydown", onKey);
 }
 
 /**
@@ -39,7 +68,10 @@ export function addAccess(view) {
   text.setAttribute("aria-live", "polite");
   stageEl.after(text);
   stageEl.setAttribute("role", "group");
-  stageEl.setAttribute("aria-label", "3D view of the triangle ABC and its normal N");
+  stageEl.setAttribute("aria-label", "3D view of the triangle ABC and its normal N. Arrow keys turn it, + and − zoom, Home resets the view.");
+  stageEl.tabIndex = 0;
+  stageEl.dataset.lmSuppressShortcuts = "true"; // its keys are the view's, not JupyterLab's
+  const stopKeys = turnWithKeys(stageEl, stage);
   setAttr(stageEl, "aria-describedby", text.id);
   stage.canvas.setAttribute("aria-hidden", "true"); // the picture itself: its words are in `text`
 
@@ -69,6 +101,7 @@ export function addAccess(view) {
     clearTimeout(timer);
     for (const key of keys) model.off("change:" + key, schedule);
     stage.controls.removeEventListener("change", schedule);
+    stopKeys();
     listen.dispose();
     text.remove();
   };
