@@ -171,3 +171,16 @@ def test_listen_pans_by_x_pitches_by_y_and_brightens_by_z(tmp_path):
     assert diagonal["frequency"] == pytest.approx(440 * 2 ** (1 / math.sqrt(3)))
     assert huge == right and zero is None
     assert (out["proper"], out["flat"]) == ("UVN", "UV")
+
+
+def test_the_accessibility_pages_example_is_what_the_package_prints():
+    """docs/accessibility.md shows ex.describe() as a session: each line is run and compared."""
+    import doctest
+
+    page = (ROOT / "docs" / "accessibility.md").read_text(encoding="utf-8")
+    sessions = [block for block in page.split("```python\n")[1:] if ">>>" in block]
+    assert sessions, "the page shows no session"
+    for block in sessions:
+        test = doctest.DocTestParser().get_doctest(block.split("```")[0], {}, "page", None, 0)
+        runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+        assert runner.run(test).failed == 0
