@@ -85,8 +85,10 @@ function play(context, tones) {
  * pressed again, it is quiet. state(): the host's state. Returns { changed(), dispose() }.
  */
 export function createListen(bar, state) {
-  const button = element("button", "tnx-button tnx-listen", "♪ Listen");
+  const button = element("button", "tnx-button tnx-listen");
   button.type = "button";
+  // "♪ Listen", or "♪" in a narrow toolbar (the toolbar's own rule for long and short words)
+  button.append(element("span", "tnx-long", "♪ Listen"), element("span", "tnx-short", "♪"));
   const label = "Listen to U, V and N: pan follows x, pitch follows y, brightness follows z";
   button.setAttribute("aria-label", label);
   button.title = label;
