@@ -99,7 +99,7 @@ def test_the_calculators_view_is_described_heard_and_driven_by_keyboard(page, se
     _said(page, describe(r, (0, 0, 1)))
     assert page.evaluate("window.__tones.pan") == []  # nothing plays before Listen is pressed
 
-    # Listen: U, V and N, in order, panned by x, pitched by y
+    # Listen, after the description: U, V and N, in order, panned by x, pitched by y
     _tab_to(page, ".tnx-listen")
     page.keyboard.press("Enter")
     assert page.locator(".tnx-listen").get_attribute("aria-pressed") == "true"
@@ -109,8 +109,8 @@ def test_the_calculators_view_is_described_heard_and_driven_by_keyboard(page, se
     assert _close(tones["pan"], want["pan"]) and _close(tones["frequency"], want["frequency"])
     up_brightness = tones["cutoff"][2]
 
-    # Tab to C, arrow keys: C walks down to (0, 0.1, 0), then one key per change
-    _tab_to(page, '[data-vertex="C"]')
+    # back to C, arrow keys: C walks down to (0, 0.1, 0), then one key per change
+    _tab_to(page, '[data-vertex="C"]', back=True)
     for _ in range(9):
         page.keyboard.press("ArrowDown")
     page.wait_for_function("document.getElementById('cy').value === '0.1'")

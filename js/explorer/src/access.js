@@ -1,5 +1,5 @@
 /*
- * The explorer for a reader who cannot see the picture: the view described in words under it
+ * The explorer for a reader who cannot see the picture: the view described in words beside it
  * (describe.js, the rule of trinormal.explorer.describe), in a polite live region that is also
  * the stage's accessible description (aria-describedby), the Listen button (audio.js), and the
  * view turned by keys on the focused stage.
@@ -56,17 +56,22 @@ function turnWithKeys(stageEl, stage) {
 }
 
 /**
- * Add the description (under the stage) and the Listen button (at the end of the toolbar) to
+ * Add the description and the Listen button (after the readout, beside or under the view) to
  * the explorer `view` (index.js). Returns the function that removes them.
  */
 export function addAccess(view) {
-  const { model, stage, stageEl, toolbarEl } = view;
+  const { model, stage, stageEl } = view;
   injectStyle(stageEl.ownerDocument || document, "trinormal-access-style", CSS);
+  // the words and the sound together: the description, then the Listen button
+  const block = element("div", "tnx-access");
   const text = element("p", "tnx-describe");
   text.id = `tnx-describe-${++ids}`;
   text.setAttribute("role", "status");
   text.setAttribute("aria-live", "polite");
-  stageEl.after(text);
+  // beside the view, after the readout (on a narrow screen: under the view, after the readout),
+  // so the readout's rows keep their place next to the picture on a projector
+  block.append(text);
+  view.side.insertBefore(block, view.hint);
   stageEl.setAttribute("role", "group");
   stageEl.setAttribute("aria-label", "3D view of the triangle ABC and its normal N. Arrow keys turn it, + and − zoom, Home resets the view.");
   stageEl.tabIndex = 0;
@@ -75,7 +80,7 @@ export function addAccess(view) {
   setAttr(stageEl, "aria-describedby", text.id);
   stage.canvas.setAttribute("aria-hidden", "true"); // the picture itself: its words are in `text`
 
-  const listen = createListen(toolbarEl, () => model.get("state"));
+  const listen = createListen(block, () => model.get("state"));
   let timer = 0;
   let lastState = null;
   function settle() {
@@ -103,6 +108,6 @@ export function addAccess(view) {
     stage.controls.removeEventListener("change", schedule);
     stopKeys();
     listen.dispose();
-    text.remove();
+    block.remove();
   };
 }

@@ -80,15 +80,13 @@ function play(context, tones) {
 }
 
 /**
- * The Listen button, added to the toolbar `bar`: pressed, it plays U, V and N at once and again
+ * The Listen button, added to `bar`: pressed, it plays U, V and N at once and again
  * after every change of the triangle (`changed()`, called when the description settles);
  * pressed again, it is quiet. state(): the host's state. Returns { changed(), dispose() }.
  */
 export function createListen(bar, state) {
-  const button = element("button", "tnx-button tnx-listen");
+  const button = element("button", "tnx-listen", "♪ Listen");
   button.type = "button";
-  // "♪ Listen", or "♪" in a narrow toolbar (the toolbar's own rule for long and short words)
-  button.append(element("span", "tnx-long", "♪ Listen"), element("span", "tnx-short", "♪"));
   const label = "Listen to U, V and N: pan follows x, pitch follows y, brightness follows z";
   button.setAttribute("aria-label", label);
   button.title = label;
