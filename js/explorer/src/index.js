@@ -202,7 +202,7 @@ function render({ model, el }) {
 
   stage.resize();
   repaint(view);
-  // for a reader who cannot see the picture: the description under it, the Listen button (access.js)
+  // for a reader who cannot see the picture: the description and the Listen button (access.js)
   const stopAccess = addAccess(view);
 
   return () => {
