@@ -184,3 +184,16 @@ def test_the_accessibility_pages_example_is_what_the_package_prints():
         test = doctest.DocTestParser().get_doctest(block.split("```")[0], {}, "page", None, 0)
         runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
         assert runner.run(test).failed == 0
+
+
+def test_ex_describe_says_what_the_view_shows_once_a_view_says_where_it_looks_from():
+    """The view sends its camera when it settles: from then on ex.describe() is the view's words."""
+    ex = Explorer()
+    assert ex.describe() == describe(ex.result)  # no view yet: what the front shows
+    ex.view._handle_custom_msg({"viewer": [0.1, 0.2, -3]}, [])
+    assert ex.describe() == describe(ex.result, (0, 0, -1))
+    assert "You see the back" in ex.describe()
+    for junk in ([0, 0], ["x", 0, 1], [math.nan, 0, 1], "up", None):
+        ex.view._handle_custom_msg({"viewer": junk}, [])  # not a direction: ignored
+    assert ex.describe(viewer=(0, 0, 1)).startswith("N points straight up")
+    assert "You see the back" in ex.describe()

@@ -4,8 +4,8 @@ On the run's shared Jupyter server (the ``lab`` fixture, conftest.py), as a scre
 works: the accessibility tree names the toolbar, its buttons, the view, its description and
 every coordinate's box; from the toolbar, Tab and Enter look down the z axis, Tab reaches
 vertex C, and the arrow keys move it across the line AB: the live description changes to the
-back of the triangle; Enter on the flip turns it to the front, in the words ``ex.describe()``
-prints in the kernel for the same viewer. Every control is at least 24 px and shows its focus,
+back of the triangle; Enter on the flip turns it to the front, and ``ex.describe()`` in the
+kernel prints the view's words (the view tells the kernel where it looks from). Every control is at least 24 px and shows its focus,
 and axe-core finds nothing serious in the explorer.
 """
 
@@ -22,7 +22,7 @@ from trinormal.explorer.describe import describe
 
 CELLS = [
     "from trinormal.explorer import Explorer\nex = Explorer()\nex",
-    "print(ex.texts['cy'], ex.winding.value)\nprint(ex.describe(viewer=(0, 0, 1)))",
+    "print(ex.texts['cy'], ex.winding.value)\nprint(ex.describe())",
 ]
 
 DESCRIPTION = ".tnx-root .tnx-describe"
@@ -90,14 +90,15 @@ def test_the_explorer_in_jupyterlab_is_described_and_driven_by_keyboard(
         page.keyboard.press("Enter")
         flipped = triangle_normal((0, 0, 0), (1, 0, 0), (0, "-0.1", 0), winding="ACB")
         _said(page, describe(flipped, (0, 0, 1)))
-        # the kernel says what the view says
+        # the kernel says what the view says (the view told it where it looks from)
         run_cell(page, 1)
         page.wait_for_function(
             "() => document.querySelectorAll('.jp-Notebook .jp-Cell')[1]"
             ".querySelector('.jp-OutputArea-output')?.innerText.startsWith('-0.1 ACB')",
             timeout=30_000,
         )
-        assert output_text(page, 1).splitlines()[1] == describe(flipped, (0, 0, 1))
+        said = page.locator(DESCRIPTION).inner_text()
+        assert output_text(page, 1).splitlines()[1] == said == describe(flipped, (0, 0, 1))
 
         controls = page.evaluate(CONTROLS)
         assert len(controls) >= 9 + 9 + 3 + 8  # sliders, boxes, points, buttons and more

@@ -256,6 +256,9 @@ class Explorer:
         )
         self.view.add_class("trinormal-explorer")
         self.view.edit_handler = self._edit
+        #: Where a 3D view of this explorer last looked from (its camera), for `describe`.
+        self._viewer: tuple[float, float, float] | None = None
+        self.view.on_msg(self._on_view_message)
         self.controls: dict[str, Control] = {}
         self.inputs: dict[str, Control] = {}
         for key in COORDINATES:
@@ -515,8 +518,10 @@ class Explorer:
         ----------
         viewer : sequence of 3 float, optional
             The direction from the triangle towards the viewer, such as ``(0, 0, 1)``
-            (looking down the z axis, as the view's *z* button does). Without it: what
-            is seen from the triangle's front.
+            (looking down the z axis, as the view's *z* button does). Without it: where
+            the 3D view looks from (the view last turned, when there are several), so
+            the words are the view's; before any view is drawn, what is seen from the
+            triangle's front.
 
         Returns
         -------
@@ -533,7 +538,17 @@ class Explorer:
         >>> ex.describe(viewer=(0, 0, 1))
         'N points straight down, along −z. You see the back of the triangle (N points away from you), and A→C→B turns clockwise.'
         """  # noqa: E501
-        return describe(self.result, None if viewer is None else tuple(viewer))
+        return describe(self.result, self._viewer if viewer is None else tuple(viewer))
+
+    def _on_view_message(self, _widget: Any, content: Any, _buffers: Any) -> None:
+        """Keep where a 3D view looks from (``{"viewer": [x, y, z]}``, sent when it settles)."""
+        viewer = content.get("viewer") if isinstance(content, dict) else None
+        if (
+            isinstance(viewer, list)
+            and len(viewer) == 3
+            and all(isinstance(x, (int, float)) and math.isfinite(x) for x in viewer)
+        ):
+            self._viewer = (float(viewer[0]), float(viewer[1]), float(viewer[2]))
 
     # ------------------------------------------------------------------ display
 

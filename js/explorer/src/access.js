@@ -83,10 +83,17 @@ export function addAccess(view) {
   const listen = createListen(block, () => model.get("state"));
   let timer = 0;
   let lastState = null;
+  let lastViewer = "";
   function settle() {
     timer = 0;
     const st = model.get("state");
-    setText(text, describeState(st, model.get("winding"), viewerOf(view)));
+    const viewer = viewerOf(view);
+    setText(text, describeState(st, model.get("winding"), viewer));
+    // the kernel's ex.describe() says what this view shows (a host without a kernel ignores it)
+    if (viewer && String(viewer) !== lastViewer) {
+      lastViewer = String(viewer);
+      model.send({ viewer });
+    }
     if (st !== lastState) {
       lastState = st;
       listen.changed(); // the triangle changed (not only the camera): heard again, if listening
