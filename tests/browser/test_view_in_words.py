@@ -2,14 +2,16 @@
 
 One page load of the calculator, as a screen-reader user works: the accessibility tree names
 the toolbar, its buttons, the view and its description; Tab and Enter look down the z axis;
-Tab reaches vertex C and the arrow keys move it across the line AB, and the live description
-(the same words as ``trinormal.explorer.describe`` in Python) changes once per key press, within
-half a second, from the front to the back; the arrow keys on the focused view turn the camera underneath; Listen plays U, V and N as tones whose pan, pitch and
-brightness follow the vectors (Web Audio, instrumented here rather than listened to), never
-before it is pressed; the flip turns the back into the front again. With reduced motion the
-view jumps; in forced colours the controls, the focus and the description stay visible; every
-target is at least 24 px; axe-core finds nothing serious. Then the mesh page: its view's
-description names the model, its pieces, the faces to flip and the face picked by number.
+Listen (after the description) plays U, V and N as tones whose pan, pitch and brightness
+follow the vectors (Web Audio, instrumented here rather than listened to), never before it is
+pressed; Shift+Tab reaches vertex C and the arrow keys move it across the line AB, and the live
+description (the same words as ``trinormal.explorer.describe`` in Python) changes once per key
+press, within half a second, from the front to the back; the flip turns the back into the
+front again; the arrow keys on the focused view turn the camera underneath. With reduced
+motion the view jumps; in forced colours the controls, the focus and the description stay
+visible; every target is at least 24 px; axe-core finds nothing serious. Then the mesh page:
+its view's description names the model, its pieces, the faces to flip and the face picked by
+number.
 """
 
 from __future__ import annotations
