@@ -6,6 +6,8 @@ Rooms:
   and [`view_state`][trinormal.explorer.view_state], what the 3D view draws;
 * `readout` — the readout rows, HTML, summary and text
   alternative, all from ``TriangleNormal.format``;
+* `describe` — the view in words (which way N points, which side the viewer
+  sees, which way the order turns), the rule the 3D view and ``Explorer.describe`` share;
 * `figure` — the static matplotlib snapshot;
 * `view` — the anywidget that shares state with the
   ES module ``static/explorer.js`` (built from ``js/explorer/``);

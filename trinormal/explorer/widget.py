@@ -31,6 +31,7 @@ from typing import Any
 
 from trinormal.core import TriangleNormal, Winding, triangle_normal
 from trinormal.display import exact_literals, format_number
+from trinormal.explorer.describe import describe
 from trinormal.explorer.figure import Snapshot
 from trinormal.explorer.readout import alt_text, readout_html, summary_text
 from trinormal.explorer.state import coordinate_text, exact_value, view_state
@@ -258,6 +259,9 @@ class Explorer:
         self.view.add_class("trinormal-explorer")
         self.view.edit_handler = self._edit
         self.view.code_setter = self._code_set
+        #: Where a 3D view of this explorer last looked from (its camera), for `describe`.
+        self._viewer: tuple[float, float, float] | None = None
+        self.view.on_msg(self._on_view_message)
         self.controls: dict[str, Control] = {}
         self.inputs: dict[str, Control] = {}
         for key in COORDINATES:
@@ -578,6 +582,45 @@ class Explorer:
     def alt_text(self) -> str:
         """A sentence describing the current state, for screen readers and static pages."""
         return alt_text(self.result, self._precision)
+
+    def describe(self, viewer: Iterable[float] | None = None) -> str:
+        """Say in one line which way N points, and what a viewer sees: the view's description.
+
+        Parameters
+        ----------
+        viewer : sequence of 3 float, optional
+            The direction from the triangle towards the viewer, such as ``(0, 0, 1)``
+            (looking down the z axis, as the view's *z* button does). Without it: where
+            the 3D view looks from (the view last turned, when there are several), so
+            the words are the view's; before any view is drawn, what is seen from the
+            triangle's front.
+
+        Returns
+        -------
+        str
+            The sentences of ``trinormal.explorer.describe``, the rule the 3D view
+            writes under the picture.
+
+        Examples
+        --------
+        >>> ex = Explorer()
+        >>> ex.describe()
+        'N points straight up, along +z. From its front (the side N points to), A→B→C turns counter-clockwise.'
+        >>> ex.set(winding="ACB")
+        >>> ex.describe(viewer=(0, 0, 1))
+        'N points straight down, along −z. You see the back of the triangle (N points away from you), and A→C→B turns clockwise.'
+        """  # noqa: E501
+        return describe(self.result, self._viewer if viewer is None else tuple(viewer))
+
+    def _on_view_message(self, _widget: Any, content: Any, _buffers: Any) -> None:
+        """Keep where a 3D view looks from (``{"viewer": [x, y, z]}``, sent when it settles)."""
+        viewer = content.get("viewer") if isinstance(content, dict) else None
+        if (
+            isinstance(viewer, list)
+            and len(viewer) == 3
+            and all(isinstance(x, (int, float)) and math.isfinite(x) for x in viewer)
+        ):
+            self._viewer = (float(viewer[0]), float(viewer[1]), float(viewer[2]))
 
     # ------------------------------------------------------------------ display
 

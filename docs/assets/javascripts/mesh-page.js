@@ -232,6 +232,8 @@ function createViewHost(model) {
     }
     delete host.dataset.asked;
     model.set("picked", -1);
+    // what the view's description names: the file and its pieces (the report's components)
+    model.set("about", { name: res.name, pieces: res.report.components });
     model.set("mesh", {
       positions: res.positions,
       faces: res.faces,

@@ -11,9 +11,11 @@
  * controls.js (sliders and exact text boxes), toolbar.js, scene.js (the stage: camera and
  * rendering), framing.js (the units and the box the camera keeps in view), scaling.js (how
  * long N is drawn), picture.js (axes, triangle, arrows and labels), panels.js (readout,
- * messages, legend), interaction.js (moving a vertex), touch.js. This file builds them and
+ * messages, legend), interaction.js (moving a vertex), touch.js, access.js (the view in words
+ * and in sound, for a reader who cannot see it). This file builds them and
  * keeps them in step with the model.
  */
+import { addAccess } from "./access.js";
 import { createControls } from "./controls.js";
 import { createEdits } from "./edits.js";
 import { Drawing } from "./geometry.js";
@@ -252,8 +254,11 @@ function render({ model, el }) {
 
   stage.resize();
   repaint(view);
+  // for a reader who cannot see the picture: the description and the Listen button (access.js)
+  const stopAccess = addAccess(view);
 
   return () => {
+    stopAccess();
     stopModel();
     view.toolbar.dispose();
     printing.stop();

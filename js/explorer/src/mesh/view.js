@@ -29,7 +29,9 @@
  * looks), surface.js (the two-sided surface), outlines.js (faults and the picked face),
  * arrows.js (normals), lod.js (a coarser copy while the camera turns), picking.js (a click
  * picks a face), keys.js (the keyboard's ways), toolbar.js (toggles), panels.js (legend and
- * the picked face's readout). This file lays them out and keeps them in step with the model.
+ * the picked face's readout), describe.js (the view in words: the model, its pieces, the faces
+ * to flip and the picked face, from the host's optional "about": { name, pieces }). This file
+ * lays them out and keeps them in step with the model.
  */
 import { AmbientLight, DirectionalLight } from "three";
 import { element } from "../dom.js";
@@ -39,6 +41,7 @@ import { isDark, roleColor, surface as surfaceColors, watchTheme } from "../them
 import { touchGate } from "../touch.js";
 import { createArrows } from "./arrows.js";
 import { displayPositions, readMesh } from "./data.js";
+import { createMeshDescription } from "./describe.js";
 import { framingPoints, MARGIN, startDirection } from "./framing.js";
 import { createFaceForm, turnWithKeys } from "./keys.js";
 import { createLod } from "./lod.js";
@@ -68,9 +71,7 @@ function layout(canPick, faceForm) {
   const root = element("div", "tn-view tnm-root");
   const stageEl = element("div", "tnm-stage");
   const legend = element("ul", "tnm-legend");
-  const panel = element("div", "tnm-pick");
-  panel.setAttribute("aria-live", "polite");
-  panel.setAttribute("aria-atomic", "true");
+  const panel = element("div", "tnm-pick"); // said by the description (describe.js), which is live
   panel.hidden = true;
   faceForm.form.hidden = !canPick;
   root.append(stageEl, legend, faceForm.form, panel, hint(canPick));
@@ -133,6 +134,7 @@ function drawModel(view) {
   const data = readMesh(view.model);
   if (!data || !data.positions || !data.faces) {
     applyFlags(view);
+    describe(view);
     return;
   }
   const { pos, offset, scale } = displayPositions(data.positions);
@@ -172,7 +174,20 @@ function showPick(view) {
     delete root.dataset.picked;
   }
   showSelection(view.panel, model.get("selection"));
+  describe(view);
   view.stage.requestRender();
+}
+
+/** The view in words under it (describe.js): the model, its pieces, the faces to flip, the picked face. */
+function describe(view) {
+  const { model, current } = view;
+  view.description.update({
+    about: model.get("about"),
+    faces: current ? current.data.faces.length / 3 : 0,
+    flipped: current ? current.data.flipped : null,
+    picked: model.get("picked"),
+    selection: model.get("selection"),
+  });
 }
 
 function render({ model, el }) {
@@ -196,6 +211,7 @@ function render({ model, el }) {
   stage.scene.add(new AmbientLight(0xffffff, 1.1), stage.camera);
 
   const view = { model, root, stage, legend, panel, faceForm, canPick, dark: isDark(doc), current: null, counts: NO_COUNTS };
+  view.description = createMeshDescription(stageEl);
   view.flags = createFlags(model, () => applyFlags(view));
   view.surface = createSurface(stage.scene);
   view.outlines = createOutlines(stage.scene);
@@ -233,6 +249,7 @@ function render({ model, el }) {
     ["change:palette", colorsChanged],
     ["change:picked", pickChanged],
     ["change:selection", pickChanged],
+    ["change:about", pickChanged],
     ...Object.keys(LOCAL_FLAGS).map((key) => ["change:" + key, flagsChanged]),
   ];
   for (const [event, cb] of events) model.on(event, cb);
@@ -247,6 +264,7 @@ function render({ model, el }) {
     stopTheme();
     for (const part of [view.picking, view.lod, view.surface, view.outlines, view.arrows]) part.dispose();
     stage.dispose();
+    view.description.dispose();
     root.remove();
   };
 }

@@ -1,0 +1,120 @@
+/*
+ * The explorer for a reader who cannot see the picture: the view described in words beside it
+ * (describe.js, the rule of trinormal.explorer.describe), in a polite live region that is also
+ * the stage's accessible description (aria-describedby), the Listen button (audio.js), and the
+ * view turned by keys on the focused stage.
+ *
+ * The description follows the host's state (a cell, an answered edit, a flip) and the camera
+ * (a drag, a key, a view button). It is written once a change settles, SETTLE_MS after the last
+ * event of it, so a drag is said once, when it ends, and a screen reader hears each change once.
+ */
+import { createListen } from "./audio.js";
+import { describeState } from "./describe.js";
+import { element, setAttr, setText } from "./dom.js";
+import { injectStyle } from "./style.js";
+import CSS from "./access.css";
+
+const SETTLE_MS = 250;
+const TURN = 15 * (Math.PI / 180); // one arrow key (Shift: three times as far)
+
+let ids = 0;
+
+/** Where the viewer is, seen from the triangle: camera minus centroid, display units (null: not drawn). */
+function viewerOf(view) {
+  const d = view.display;
+  if (!d) return null;
+  const c = d.A.clone().add(d.B).add(d.C).divideScalar(3);
+  const v = view.stage.camera.position.clone().sub(c);
+  return [v.x, v.y, v.z];
+}
+
+/**
+ * Turn the view from the keyboard on the focused stage itself (not on a vertex, whose arrow keys
+ * move it): arrow keys turn, + and − zoom, Home looks from where "Reset view" does. The drag's
+ * alternative for a reader without a pointer (WCAG 2.5.7), as in the mesh view.
+ */
+function turnWithKeys(stageEl, stage) {
+  const onKey = (event) => {
+    if (event.target !== stageEl || event.altKey || event.ctrlKey || event.metaKey) return;
+    const step = event.shiftKey ? 3 * TURN : TURN;
+    const keys = {
+      ArrowLeft: () => stage.turn(-step, 0),
+      ArrowRight: () => stage.turn(step, 0),
+      ArrowUp: () => stage.turn(0, step),
+      ArrowDown: () => stage.turn(0, -step),
+      "+": () => stage.zoom(0.8),
+      "=": () => stage.zoom(0.8),
+      "-": () => stage.zoom(1.25),
+      Home: () => stage.reset(),
+    };
+    if (!keys[event.key]) return;
+    event.preventDefault(); // the page does not scroll
+    keys[event.key]();
+  };
+  stageEl.addEventListener("keydown", onKey);
+  return () => stageEl.removeEventListener("keydown", onKey);
+}
+
+/**
+ * Add the description and the Listen button (after the readout, beside or under the view) to
+ * the explorer `view` (index.js). Returns the function that removes them.
+ */
+export function addAccess(view) {
+  const { model, stage, stageEl } = view;
+  injectStyle(stageEl.ownerDocument || document, "trinormal-access-style", CSS);
+  // the words and the sound together: the description, then the Listen button
+  const block = element("div", "tnx-access");
+  const text = element("p", "tnx-describe");
+  text.id = `tnx-describe-${++ids}`;
+  text.setAttribute("role", "status");
+  text.setAttribute("aria-live", "polite");
+  // beside the view, after the readout (on a narrow screen: under the view, after the readout),
+  // so the readout's rows keep their place next to the picture on a projector
+  block.append(text);
+  view.side.insertBefore(block, view.hint);
+  stageEl.setAttribute("role", "group");
+  stageEl.setAttribute("aria-label", "3D view of the triangle ABC and its normal N. Arrow keys turn it, + and − zoom, Home resets the view.");
+  stageEl.tabIndex = 0;
+  stageEl.dataset.lmSuppressShortcuts = "true"; // its keys are the view's, not JupyterLab's
+  const stopKeys = turnWithKeys(stageEl, stage);
+  setAttr(stageEl, "aria-describedby", text.id);
+  stage.canvas.setAttribute("aria-hidden", "true"); // the picture itself: its words are in `text`
+
+  const listen = createListen(block, () => model.get("state"));
+  let timer = 0;
+  let lastState = null;
+  let lastViewer = "";
+  function settle() {
+    timer = 0;
+    const st = model.get("state");
+    const viewer = viewerOf(view);
+    setText(text, describeState(st, model.get("winding"), viewer));
+    // the kernel's ex.describe() says what this view shows (a host without a kernel ignores it)
+    if (viewer && String(viewer) !== lastViewer) {
+      lastViewer = String(viewer);
+      model.send({ viewer });
+    }
+    if (st !== lastState) {
+      lastState = st;
+      listen.changed(); // the triangle changed (not only the camera): heard again, if listening
+    }
+  }
+  function schedule() {
+    clearTimeout(timer);
+    timer = setTimeout(settle, SETTLE_MS);
+  }
+  const keys = ["state", "winding"];
+  for (const key of keys) model.on("change:" + key, schedule);
+  stage.controls.addEventListener("change", schedule);
+  settle();
+  lastState = model.get("state");
+
+  return () => {
+    clearTimeout(timer);
+    for (const key of keys) model.off("change:" + key, schedule);
+    stage.controls.removeEventListener("change", schedule);
+    stopKeys();
+    listen.dispose();
+    block.remove();
+  };
+}
