@@ -64,9 +64,10 @@ export function createReadout(parent) {
     });
     setText(status, (state?.ok === false ? state.error : state?.status) || "");
     setAttr(status, "data-state", state?.ok === false ? "error" : state?.degenerate ? "degenerate" : "ok");
-    // announce once the values settle (a drag changes them every frame)
+    // announce an error once the values settle (a drag changes them every frame); what the view
+    // shows is announced by the description (describe.js), so a good state says nothing here
     clearTimeout(timer);
-    const text = state?.ok === false ? state.error || "" : state?.summary || state?.status || "";
+    const text = state?.ok === false ? state.error || "" : "";
     timer = setTimeout(() => {
       if (live.textContent !== text) live.textContent = text;
     }, 350);
