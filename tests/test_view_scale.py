@@ -85,7 +85,7 @@ process.stdin.on("data", (d) => (input += d)).on("end", () => {
 
 
 def test_the_views_scale_and_labels_of_n_are_pythons() -> None:
-    cases = [(n, 1.0) for n in (0.0, 1e-300, 1e-9, 0.01, 0.2, 0.247, 0.25, 1.0, 2.0, 2.01)]
+    cases = [(n, 1.0) for n in (0.0, 1e-300, 1e-9, 0.01, 0.2, 0.247, 0.25, 1.0, 1.01, 1.4, 2.0)]
     cases += [(n, 1.0) for n in (3.0, 5.6, 16.0, 40.0, 1e5, 1e9, 1e300)]
     cases += [(16.0, 5.656854249492381), (0.09, 0.4242640687119285), (400.0, 28.28), (1.0, 0.0)]
     got = _node(_SCALE_SCRIPT, cases)
@@ -94,7 +94,7 @@ def test_the_views_scale_and_labels_of_n_are_pythons() -> None:
         assert (factor, label, unit) == (want, scaled_label(want), scaled_label(want, True)), n
         assert "½" not in label  # "N × ½" beside "area = |N|/2" could be read as the area
         if factor != 1.0:  # outside the true-length range only
-            assert not 0.25 <= n / edge <= 2.0, n
+            assert not 0.25 <= n / edge <= 1.0, n
 
 
 _FRAME_SCRIPT = """

@@ -1,12 +1,13 @@
 """How long N is drawn, and what its label says: one rule for every picture of a triangle.
 
 N is drawn at its true length (in the axes' units) when that fits beside the
-triangle: between `TRUE_LENGTH` times its longest edge. Otherwise it is drawn
-scaled by the power of two that brings it nearest `AIM` times the longest
-edge, and its label names the factor: ``N × ¼``, ``N × 8``. A factor of ½ never
-occurs (``N × ½`` beside "area = |N|/2" could be read as the area): below the
-range the factor is at least 2, above it at most ¼. The unit normal follows the
-same rule with the label ``N/|N| × 4``.
+triangle: between `TRUE_LENGTH` times its longest edge, so the triangle keeps
+its share of the picture. Otherwise it is drawn scaled by the power of two that
+brings it nearest `AIM` times the longest edge, and its label names the factor:
+``N × ¼``, ``N × 8``. A factor of ½ never occurs (``N × ½`` beside
+"area = |N|/2" could be read as the area): above the range the factor is at
+most ¼, below it at least 2. The unit normal follows the same rule with the
+label ``N/|N| × 4``.
 
 The figures (`right_hand_rule_figure`), the explorer's static snapshot and the
 3D view (``js/explorer/src/scaling.js``, a port checked against this module by
@@ -29,7 +30,7 @@ import math
 __all__ = ["AIM", "TRUE_LENGTH", "drawn_factor", "scaled_label"]
 
 #: N is drawn at its true length when it is between these times the longest edge.
-TRUE_LENGTH: tuple[float, float] = (0.25, 2.0)
+TRUE_LENGTH: tuple[float, float] = (0.25, 1.0)
 
 #: Otherwise its drawn length aims at this many times the longest edge.
 AIM = 0.7
@@ -60,6 +61,8 @@ def drawn_factor(length: float, longest_edge: float) -> float:
     --------
     >>> drawn_factor(16.0, 5.66), drawn_factor(0.09, 0.424), drawn_factor(0.0, 1.0)
     (0.25, 4.0, 1.0)
+    >>> drawn_factor(1.4, 1.0)  # longer than the edge: a quarter (a half would read as the area)
+    0.25
     """
     if not (0 < length < math.inf and 0 < longest_edge < math.inf):
         return 1.0
@@ -69,6 +72,8 @@ def drawn_factor(length: float, longest_edge: float) -> float:
     if math.log2(low) <= log_ratio <= math.log2(high):
         return 1.0
     k = math.floor(math.log2(AIM) - log_ratio + 0.5)  # rounds as JavaScript's Math.round
+    if log_ratio > 0:
+        k = min(k, -2)  # shorter, but never by ½
     return 2.0 ** max(-_MAX_POWER, min(_MAX_POWER, k))
 
 

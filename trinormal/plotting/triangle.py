@@ -41,7 +41,7 @@ def right_hand_rule_figure(
     U and V start at A; a curved arrow (in N's colour, as in the explorer)
     turns from U towards V, the way the fingers of a right hand curl, with a
     large filled head near V, and N (drawn from the centroid) points where the
-    thumb does. N is drawn at its true length when that is between ¼ and 2
+    thumb does. N is drawn at its true length when that is between ¼ and 1
     times the longest edge; otherwise it is scaled by a power of two and labelled
     so (``N × ¼``, ``N × 4``), and the alt text says which
     (`trinormal.plotting.scale`).

@@ -2,13 +2,14 @@
  * How long N and the unit normal are drawn, and what their labels say: a port of
  * trinormal/plotting/scale.py (tests/test_view_scale.py checks that both answer alike).
  *
- * N is drawn at its true length (in the axes' units) when that is between ¼ and 2 times the
+ * N is drawn at its true length (in the axes' units) when that is between ¼ and 1 times the
  * triangle's longest edge; otherwise it is scaled by the power of two that brings it nearest
  * 0.7 times that edge, and its label names the factor: "N × ¼", "N × 8". The factor ½ never
- * occurs ("N × ½" beside "area = |N|/2" could be read as the area). The unit normal follows
+ * occurs ("N × ½" beside "area = |N|/2" could be read as the area): longer than the edge,
+ * N is drawn at most a quarter of its length. The unit normal follows
  * the same rule: "N/|N| × 4".
  */
-const TRUE_LENGTH = [0.25, 2.0];
+const TRUE_LENGTH = [0.25, 1.0];
 const AIM = 0.7;
 const MAX_POWER = 1000;
 
@@ -18,7 +19,8 @@ export function drawnFactor(length, longest) {
   // log2 of the ratio, taken apart: the ratio itself may overflow or underflow
   const logRatio = Math.log2(length) - Math.log2(longest);
   if (Math.log2(TRUE_LENGTH[0]) <= logRatio && logRatio <= Math.log2(TRUE_LENGTH[1])) return 1;
-  const k = Math.floor(Math.log2(AIM) - logRatio + 0.5);
+  let k = Math.floor(Math.log2(AIM) - logRatio + 0.5);
+  if (logRatio > 0) k = Math.min(k, -2); // shorter, but never by ½
   return 2 ** Math.max(-MAX_POWER, Math.min(MAX_POWER, k));
 }
 
