@@ -140,6 +140,20 @@ CHECK_LOG_VARIABLE = "TRINORMAL_CHECK_LOG"
 #: The variable of the notebook's namespace (IPython's ``user_ns``) where `student` keeps the
 #: student it was given: the one place the choice lives between cells.
 STUDENT_VARIABLE = "trinormal_student"
+#: The colour of each verdict (Okabe and Ito's palette), in the notebook and the class report.
+STATUS_COLORS: dict[str, str] = {
+    "correct": "#007A5A",
+    "incorrect": "#D55E00",
+    "unanswered": "#0072B2",
+    "unknown": "#CC79A7",
+}
+#: The word for each verdict, in the notebook and the class report.
+STATUS_WORDS: dict[str, str] = {
+    "correct": "Correct",
+    "incorrect": "Not yet",
+    "unanswered": "Not answered",
+    "unknown": "No such exercise",
+}
 #: The longest answer text a verdict's record keeps.
 ANSWER_TEXT_LIMIT = 200
 
@@ -191,18 +205,7 @@ class CheckResult:
     __str__ = __repr__
 
     def _repr_html_(self) -> str:
-        colors = {
-            "correct": "#007A5A",
-            "incorrect": "#D55E00",
-            "unanswered": "#0072B2",
-            "unknown": "#CC79A7",
-        }
-        words = {
-            "correct": "Correct",
-            "incorrect": "Not yet",
-            "unanswered": "Not answered",
-            "unknown": "No such exercise",
-        }
+        colors, words = STATUS_COLORS, STATUS_WORDS
         return (
             f'<div class="trinormal-check trinormal-check-{self.status}" role="status" '
             f'style="border-left: 4px solid {colors[self.status]}; padding: 0.2em 0.6em;">'

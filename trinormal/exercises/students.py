@@ -56,16 +56,25 @@ class Student:
         As the student wrote it; case and spacing do not change the variants.
     seed : int
         The class's seed (0 unless the teacher hands out another).
+    code : str
+        The code printed on the student's worksheet (``variants.student_code``): the
+        worksheet's variants. Without it, the variants follow from the name and the seed.
     """
 
     name: str
     seed: int = 0
+    code: str = ""
 
     def variant(self, name: str) -> int | None:
         """Return the student's variant of the exercise ``name``; None when it has none."""
-        from trinormal.exercises.variants import group_of, variant_index
+        from trinormal.exercises.variants import group_of, read_code, variant_index
 
-        return variant_index(name, self.name, self.seed) if group_of(name) else None
+        template = group_of(name)
+        if template is None:
+            return None
+        if self.code:
+            return read_code(self.code)[template.group]
+        return variant_index(name, self.name, self.seed)
 
     def exercise(self, name: str) -> Exercise:
         """Return the student's own exercise ``name`` (the notebook's when it has no variants)."""
@@ -108,15 +117,17 @@ def session_student() -> Student | None:
     return chosen if isinstance(chosen, Student) else None
 
 
-def student(name: str, seed: int = 0) -> Student:
+def student(name: str, code: str = "", seed: int = 0) -> Student:
     """Give this notebook's student their own numbers: call it once, at the top.
 
     Parameters
     ----------
     name : str
         The student's name, as on the class roster.
+    code : str, optional
+        The code on the student's worksheet, to get the worksheet's numbers.
     seed : int, default 0
-        The class's seed, when the teacher gives one.
+        The class's seed, when the teacher gives one (a code already includes it).
 
     Returns
     -------
@@ -127,7 +138,7 @@ def student(name: str, seed: int = 0) -> Student:
     Raises
     ------
     ValueError
-        When the name is empty.
+        When the name is empty or the code is not one a worksheet prints.
 
     Examples
     --------
@@ -136,12 +147,16 @@ def student(name: str, seed: int = 0) -> Student:
     """
     if not isinstance(name, str) or not name.strip():
         raise ValueError(f"student() needs the student's name, got {name!r}")
-    chosen = Student(" ".join(name.split()), int(seed))
+    from trinormal.exercises.variants import read_code
+
+    if code:
+        read_code(code)
+    chosen = Student(" ".join(name.split()), int(seed), str(code).strip())
     ipython = sys.modules.get("IPython")
     shell = ipython.get_ipython() if ipython is not None else None
     if shell is not None:
         shell.user_ns[STUDENT_VARIABLE] = chosen
-    _record({"student": chosen.name, "seed": chosen.seed})
+    _record({"student": chosen.name, "seed": chosen.seed, "code": chosen.code})
     return chosen
 
 

@@ -14,12 +14,14 @@ the same on every machine and nothing is kept between calls.
 A student's variant is chosen by a hash of their name (and a seed):
 `variant_index`. A worksheet gives a whole roster distinct variants with `assign`,
 which starts from the same hash and moves a student on to the next free variant when
-a classmate already has theirs.
+a classmate already has theirs; it prints each student's variants as a short code
+(`student_code`) for ``exercises.student(name, code)``, so the notebook gives the
+student the worksheet's numbers.
 
 >>> variant_exercise("01-normal", 0).prompt
 'Compute N = (B − A) × (C − A) for A = (0, 3/2, 1/2), B = (-2, 1, 1), C = (-2, 0, 3/2).'
->>> assign(["Ana Lima", "Ben Okafor"], ["05-scale-area"], seed=1)["Ana Lima"]
-{'05-scale-area': 44}
+>>> assign(["Ana Lima", "Ben Okafor"], seed=1)["Ana Lima"]["05-scale-area"]
+44
 """
 
 from __future__ import annotations
@@ -39,6 +41,8 @@ __all__ = [
     "Template",
     "assign",
     "group_of",
+    "read_code",
+    "student_code",
     "variant_exercise",
     "variant_index",
     "variant_names",
@@ -290,11 +294,16 @@ def variant_index(name: str, student: str, seed: int = 0) -> int:
     return int(hashlib.sha256(text.encode()).hexdigest(), 16) % BANK_SIZE
 
 
-def assign(roster: Iterable[str], names: Sequence[str], seed: int = 0) -> dict[str, dict[str, int]]:
-    """Give every student of a roster a variant of each exercise, distinct while the bank lasts.
+def assign(roster: Iterable[str], seed: int = 0) -> dict[str, dict[str, int]]:
+    """Give every student of a roster a variant of each group, distinct while the bank lasts.
 
     Students are served in roster order: each gets `variant_index`, or the next variant
     no classmate has yet; once all ``BANK_SIZE`` are taken, they are handed out again.
+
+    Returns
+    -------
+    dict
+        ``{student: {group: variant}}``, a group being named by its first exercise.
 
     Raises
     ------
@@ -307,7 +316,7 @@ def assign(roster: Iterable[str], names: Sequence[str], seed: int = 0) -> dict[s
     if twice is not None:
         raise ValueError(f"{twice!r} is on the roster twice: give each student a distinct name")
     out: dict[str, dict[str, int]] = {s: {} for s in students}
-    for template in {group_of(n) or _template(n) for n in names}:
+    for template in TEMPLATES:
         used: set[int] = set()
         for student in students:
             if len(used) == BANK_SIZE:
@@ -316,7 +325,34 @@ def assign(roster: Iterable[str], names: Sequence[str], seed: int = 0) -> dict[s
             while index in used:
                 index = (index + 1) % BANK_SIZE
             used.add(index)
-            for name in template.names:
-                if name in names:
-                    out[student][name] = index
+            out[student][template.group] = index
     return out
+
+
+def student_code(variants: dict[str, int]) -> str:
+    """Write a student's variants (``{group: variant}``) as the code ``student(name, code)`` takes.
+
+    Examples
+    --------
+    >>> code = student_code(assign(["Ana Lima"], seed=1)["Ana Lima"])
+    >>> read_code(code) == assign(["Ana Lima"], seed=1)["Ana Lima"]
+    True
+    """
+    return ".".join(str(variants[t.group]) for t in TEMPLATES)
+
+
+def read_code(code: str) -> dict[str, int]:
+    """Read a code written by `student_code`.
+
+    Raises
+    ------
+    ValueError
+        When the code is not one number per group, each below ``BANK_SIZE``.
+    """
+    parts = str(code).strip().split(".")
+    if len(parts) != len(TEMPLATES) or not all(p.isdigit() and int(p) < BANK_SIZE for p in parts):
+        raise ValueError(
+            f"the code {code!r} is not one from a worksheet: it should be {len(TEMPLATES)} "
+            f"whole numbers below {BANK_SIZE} joined by dots"
+        )
+    return {t.group: int(p) for t, p in zip(TEMPLATES, parts, strict=True)}
