@@ -19,7 +19,7 @@ a classmate already has theirs; it prints each student's variants as a short cod
 student the worksheet's numbers.
 
 >>> variant_exercise("01-normal", 0).prompt
-'Compute N = (B − A) × (C − A) for A = (0, 3/2, 1/2), B = (-2, 1, 1), C = (-2, 0, 3/2).'
+'Compute N = (B − A) × (C − A) for A = (1, 2, 2), B = (1, 3/2, 0), C = (1, 3, 1).'
 >>> assign(["Ana Lima", "Ben Okafor"], seed=1)["Ana Lima"]["05-scale-area"]
 44
 """
@@ -27,6 +27,7 @@ student the worksheet's numbers.
 from __future__ import annotations
 
 import hashlib
+import math
 import random
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
@@ -56,7 +57,7 @@ COORDINATES: tuple[Fraction, ...] = tuple(
     Fraction(x) for x in ("-2", "-1", "0", "0", "1", "1", "2", "2", "3", "1/2", "3/2")
 )
 #: The whole numbers edges and 2D points are drawn from.
-WHOLE = tuple(range(-3, 5))
+WHOLE: tuple[Fraction, ...] = tuple(Fraction(x) for x in range(-3, 5))
 
 Point = tuple[Fraction, ...]
 
@@ -78,26 +79,26 @@ def _normal(abc: Sequence[Point]) -> Point:
     return _cross(_sub(b, a), _sub(c, a))
 
 
-def _is_square(q: Fraction) -> bool:
-    def square(n: int) -> bool:
-        root = int(n**0.5)
-        return any((root + d) ** 2 == n for d in (-1, 0, 1))
-
-    return q >= 0 and square(q.numerator) and square(q.denominator)
+def _point(rng: random.Random, pool: Sequence[Fraction], size: int = 3) -> Point:
+    return tuple(rng.choices(pool, k=size))
 
 
-def _point(rng: random.Random, pool: Sequence[Any], size: int = 3) -> Point:
-    return tuple(Fraction(rng.choice(pool)) for _ in range(size))
-
-
-def _triangle(rng: random.Random, pool: Sequence[Any] = COORDINATES) -> tuple[Point, ...]:
-    return tuple(_point(rng, pool) for _ in range(3))
+def _triangle(rng: random.Random, pool: Sequence[Fraction] = COORDINATES) -> tuple[Point, ...]:
+    xs = rng.choices(pool, k=9)
+    return (tuple(xs[0:3]), tuple(xs[3:6]), tuple(xs[6:9]))
 
 
 def _clean_01(abc: Any) -> bool:
-    """Keep a triangle with a rational area and |N| at least 2 (no listed mistake is right)."""
-    n2 = _dot(_normal(abc), _normal(abc))
-    return n2 >= 4 and _is_square(n2)
+    """Keep a triangle with a rational area and |N| at least 2 (no listed mistake is right).
+
+    Computed on the doubled coordinates, whole numbers (the halves become odd): their
+    normal is 4 N, so |N| is rational exactly when |4 N|² is a perfect square.
+    """
+    a, b, c = ([int(2 * x) for x in p] for p in abc)
+    u, v = [q - p for p, q in zip(a, b, strict=True)], [q - p for p, q in zip(a, c, strict=True)]
+    n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2]
+    return n2 >= 4 * 16 and math.isqrt(n2) ** 2 == n2
 
 
 def _clean_lagrange(uv: Any) -> bool:
@@ -186,12 +187,12 @@ class Template:
         """The group's name: its first exercise."""
         return self.names[0]
 
-    def numbers(self) -> list[Any]:
-        """Every variant's numbers, variant 0 first (drawn again on each call)."""
+    def numbers(self, count: int = BANK_SIZE) -> list[Any]:
+        """Draw the first ``count`` variants' numbers, variant 0 first (again on each call)."""
         rng = random.Random(f"trinormal-variants-{self.group}")
         found: list[Any] = []
         seen: set[Any] = set()
-        while len(found) < BANK_SIZE:
+        while len(found) < count:
             candidate = self.draw(rng)
             if candidate not in seen and self.clean(candidate):
                 seen.add(candidate)
@@ -260,7 +261,9 @@ def _template(name: str) -> Template:
 
 def variant_numbers(name: str, index: int) -> Any:
     """Return the numbers of variant ``index`` of the exercise ``name``'s group."""
-    return _template(name).numbers()[index]
+    if not 0 <= index < BANK_SIZE:
+        raise IndexError(f"variant {index} of {name!r}: there are {BANK_SIZE}, from 0")
+    return _template(name).numbers(index + 1)[index]
 
 
 def variant_exercise(name: str, index: int) -> Exercise:
@@ -269,10 +272,10 @@ def variant_exercise(name: str, index: int) -> Exercise:
     Examples
     --------
     >>> variant_exercise("05-scale-area", 3).prompt[-44:]
-    'by 5. By what number is the area multiplied?'
+    'by 3. By what number is the area multiplied?'
     """
     template = _template(name)
-    built = template.build(template.numbers()[index])
+    built = template.build(variant_numbers(name, index))
     return built[template.names.index(name)]
 
 

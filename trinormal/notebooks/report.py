@@ -286,7 +286,12 @@ def _execute(nb: dict[str, Any], folder: Path, log: Path, timeout: float) -> tup
         startup_timeout=int(STARTUP_TIMEOUT),
         kernel_name="python3",
         resources={"metadata": {"path": str(folder)}},
+        shutdown_kernel="immediate",
     )
+    # The kernel talks over files in its own folder, not TCP ports: kernels started at the
+    # same moment by other workers cannot pick the same port, and nothing listens on the network.
+    manager = client.create_kernel_manager()
+    manager.transport, manager.ip = "ipc", str(folder / "kernel")
     env = {**os.environ, CHECK_LOG_VARIABLE: str(log), "MPLBACKEND": "agg"}
     try:  # the kernel's own warnings and tracebacks would drown the progress lines
         client.execute(env=env, stderr=subprocess.DEVNULL)

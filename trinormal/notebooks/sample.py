@@ -21,7 +21,19 @@ from typing import Any
 
 from trinormal.exercises import Student, get
 
-__all__ = ["SLIP_EXERCISES", "SLIP_STUDENTS", "notebook", "write_sample_class"]
+__all__ = [
+    "SAMPLE_ROSTER",
+    "SAMPLE_TIMEOUT",
+    "SLIP_EXERCISES",
+    "SLIP_STUDENTS",
+    "notebook",
+    "write_sample_class",
+]
+
+#: The time limit the sample class is run with (``--timeout``): the endless loop's limit.
+SAMPLE_TIMEOUT = 6
+#: The roster of the docs' sample worksheets.
+SAMPLE_ROSTER = ("Ana Lima", "Ben Okafor", "Cleo Diaz")
 
 #: The exercises whose every listed slip a student of the sample class makes.
 SLIP_EXERCISES = (
@@ -29,7 +41,6 @@ SLIP_EXERCISES = (
     "01-area",
     "01-reversed",
     "04-dot-value",
-    "04-2d-nz",
     "05-scale-area",
 )
 #: The students who make them: the k-th makes each exercise's k-th listed slip.

@@ -18,6 +18,7 @@ True
 from __future__ import annotations
 
 import html
+import json
 import re
 from collections.abc import Sequence
 from fractions import Fraction
@@ -26,11 +27,11 @@ from typing import Any
 
 from trinormal.core import triangle_normal
 from trinormal.display import exact_text, format_number, radical_text
-from trinormal.exercises import Exercise, Student, point_text
-from trinormal.exercises.variants import assign, group_of, student_code, variant_numbers
+from trinormal.exercises import Exercise, point_text
+from trinormal.exercises.variants import TEMPLATES, assign, group_of, student_code
 from trinormal.steps import steps, working
 
-__all__ = ["answer_text", "read_roster", "worked_steps", "worksheets"]
+__all__ = ["answer_text", "notebook_line", "read_roster", "worked_steps", "worksheets"]
 
 _CSS = """
 body { font: 15px/1.45 system-ui, sans-serif; color: #1a1a1a; background: #fff;
@@ -145,10 +146,21 @@ def worked_steps(name: str, numbers: Any) -> list[tuple[str, str]]:
     return []
 
 
+def notebook_line(student: str, code: str) -> str:
+    """Write the line that gives a student the worksheet's numbers in a notebook.
+
+    Examples
+    --------
+    >>> print(notebook_line("Ana Lima", "1.2.3.4.5.6"))
+    exercises.student("Ana Lima", code="1.2.3.4.5.6")
+    """
+    return f"exercises.student({json.dumps(student, ensure_ascii=False)}, code={json.dumps(code)})"
+
+
 def _task_html(ex: Exercise) -> str:
     return (
         f"<li><p><strong><code>{html.escape(ex.name)}</code></strong>: {html.escape(ex.prompt)}</p>"
-        '<div class="work" aria-label="room to work"></div>'
+        '<div class="work"></div>'
         '<p class="answer">Answer: <span>&nbsp;</span></p></li>'
     )
 
@@ -184,27 +196,33 @@ def worksheets(
         The answer key's HTML.
     """
     chosen = assign(roster, seed)
+    banks = {t.group: t.numbers() for t in TEMPLATES}  # drawn once for the whole class
+
+    def own(student: str, name: str) -> tuple[Exercise, Any]:
+        template = group_of(name)
+        if template is None:
+            raise ValueError(f"exercise {name!r} has no variants")
+        numbers = banks[template.group][chosen[student][template.group]]
+        return template.build(numbers)[template.names.index(name)], numbers
+
     pages: dict[str, str] = {}
     key = [f"<h1>Answer key</h1><p>{len(roster)} students, seed {seed}.</p>"]
     for student in roster:
         code = student_code(chosen[student])
-        me = Student(student, seed, code)
-        items = [me.exercise(n) for n in names]
+        items = [own(student, n) for n in names]
         body = (
             f"<h1>Worksheet: {html.escape(student)}</h1>"
             "<p>Your own numbers. In a notebook, run once at the top: "
-            f"<code>exercises.student({student!r}, code={code!r})</code></p>"
-            '<ol class="tasks">' + "".join(_task_html(ex) for ex in items)
-        ) + "</ol>"
+            f"<code>{html.escape(notebook_line(student, code))}</code></p>"
+            '<ol class="tasks">' + "".join(_task_html(ex) for ex, _ in items) + "</ol>"
+        )
         file = f"{_slug(student)}.html"
         while file in pages:
             file = file.removesuffix(".html") + "-2.html"
         pages[file] = _page(f"Worksheet: {student}", body)
         key.append(f'<section class="student"><h2>{html.escape(student)}</h2>')
         key.append(f"<p>Code <code>{html.escape(code)}</code></p>")
-        for ex in items:
-            group = group_of(ex.name)
-            numbers = variant_numbers(ex.name, chosen[student][group.group]) if group else None
+        for ex, numbers in items:
             rows = "".join(
                 f"<tr><th scope='row'>{html.escape(label)}</th><td>{html.escape(text)}</td></tr>"
                 for label, text in worked_steps(ex.name, numbers)
