@@ -85,7 +85,7 @@ def _report_parser() -> argparse.ArgumentParser:
 def report_main(argv: Sequence[str]) -> int:
     """Run ``trinormal-notebooks report``; return the exit status (2 for bad input)."""
     from trinormal.notebooks.class_report import render_html, write_csv
-    from trinormal.notebooks.report import collect, run_class
+    from trinormal.notebooks.report import Outcome, collect, run_class
 
     args = _report_parser().parse_args(list(argv))
     if args.timeout <= 0 or (args.jobs is not None and args.jobs < 1):
@@ -103,10 +103,7 @@ def report_main(argv: Sequence[str]) -> int:
             f"{args.timeout:g} s each (the students' code runs on this machine)"
         )
 
-        def progress(done: int, total: int, o: object) -> None:
-            from trinormal.notebooks.report import Outcome
-
-            assert isinstance(o, Outcome)
+        def progress(done: int, total: int, o: Outcome) -> None:
             if o.status == "ok":
                 right = sum(c.status == "correct" for c in o.checks)
                 what = f"{right} of {len(o.checks)} checks right"
