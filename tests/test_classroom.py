@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import csv
 import json
+import subprocess
+import sys
 import zipfile
 from fractions import Fraction
 from pathlib import Path
@@ -125,6 +127,20 @@ def test_report_without_notebooks_says_so_in_one_line(tmp_path, capsys):
         f"trinormal-notebooks report: {tmp_path / 'missing'}: no such file or folder",
         "trinormal-notebooks report: no notebook to run",
     ]
+
+
+def test_report_without_nbclient_names_the_extra(tmp_path):
+    code = (
+        "import sys\nsys.modules['nbclient'] = None\n"
+        "from trinormal.notebooks import main\n"
+        f"sys.exit(main(['report', {str(tmp_path)!r}]))"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 2
+    assert done.stderr == (
+        "trinormal-notebooks report: running notebooks needs nbclient: "
+        'pip install "trinormal[notebooks]"\n'
+    )
 
 
 def test_a_zip_from_an_lms_is_unpacked_inside_its_folder_only(tmp_path):

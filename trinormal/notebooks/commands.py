@@ -7,6 +7,7 @@ notebook as it finishes, then a summary.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import sys
 import tempfile
 from collections.abc import Sequence
@@ -82,12 +83,27 @@ def _report_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _installed(module: str) -> bool:
+    try:
+        return importlib.util.find_spec(module) is not None
+    except ValueError:  # in sys.modules as None: blocked
+        return False
+
+
 def report_main(argv: Sequence[str]) -> int:
     """Run ``trinormal-notebooks report``; return the exit status (2 for bad input)."""
     from trinormal.notebooks.class_report import render_html, write_csv
     from trinormal.notebooks.report import Outcome, collect, run_class
 
     args = _report_parser().parse_args(list(argv))
+    missing = [m for m in ("nbclient", "ipykernel") if not _installed(m)]
+    if missing:
+        print(
+            f"{PROG} report: running notebooks needs {' and '.join(missing)}: "
+            'pip install "trinormal[notebooks]"',
+            file=sys.stderr,
+        )
+        return 2
     if args.timeout <= 0 or (args.jobs is not None and args.jobs < 1):
         print(f"{PROG} report: --timeout and --jobs must be positive", file=sys.stderr)
         return 2
