@@ -252,8 +252,8 @@ def _spellings(x: Any) -> list[str]:
 def _hints(name: str) -> list[str]:
     """Every hint the exercise can give: its hint, its listed mistakes' and those of probes."""
     ex = get(name)
-    texts = [ex.hint] + [hint for _, hint in ex.mistakes]
-    probes: list[Any] = [wrong() if callable(wrong) else wrong for wrong, _ in ex.mistakes]
+    texts = [ex.hint] + [hint for _, hint, _ in ex.mistakes]
+    probes: list[Any] = [wrong() if callable(wrong) else wrong for wrong, _, _ in ex.mistakes]
     probes += [7, "7/3", (5, 4, 3), "(5, 4, 3)", [(0, 0, 0), (1, 0, 0), (0, 1, 0)], True, "back"]
     messages = [check(name, p).message for p in probes]
     return texts + [m for m in messages if "could not be read" not in m]  # those echo the answer

@@ -349,7 +349,7 @@ def test_no_common_slip_passes():
     """Every listed mistake is outside the tolerance (no slip is accepted as right)."""
     for name in notebook_names():
         ex = get(name)
-        for wrong, hint in ex.mistakes:
+        for wrong, hint, _ in ex.mistakes:
             value = wrong() if callable(wrong) else wrong
             r = check(name, value)
             assert r.status == "incorrect", (name, value)

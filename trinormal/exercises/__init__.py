@@ -72,7 +72,9 @@ from __future__ import annotations
 import difflib
 import html
 import importlib
+import json
 import math
+import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -91,10 +93,13 @@ from trinormal.exercises.reading import (
 )
 
 __all__ = [
+    "CHECK_LOG_VARIABLE",
     "NOTEBOOK_MODULES",
+    "STUDENT_VARIABLE",
     "AnswerError",
     "CheckResult",
     "Exercise",
+    "Student",
     "UnknownExercise",
     "Verdict",
     "check",
@@ -107,6 +112,8 @@ __all__ = [
     "read_points",
     "read_vector",
     "read_word",
+    "student",
+    "task",
 ]
 
 Status = Literal["correct", "incorrect", "unanswered", "unknown"]
@@ -126,6 +133,29 @@ NOTEBOOK_MODULES: tuple[str, ...] = (
     "nb10",
     "nb11",
 )
+
+#: The environment variable naming the file `check` appends one JSON line per verdict to. Only
+#: the class report (``trinormal-notebooks report``) sets it, for the kernels it starts.
+CHECK_LOG_VARIABLE = "TRINORMAL_CHECK_LOG"
+#: The variable of the notebook's namespace (IPython's ``user_ns``) where `student` keeps the
+#: student it was given: the one place the choice lives between cells.
+STUDENT_VARIABLE = "trinormal_student"
+#: The colour of each verdict (Okabe and Ito's palette), in the notebook and the class report.
+STATUS_COLORS: dict[str, str] = {
+    "correct": "#007A5A",
+    "incorrect": "#D55E00",
+    "unanswered": "#0072B2",
+    "unknown": "#CC79A7",
+}
+#: The word for each verdict, in the notebook and the class report.
+STATUS_WORDS: dict[str, str] = {
+    "correct": "Correct",
+    "incorrect": "Not yet",
+    "unanswered": "Not answered",
+    "unknown": "No such exercise",
+}
+#: The longest answer text a verdict's record keeps.
+ANSWER_TEXT_LIMIT = 200
 
 #: The start of the message for an answer no rule could judge (a bug: tests assert it never shows).
 UNJUDGED = "This answer could not be judged"
@@ -152,11 +182,14 @@ class CheckResult:
         ``bool(result)`` is True only for ``"correct"``.
     message : str
         What to do next: a hint, never the solution.
+    slip : str
+        For a wrong answer, the code (in ``judging.SLIPS``) of the slip it matched; "" for none.
     """
 
     name: str
     status: Status
     message: str
+    slip: str = ""
 
     def __bool__(self) -> bool:
         return self.status == "correct"
@@ -172,18 +205,7 @@ class CheckResult:
     __str__ = __repr__
 
     def _repr_html_(self) -> str:
-        colors = {
-            "correct": "#007A5A",
-            "incorrect": "#D55E00",
-            "unanswered": "#0072B2",
-            "unknown": "#CC79A7",
-        }
-        words = {
-            "correct": "Correct",
-            "incorrect": "Not yet",
-            "unanswered": "Not answered",
-            "unknown": "No such exercise",
-        }
+        colors, words = STATUS_COLORS, STATUS_WORDS
         return (
             f'<div class="trinormal-check trinormal-check-{self.status}" role="status" '
             f'style="border-left: 4px solid {colors[self.status]}; padding: 0.2em 0.6em;">'
@@ -231,9 +253,10 @@ class Exercise:
         ``checker(answer)`` → ``bool``, ``(bool, hint)`` or a ``Verdict``, for
         answers that are not one number or one vector, or that have many
         right values.
-    mistakes : tuple of (value, hint)
-        Common wrong answers (values or functions of no arguments) and the
-        hint each one gets: a hint written for that answer.
+    mistakes : tuple of (value, hint, slip)
+        Common wrong answers (values or functions of no arguments), the
+        hint each one gets (written for that answer) and the slip's code in
+        ``judging.SLIPS`` (what the class report counts).
     example : object
         For a checked exercise, one right answer (what
         [`solution`][trinormal.exercises.Exercise.solution] returns).
@@ -250,7 +273,7 @@ class Exercise:
     tol: float | None = None
     hint: str = ""
     checker: Checker | None = field(default=None, repr=False)
-    mistakes: tuple[tuple[Any, str], ...] = ()
+    mistakes: tuple[tuple[Any, str, str], ...] = ()
     example: Any = None
     degrees: bool = False
     choices: tuple[str, ...] = ()
@@ -278,14 +301,20 @@ class Exercise:
                 within = f" ({tolerance_text(self.tol, _kind(self.solution()))})"
             note = f" {verdict.note}" if verdict.note else ""
             return CheckResult(self.name, "correct", f"correct{within}.{note}")
-        return CheckResult(self.name, "incorrect", f"not yet. {verdict.hint}".rstrip())
+        return CheckResult(
+            self.name, "incorrect", f"not yet. {verdict.hint}".rstrip(), verdict.slip
+        )
 
     def judge(self, answer: Any) -> Verdict:
         """Judge one answer by the shared rules (or the exercise's checker)."""
         if self.checker is not None:
             result = self.checker(answer)
             if isinstance(result, Verdict):
-                return result if result.ok or result.hint else Verdict(False, self.hint)
+                return (
+                    result
+                    if result.ok or result.hint
+                    else Verdict(False, self.hint, slip=result.slip)
+                )
             if isinstance(result, tuple):
                 ok, hint = bool(result[0]), str(result[1])
                 return Verdict(True) if ok else Verdict(False, hint or self.hint)
@@ -296,34 +325,40 @@ class Exercise:
             try:
                 value = read_bool(answer)
             except AnswerError as exc:
-                return Verdict(False, _sentence(exc))
+                return Verdict(False, _sentence(exc), slip="unreadable")
             return Verdict(value == solution, self.hint)
         if kind == "word":
             try:
                 word = read_choice(answer, self.choices) if self.choices else read_word(answer)
             except AnswerError as exc:
-                return Verdict(False, _sentence(exc))
+                return Verdict(False, _sentence(exc), slip="unreadable")
             return Verdict(word == read_word(solution), self.hint)
         if kind == "vector":
             want = read_vector(solution, len(solution))
             try:
                 got = read_vector(answer, len(solution), degrees=self.degrees)
             except AnswerError as exc:
-                return Verdict(False, f"Your answer could not be read: {exc}.")
+                return Verdict(False, f"Your answer could not be read: {exc}.", slip="unreadable")
             vector_mistakes = [
-                (read_vector(value, len(solution)), text) for value, text in self._mistakes()
+                (read_vector(value, len(solution)), text, slip)
+                for value, text, slip in self._mistakes()
             ]
             return judge_vector(got, want, self.tol, vector_mistakes, self.hint)
         want_number = read_number(solution)
         try:
             got_number = read_number(answer, degrees=self.degrees)
         except AnswerError as exc:
-            return Verdict(False, f"Your answer could not be read: {exc}.")
-        number_mistakes = [(read_number(value), text) for value, text in self._mistakes()]
+            return Verdict(False, f"Your answer could not be read: {exc}.", slip="unreadable")
+        number_mistakes = [
+            (read_number(value), text, slip) for value, text, slip in self._mistakes()
+        ]
         return judge_number(got_number, want_number, self.tol, number_mistakes, self.hint)
 
-    def _mistakes(self) -> list[tuple[Any, str]]:
-        return [(wrong() if callable(wrong) else wrong, str(hint)) for wrong, hint in self.mistakes]
+    def _mistakes(self) -> list[tuple[Any, str, str]]:
+        return [
+            (wrong() if callable(wrong) else wrong, hint, slip)
+            for wrong, hint, slip in self.mistakes
+        ]
 
 
 # The exercises of the notebook modules, loaded on first use, and the ones added by hand.
@@ -513,11 +548,44 @@ def check(name: str, answer: Any) -> CheckResult:
     >>> check("99-demo-hlaf", 0.45)  # doctest: +ELLIPSIS
     99-demo-hlaf: no exercise named '99-demo-hlaf'; did you mean '99-demo-half'...? (names() lists them all)
     """  # noqa: E501
+    chosen = session_student()
     try:
-        ex = get(name)
+        ex = chosen.exercise(name) if chosen is not None else get(name)
     except UnknownExercise as unknown:
-        return CheckResult(str(name), "unknown", unknown.message)
-    return ex.check(answer)
+        result = CheckResult(str(name), "unknown", unknown.message)
+    else:
+        result = ex.check(answer)
+    _record(
+        {
+            "exercise": result.name,
+            "status": result.status,
+            "slip": result.slip,
+            "answer": _answer_text(answer),
+            "message": result.message,
+            "student": chosen.name if chosen is not None else "",
+            "variant": chosen.variant(result.name) if chosen is not None else None,
+        }
+    )
+    return result
+
+
+def _answer_text(answer: Any) -> str:
+    """Write an answer as text for the class report: a string as written, else its repr."""
+    try:
+        text = answer if isinstance(answer, str) else repr(answer)
+    except Exception as exc:  # a student's object whose repr fails
+        text = f"<{type(answer).__name__}: repr failed ({type(exc).__name__})>"
+    if len(text) > ANSWER_TEXT_LIMIT:
+        text = text[: ANSWER_TEXT_LIMIT - 1] + "…"
+    return text
+
+
+def _record(entry: dict[str, Any]) -> None:
+    """Append one JSON line to the file `CHECK_LOG_VARIABLE` names; nothing when it is unset."""
+    path = os.environ.get(CHECK_LOG_VARIABLE)
+    if path:
+        with open(path, "a", encoding="utf-8") as log:
+            log.write(json.dumps(entry, ensure_ascii=False) + "\n")
 
 
 def unit(v: Sequence[Any]) -> tuple[float, ...]:
@@ -542,3 +610,18 @@ def raw_normal(a: Any, b: Any, c: Any, winding: str = "ABC") -> tuple[Fraction, 
     (Fraction(0, 1), Fraction(0, 1), Fraction(6, 1))
     """
     return tuple(triangle_normal(a, b, c, winding=winding).exact.normal)
+
+
+def point_text(p: Sequence[Any]) -> str:
+    """Write a point as prompts show it: whole numbers and fractions, ``(1/2, 0, 3)``.
+
+    Examples
+    --------
+    >>> point_text((Fraction(1, 2), 0, 3))
+    '(1/2, 0, 3)'
+    """
+    return "(" + ", ".join(str(x) for x in p) + ")"
+
+
+# A student's own numbers (students.py imports this module's names, so it comes last).
+from trinormal.exercises.students import Student, session_student, student, task  # noqa: E402

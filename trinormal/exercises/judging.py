@@ -37,6 +37,7 @@ from trinormal.display import format_number
 from trinormal.exercises.reading import Number
 
 __all__ = [
+    "SLIPS",
     "Verdict",
     "decimals",
     "is_rounding",
@@ -54,6 +55,57 @@ NEAR_EXACT = Fraction(1, 10**6)
 #: What such an answer is told.
 NOT_EXACT = "Very close, but not exactly right: this exercise wants the exact value."
 
+#: Every slip a verdict can name: a stable code (what the class report and its CSV show) and
+#: what it means. A listed mistake names its code as the third item of its tuple; the rules
+#: below name the general ones. A wrong answer that matches no slip has the code "".
+SLIPS: dict[str, str] = {
+    "reversed-order": "the points or the factors taken in the reversed order",
+    "wrong-sign": "the right size with the wrong sign",
+    "opposite-direction": "a vector pointing the opposite way",
+    "wrong-length": "the right direction with the wrong length",
+    "not-unit": "the right direction, not divided by its length",
+    "unit-for-raw": "the unit normal N / |N| where N was asked",
+    "raw-for-unit": "the raw N where the unit normal was asked",
+    "magnitude-for-area": "|N| (the parallelogram) for the triangle's area",
+    "half-area": "the area halved twice",
+    "squared-magnitude": "|N|² where |N| or the area was asked",
+    "magnitude-for-squared": "|N| where |N|² was asked",
+    "area-for-raw": "the area where the raw N_z was asked",
+    "zero-normal": "0 for a normal component that is not 0",
+    "cross-for-dot": "a cross-product component for the dot product",
+    "component-for-dot": "one component for the dot product",
+    "no-subtraction": "Lagrange's identity without its subtraction",
+    "unsquared-dot": "U · V subtracted instead of its square",
+    "added-dot-squared": "(U · V)² added instead of subtracted",
+    "linear-scaling": "the scale factor itself (a length) for an area or N",
+    "cubic-scaling": "the cube of the scale factor (a volume)",
+    "inverse-factor": "the inverse factor (new to old)",
+    "unit-normals-summed": "unit normals summed instead of raw normals",
+    "half-normals": "N / 2 summed instead of N",
+    "implicit-bit-missed": "the stored bits without the implicit leading bit",
+    "whole-format": "the whole format's bits for the significand",
+    "bits-for-digits": "bits for decimal digits",
+    "rounded-up": "a value rounded up to a whole number",
+    "rounded-down": "a value rounded down to a whole number",
+    "float32": "float32's count for float64",
+    "round-trip-digits": "the round-trip digit count (17)",
+    "radians-for-degrees": "radians for degrees",
+    "complement-angle": "90° minus the angle",
+    "uniform-weight": "uniform weights instead of angle weights",
+    "neighbour-angle-only": "divided by the neighbour's angle alone",
+    "angle-difference": "divided by the difference of the angles",
+    "neighbour-share": "the neighbour's share instead of the sliver's",
+    "normal-as-point": "the normal transformed like a point (M n)",
+    "untransformed": "the value before the transform",
+    "no-inverse-transpose": "det(M) (U × V) without M⁻ᵀ",
+    "degenerate": "points on one line: no triangle",
+    "tilted": "a normal that is not straight down",
+    "rounded": "the right value rounded too coarsely",
+    "not-exact": "very close, but not the exact value",
+    "unreadable": "an answer that could not be read",
+    "whole-vector": "a whole vector where one component was asked",
+}
+
 #: An answer as judged: one number, or a vector of them.
 Answer = TypeVar("Answer", Number, Sequence[Number])
 
@@ -70,11 +122,14 @@ class Verdict:
         For a wrong answer: what is true of it and what to try.
     note : str
         For a right answer: anything worth adding (empty for most).
+    slip : str
+        For a wrong answer: the code in `SLIPS` of the slip it matched, "" for none.
     """
 
     ok: bool
     hint: str = ""
     note: str = ""
+    slip: str = ""
 
 
 def _q(x: Number | int) -> Fraction:
@@ -218,7 +273,7 @@ def judge_number(
     got: Number,
     want: Number,
     tol: float | None,
-    mistakes: Sequence[tuple[Number, str]] = (),
+    mistakes: Sequence[tuple[Number, str, str]] = (),
     hint: str = "",
 ) -> Verdict:
     """Judge one number against the solution, with the hint that is true for it.
@@ -234,11 +289,11 @@ def judge_number(
     if known is not None:
         return known
     if want != 0 and same_number(-_q(got), want, tol):
-        return Verdict(False, "Wrong sign.")
+        return Verdict(False, "Wrong sign.", slip="wrong-sign")
     if tol is not None and is_rounding(got, want, fine=False):
-        return Verdict(False, _rounded_hint(got, tol, "number"))
+        return Verdict(False, _rounded_hint(got, tol, "number"), slip="rounded")
     if tol is None and want != 0 and abs(_q(got) - _q(want)) <= NEAR_EXACT * abs(_q(want)):
-        return Verdict(False, NOT_EXACT)
+        return Verdict(False, NOT_EXACT, slip="not-exact")
     return Verdict(False, hint)
 
 
@@ -246,20 +301,20 @@ def _right_or_listed(
     got: Answer,
     want: Answer,
     tol: float | None,
-    mistakes: Sequence[tuple[Answer, str]],
+    mistakes: Sequence[tuple[Answer, str, str]],
     same: Callable[[Answer, Answer, float | None], bool],
     near: Callable[[Answer, Answer, float | None], bool],
 ) -> Verdict | None:
     """Return the verdict on a right answer or on a listed mistake; None for any other answer.
 
     ``same`` says whether an answer counts as the solution, ``near`` whether it is
-    a mistake (equal to it or rounded from it): the first listed one it is gets its hint.
+    a mistake (equal to it or rounded from it): the first listed one it is gets its hint and slip.
     """
     if same(got, want, tol):
         return Verdict(True)
-    for value, text in mistakes:
+    for value, text, slip in mistakes:
         if near(got, value, tol):
-            return Verdict(False, text)
+            return Verdict(False, text, slip=slip)
     return None
 
 
@@ -296,7 +351,7 @@ def judge_vector(
     got: Sequence[Number],
     want: Sequence[Number],
     tol: float | None,
-    mistakes: Sequence[tuple[Sequence[Number], str]] = (),
+    mistakes: Sequence[tuple[Sequence[Number], str, str]] = (),
     hint: str = "",
 ) -> Verdict:
     """Judge a vector against the solution, with the hint that is true for it.
@@ -314,9 +369,9 @@ def judge_vector(
         return known
     g, w = [_q(x) for x in got], [_q(x) for x in want]
     if any(w) and same_vector([-x for x in g], w, tol):
-        return Verdict(False, "Your vector points the opposite way.")
+        return Verdict(False, "Your vector points the opposite way.", slip="opposite-direction")
     if tol is not None and _rounded_vector(got, w):
-        return Verdict(False, _rounded_hint(_coarsest(got), tol, "vector"))
+        return Verdict(False, _rounded_hint(_coarsest(got), tol, "vector"), slip="rounded")
     if any(g) and any(w):
         sine = None if tol is None else _tol(tol)
         if _cross_zero(g, w, sine):
@@ -326,17 +381,21 @@ def judge_vector(
             )
             if not same_way:
                 return Verdict(
-                    False, "Your vector points the opposite way, and its length differs too."
+                    False,
+                    "Your vector points the opposite way, and its length differs too.",
+                    slip="opposite-direction",
                 )
             if unit:
                 return Verdict(
-                    False, "Right direction, but not a unit vector: divide it by its length."
+                    False,
+                    "Right direction, but not a unit vector: divide it by its length.",
+                    slip="not-unit",
                 )
-            return Verdict(False, "Right direction, wrong length.")
+            return Verdict(False, "Right direction, wrong length.", slip="wrong-length")
     if tol is None and any(w):
         err = sum(((a - b) ** 2 for a, b in zip(g, w, strict=True)), Fraction(0))
         if err <= NEAR_EXACT**2 * _dot(w, w):
-            return Verdict(False, NOT_EXACT)
+            return Verdict(False, NOT_EXACT, slip="not-exact")
     return Verdict(False, hint)
 
 

@@ -6,19 +6,19 @@ import math
 from typing import Any
 
 from trinormal.core import triangle_normal
-from trinormal.exercises import AnswerError, Exercise, Verdict
+from trinormal.exercises import AnswerError, Exercise, Verdict, point_text
 from trinormal.exercises.reading import VectorGiven, read_expression
 
 #: The edges of exercise 02-lagrange.
 LAGRANGE_U, LAGRANGE_V = (1, 2, 2), (2, 0, 0)
 
 
-def _dot(p: tuple[int, ...], q: tuple[int, ...]) -> int:
+def _dot(p: tuple[Any, ...], q: tuple[Any, ...]) -> Any:
     return sum(a * b for a, b in zip(p, q, strict=True))
 
 
-def _lagrange() -> Any:
-    return triangle_normal((0, 0, 0), LAGRANGE_U, LAGRANGE_V).exact.magnitude_squared
+def _lagrange(u: tuple[Any, ...], v: tuple[Any, ...]) -> Any:
+    return triangle_normal((0, 0, 0), u, v).exact.magnitude_squared
 
 
 def _scaling_power() -> int:
@@ -62,9 +62,13 @@ def _check_nz(answer: Any) -> Verdict:
             return Verdict(
                 False, "Your last component is right: give it alone, not the whole vector."
             )
-        return Verdict(False, "That is a whole vector: give only its z component, one expression.")
+        return Verdict(
+            False,
+            "That is a whole vector: give only its z component, one expression.",
+            slip="whole-vector",
+        )
     except AnswerError as error:
-        return Verdict(False, f"Your answer could not be read: {error}.")
+        return Verdict(False, f"Your answer could not be read: {error}.", slip="unreadable")
     expr, unknown = _rename(expr, loose)
     for name in unknown:  # "UxVy": two names run together
         key = name.replace("_", "").lower()
@@ -86,6 +90,7 @@ def _check_nz(answer: Any) -> Verdict:
             False,
             "That is N_z of U × V, the order A → B → C. V × U has its factors swapped: "
             "what does that do to the sign?",
+            slip="reversed-order",
         )
     used = {str(s) for s in expr.free_symbols}
     if used & {"Uz", "Vz"}:
@@ -111,6 +116,39 @@ def _rename(expr: Any, loose: dict[str, Any]) -> tuple[Any, list[str]]:
     return expr, sorted(unknown)
 
 
+def lagrange_exercise(u: tuple[Any, ...], v: tuple[Any, ...]) -> Exercise:
+    """Build 02-lagrange on the edges ``u`` and ``v`` (a student's own, or the notebook's)."""
+    return Exercise(
+        "02-lagrange",
+        f"U = {point_text(u)} and V = {point_text(v)}. Use Lagrange's identity to find |N|² "
+        "exactly.",
+        expected=lambda: _lagrange(u, v),
+        hint="|N|² = |U|²|V|² − (U · V)²: compute the three dot products first.",
+        mistakes=(
+            (
+                lambda: _dot(u, u) * _dot(v, v),
+                "That is |U|²|V|²: now subtract (U · V)².",
+                "no-subtraction",
+            ),
+            (
+                lambda: _dot(u, u) * _dot(v, v) - _dot(u, v),
+                "You subtracted U · V: subtract its square, (U · V)².",
+                "unsquared-dot",
+            ),
+            (
+                lambda: _dot(u, u) * _dot(v, v) + _dot(u, v) ** 2,
+                "(U · V)² is subtracted, not added.",
+                "added-dot-squared",
+            ),
+            (
+                lambda: math.sqrt(_lagrange(u, v)),
+                "That is |N|: the question asks for |N|².",
+                "magnitude-for-squared",
+            ),
+        ),
+    )
+
+
 EXERCISES = (
     Exercise(
         "02-nz-reversed",
@@ -126,35 +164,13 @@ EXERCISES = (
         expected=_scaling_power,
         hint="Each edge is scaled by s, and N multiplies two edges.",
         mistakes=(
-            (1, "Each edge grows by s, but N is a product of two edges."),
-            (3, "Three factors of s would scale a volume; N is a product of two edges."),
+            (1, "Each edge grows by s, but N is a product of two edges.", "linear-scaling"),
+            (
+                3,
+                "Three factors of s would scale a volume; N is a product of two edges.",
+                "cubic-scaling",
+            ),
         ),
     ),
-    Exercise(
-        "02-lagrange",
-        "U = (1, 2, 2) and V = (2, 0, 0). Use Lagrange's identity to find |N|² exactly.",
-        expected=_lagrange,
-        hint="|N|² = |U|²|V|² − (U · V)²: compute the three dot products first.",
-        mistakes=(
-            (
-                lambda: _dot(LAGRANGE_U, LAGRANGE_U) * _dot(LAGRANGE_V, LAGRANGE_V),
-                "That is |U|²|V|²: now subtract (U · V)².",
-            ),
-            (
-                lambda: (
-                    _dot(LAGRANGE_U, LAGRANGE_U) * _dot(LAGRANGE_V, LAGRANGE_V)
-                    - _dot(LAGRANGE_U, LAGRANGE_V)
-                ),
-                "You subtracted U · V: subtract its square, (U · V)².",
-            ),
-            (
-                lambda: (
-                    _dot(LAGRANGE_U, LAGRANGE_U) * _dot(LAGRANGE_V, LAGRANGE_V)
-                    + _dot(LAGRANGE_U, LAGRANGE_V) ** 2
-                ),
-                "(U · V)² is subtracted, not added.",
-            ),
-            (lambda: math.sqrt(_lagrange()), "That is |N|: the question asks for |N|²."),
-        ),
-    ),
+    lagrange_exercise(LAGRANGE_U, LAGRANGE_V),
 )

@@ -25,11 +25,13 @@ EXERCISES = (
             (
                 lambda: unit(raw_normal(*ROW5)),
                 "Right direction, but that is the unit normal: the raw N keeps its length |N|.",
+                "unit-for-raw",
             ),
             (
                 lambda: raw_normal(*ROW5, winding="ACB"),
                 "Your vector points the opposite way: that is V × U. N = U × V with "
                 "U = B − A first.",
+                "reversed-order",
             ),
         ),
     ),
@@ -44,6 +46,7 @@ EXERCISES = (
             (
                 lambda: raw_normal(*ROW5),
                 "Right direction, but that is the raw N: divide it by its length |N|.",
+                "raw-for-unit",
             ),
         ),
     ),

@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from functools import partial
 from typing import Any
 
 from trinormal.core import triangle_normal
 from trinormal.display import format_number, format_surd
-from trinormal.exercises import AnswerError, Exercise, Verdict, read_points, read_vector
+from trinormal.exercises import AnswerError, Exercise, Verdict, point_text, read_points, read_vector
 from trinormal.exercises.reading import is_exact
 from trinormal.tolerances import DEFAULT_TOL
 
@@ -32,7 +33,7 @@ SCALE_FACTOR = 3
 
 
 def _unreadable(error: Exception) -> Verdict:
-    return Verdict(False, f"Your answer could not be read: {error}.")
+    return Verdict(False, f"Your answer could not be read: {error}.", slip="unreadable")
 
 
 def _check_down_acb(answer: Any) -> Verdict:
@@ -48,11 +49,14 @@ def _check_down_acb(answer: Any) -> Verdict:
             False,
             "These points make no triangle: they lie on one line (or two of them coincide), "
             "so the area is exactly 0 and there is no normal at all.",
+            slip="degenerate",
         )
     if nx == 0 and ny == 0:
         if nz > 0:
             return Verdict(
-                False, "In the order A→C→B your normal points straight up (+z): swap B and C."
+                False,
+                "In the order A→C→B your normal points straight up (+z): swap B and C.",
+                slip="reversed-order",
             )
         note = ""
         if r.degenerate:
@@ -69,6 +73,7 @@ def _check_down_acb(answer: Any) -> Verdict:
         f"In the order A→C→B your normal is {off} away from straight down: it must have no x or "
         "y part. Put all three points at the same height z, then check the order A→C→B with "
         "the right-hand rule.",
+        slip="tilted",
     )
 
 
@@ -82,19 +87,19 @@ def _angle_from_down(nx: Fraction, ny: Fraction, nz: Fraction) -> str:
     return f"{format_number(degrees, 2)}°"
 
 
-def _check_collinear(answer: Any) -> Verdict:
+def _check_collinear(answer: Any, ab: tuple[Any, Any] = COLLINEAR_AB) -> Verdict:
     """Exact inputs are judged exactly; floats within the stated tolerance."""
     try:
         c = tuple(read_vector(answer))
-        r = triangle_normal(*COLLINEAR_AB, c)
+        r = triangle_normal(*ab, c)
     except (AnswerError, ValueError, TypeError) as error:
         return _unreadable(error)
-    a, b = COLLINEAR_AB
+    a, b = ab
     if c in (tuple(map(Fraction, a)), tuple(map(Fraction, b))):
         return Verdict(
             False, "C must be a new point, not A or B again (that is the easy way to area 0)."
         )
-    distance = _distance_to_line(r.exact.magnitude_squared)
+    distance = _distance_to_line(r.exact.magnitude_squared, ab)
     if r.exact.magnitude_squared == 0:
         return Verdict(True)
     exact_input = all(is_exact(x) for x in c)
@@ -111,20 +116,19 @@ def _check_collinear(answer: Any) -> Verdict:
     )
 
 
-def _distance_to_line(magnitude_squared: Fraction) -> str:
+def _distance_to_line(magnitude_squared: Fraction, ab: Any) -> str:
     """|N| / |B − A|: how far C is from the line through A and B."""
-    a, b = COLLINEAR_AB
+    a, b = ab
     ab2 = sum((q - p) ** 2 for p, q in zip(a, b, strict=True))
     q = Fraction(magnitude_squared) / ab2
     return format_surd(False, q.numerator, q.denominator, 2)
 
 
-def _area_factor() -> Fraction:
+def _area_factor(abc: Any, k: int) -> Fraction:
     """Measure area(kA, kB, kC) / area(A, B, C) exactly: the square root of the |N|² ratio."""
-    a, b, c = SCALE_ABC
-    k = SCALE_FACTOR
+    a, b, c = abc
     before = triangle_normal(a, b, c).exact.magnitude_squared
-    ka, kb, kc = (tuple(k * x for x in p) for p in SCALE_ABC)
+    ka, kb, kc = (tuple(k * x for x in p) for p in abc)
     after = triangle_normal(ka, kb, kc).exact.magnitude_squared
     ratio = after / before
     root = Fraction(math.isqrt(ratio.numerator), math.isqrt(ratio.denominator))
@@ -133,9 +137,53 @@ def _area_factor() -> Fraction:
     return root
 
 
-def _on_the_line() -> tuple[Fraction, ...]:
-    a, b = COLLINEAR_AB
+def _on_the_line(ab: Any) -> tuple[Fraction, ...]:
+    a, b = ab
     return tuple(p + Fraction(1, 3) * (q - p) for p, q in zip(a, b, strict=True))
+
+
+def collinear_exercise(ab: tuple[Any, Any]) -> Exercise:
+    """Build 05-collinear on two points A, B (a student's own, or `COLLINEAR_AB`)."""
+    return Exercise(
+        "05-collinear",
+        f"A = {point_text(ab[0])} and B = {point_text(ab[1])}. Give a point C, different from "
+        "both, that makes the area 0 (exact numbers must be exactly on the line; floats count when "
+        "the triangle is thin compared with its longest side: its height at most "
+        "trinormal's default tolerance, 1e-12, times that side).",
+        checker=partial(_check_collinear, ab=ab),
+        example=partial(_on_the_line, ab),
+    )
+
+
+def scale_area_exercise(abc: Any, k: int) -> Exercise:
+    """Build 05-scale-area on a triangle and a whole factor (a student's own, or the notebook's)."""
+    a, b, c = (point_text(p) for p in abc)
+    return Exercise(
+        "05-scale-area",
+        f"Multiply every coordinate of A = {a}, B = {b}, "
+        f"C = {c} by {k}. By what number is the area multiplied?",
+        expected=partial(_area_factor, abc, k),
+        hint="Compute the area before and after (triangle_normal(...).area, or the explorer's "
+        "readout) and divide the one by the other.",
+        mistakes=(
+            (
+                k,
+                "Each edge grows by that factor, but the area is a product of two edges.",
+                "linear-scaling",
+            ),
+            (
+                k**3,
+                "That is how a volume grows (three lengths); an area is two lengths.",
+                "cubic-scaling",
+            ),
+            (
+                Fraction(1, k**2),
+                "That is the factor from the new area back to the old one: divide the new "
+                "area by the old.",
+                "inverse-factor",
+            ),
+        ),
+    )
 
 
 EXERCISES = (
@@ -146,36 +194,6 @@ EXERCISES = (
         checker=_check_down_acb,
         example=((0, 0, 1), (1, 0, 1), (0, 1, 1)),
     ),
-    Exercise(
-        "05-collinear",
-        f"A = {COLLINEAR_AB[0]} and B = {COLLINEAR_AB[1]}. Give a point C, different from both, "
-        "that makes the area 0 (exact numbers must be exactly on the line; floats count when "
-        "the triangle is thin compared with its longest side: its height at most "
-        "trinormal's default tolerance, 1e-12, times that side).",
-        checker=_check_collinear,
-        example=_on_the_line,
-    ),
-    Exercise(
-        "05-scale-area",
-        f"Multiply every coordinate of A = {SCALE_ABC[0]}, B = {SCALE_ABC[1]}, "
-        f"C = {SCALE_ABC[2]} by {SCALE_FACTOR}. By what number is the area multiplied?",
-        expected=_area_factor,
-        hint="Compute the area before and after (triangle_normal(...).area, or the explorer's "
-        "readout) and divide the one by the other.",
-        mistakes=(
-            (
-                SCALE_FACTOR,
-                "Each edge grows by that factor, but the area is a product of two edges.",
-            ),
-            (
-                SCALE_FACTOR**3,
-                "That is how a volume grows (three lengths); an area is two lengths.",
-            ),
-            (
-                Fraction(1, SCALE_FACTOR**2),
-                "That is the factor from the new area back to the old one: divide the new "
-                "area by the old.",
-            ),
-        ),
-    ),
+    collinear_exercise(COLLINEAR_AB),
+    scale_area_exercise(SCALE_ABC, SCALE_FACTOR),
 )

@@ -38,8 +38,13 @@ EXERCISES = (
             (
                 lambda: _float64_bits() - 1,
                 "That is nmant, the stored bits: one more leading bit is implicit.",
+                "implicit-bit-missed",
             ),
-            (64, "64 is the whole format, sign and exponent included: count the significand."),
+            (
+                64,
+                "64 is the whole format, sign and exponent included: count the significand.",
+                "whole-format",
+            ),
         ),
     ),
     Exercise(
@@ -51,31 +56,41 @@ EXERCISES = (
         hint="Each significand bit is worth log10(2) decimal digits: count the bits, then "
         "multiply.",
         mistakes=(
-            (_float64_bits, "That is the number of bits: multiply it by log10(2)."),
+            (
+                _float64_bits,
+                "That is the number of bits: multiply it by log10(2).",
+                "bits-for-digits",
+            ),
             (
                 lambda: (_float64_bits() - 1) * math.log10(2),
                 "That counts the stored bits (nmant) only: p includes the implicit leading bit.",
+                "implicit-bit-missed",
             ),
             (
                 lambda: math.ceil(_float64_digits()),
                 "That is p · log10(2) rounded up to a whole number: give the value itself.",
+                "rounded-up",
             ),
             (
                 lambda: math.floor(_float64_digits()),
                 "That is p · log10(2) rounded down to a whole number: give the value itself.",
+                "rounded-down",
             ),
             (
                 _float32_digits,
                 "That is float32's count, from its 24 significand bits: a float64 has more.",
+                "float32",
             ),
             (
                 lambda: round(_float32_digits()),
                 "That is about float32's count, from its 24 significand bits: a float64 has more.",
+                "float32",
             ),
             (
                 17,
                 "17 digits are what it takes to write any float64 so that it reads back "
                 "exactly; the digits it carries are fewer: count log10(2) per significand bit.",
+                "round-trip-digits",
             ),
         ),
     ),

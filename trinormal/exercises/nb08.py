@@ -40,11 +40,13 @@ EXERCISES = (
             (
                 lambda: _corner_angle(degrees=False),
                 "That looks like radians: the question asks for degrees (math.degrees).",
+                "radians-for-degrees",
             ),
             (
                 lambda: 90 - _corner_angle(),
                 "That is 90° minus the angle between the two normals: measure the angle "
                 "between the normals themselves.",
+                "complement-angle",
             ),
         ),
     ),
@@ -58,20 +60,27 @@ EXERCISES = (
         hint="Angle weighting weighs each face by its corner angle: divide the sliver's angle "
         "by the sum of both.",
         mistakes=(
-            (0.5, "One half is what uniform weighting gives; weigh by the angles."),
+            (
+                0.5,
+                "One half is what uniform weighting gives; weigh by the angles.",
+                "uniform-weight",
+            ),
             (
                 Fraction(2, 90),
                 "That divides by the neighbour's angle alone: divide by the sum of both "
                 "angles, the sliver's included.",
+                "neighbour-angle-only",
             ),
             (
                 Fraction(2, 88),
                 "That divides by the difference of the angles: divide by their sum.",
+                "angle-difference",
             ),
             (
                 Fraction(90, 92),
                 "That is the neighbour's share: the sliver gets the rest, its own angle over "
                 "the sum.",
+                "neighbour-share",
             ),
         ),
     ),

@@ -36,7 +36,11 @@ EXERCISES = (
         tol=LAMBERT_TOL,
         hint="The dot product of the two unit vectors, clipped at zero.",
         mistakes=(
-            (0.6, "That is l's y component; n · l multiplies matching components and adds."),
+            (
+                0.6,
+                "That is l's y component; n · l multiplies matching components and adds.",
+                "component-for-dot",
+            ),
         ),
     ),
     Exercise(

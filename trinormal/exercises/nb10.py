@@ -35,15 +35,18 @@ EXERCISES = (
                 lambda: unit((2, 1, 0)),
                 "That is M n normalised: the normal moved like a point. Use M⁻ᵀ, the "
                 "inverse transpose, instead.",
+                "normal-as-point",
             ),
             (
                 (1 / 2, 1, 0),
                 "Right direction, but not a unit vector yet: divide by its length.",
+                "not-unit",
             ),
             (
                 lambda: unit((1, 1, 0)),
                 "That is the normal before the scale: stretching x tilts the plane, so its "
                 "normal changes too.",
+                "untransformed",
             ),
         ),
     ),
@@ -57,12 +60,18 @@ EXERCISES = (
                 (0, 0, 24),
                 "That is det(M) · (U × V). The identity is det(M) · M⁻ᵀ (U × V): apply M⁻ᵀ "
                 "too, or compute MU and MV and cross them.",
+                "no-inverse-transpose",
             ),
-            ((0, 0, 1), "That is U × V before the transform: transform U and V first."),
+            (
+                (0, 0, 1),
+                "That is U × V before the transform: transform U and V first.",
+                "untransformed",
+            ),
             (
                 (0, 0, -6),
                 "Your vector points the opposite way: det(M) is positive, so the transform "
                 "keeps the orientation.",
+                "reversed-order",
             ),
         ),
     ),

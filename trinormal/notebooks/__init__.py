@@ -14,6 +14,12 @@ student's work is never overwritten by accident. Errors print one line and exit 
 status 2.
 
 Standard library only: it runs before the notebooks' own libraries are installed.
+
+``trinormal-notebooks report SUBMISSIONS…`` runs handed-in notebooks and writes the
+class report (`trinormal.notebooks.report`, `trinormal.notebooks.class_report`);
+``trinormal-notebooks worksheet --students ROSTER --out DIR`` writes worksheets with
+each student's own numbers (`trinormal.notebooks.worksheet`). To copy the notebooks
+into a folder called ``report`` or ``worksheet``, write ``./report``.
 """
 
 from __future__ import annotations
@@ -52,12 +58,12 @@ def notebooks_source() -> Path:
     >>> (notebooks_source() / "01_worked_example.ipynb").is_file()
     True
     """
-    here = Path(__file__).resolve().parent
-    for folder in (here / "_notebooks", here.parent / "notebooks"):
+    package = Path(__file__).resolve().parent.parent
+    for folder in (package / "_notebooks", package.parent / "notebooks"):
         if any(folder.glob("[0-9][0-9]_*.ipynb")):
             return folder
     raise FileNotFoundError(
-        f"the notebooks are missing from this installation ({here / '_notebooks'}): "
+        f"the notebooks are missing from this installation ({package / '_notebooks'}): "
         "reinstall trinormal"
     )
 
@@ -97,7 +103,9 @@ class _Parser(argparse.ArgumentParser):
 def _parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="trinormal-notebooks",
-        description="Copy trinormal's eleven notebooks (and the data they read) into a folder.",
+        description="Copy trinormal's eleven notebooks (and the data they read) into a folder. "
+        "Also: 'trinormal-notebooks report --help' (the class report from handed-in notebooks; "
+        "it runs the students' code on this machine) and 'trinormal-notebooks worksheet --help'.",
     )
     parser.add_argument("dest", metavar="DEST", help="the folder to copy into (made if missing)")
     parser.add_argument(
@@ -112,7 +120,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     Parameters
     ----------
     argv : sequence of str, optional
-        ``DEST`` and optionally ``--force``; ``sys.argv[1:]`` by default.
+        ``DEST`` and optionally ``--force``, or ``report …`` or ``worksheet …``;
+        ``sys.argv[1:]`` by default.
 
     Returns
     -------
@@ -128,7 +137,16 @@ def main(argv: Sequence[str] | None = None) -> int:
     >>> status
     0
     """
-    args = _parser().parse_args(sys.argv[1:] if argv is None else argv)
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["report"]:
+        from trinormal.notebooks.commands import report_main
+
+        return report_main(argv[1:])
+    if argv[:1] == ["worksheet"]:
+        from trinormal.notebooks.commands import worksheet_main
+
+        return worksheet_main(argv[1:])
+    args = _parser().parse_args(argv)
     dest = Path(args.dest)
     prog = "trinormal-notebooks"
     try:
@@ -154,7 +172,3 @@ def main(argv: Sequence[str] | None = None) -> int:
     extra = f" and {others} data file{'s' if others > 1 else ''}" if others else ""
     print(f"Copied {count} notebooks{extra} into {dest.resolve()}")
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
