@@ -191,7 +191,7 @@ def test_without_a_name_the_exercises_are_the_notebooks_own():
     assert get("04-2d-nz").prompt.startswith("The 2D triangle P = (0, 0), Q = (0, 2), R = (3, 0),")
     assert get("05-collinear").prompt.startswith("A = (1, 2, 0) and B = (3, 3, 1). Give a point C")
     assert get("05-scale-area").prompt.startswith(
-        "Multiply every coordinate of A = (1, 0, 2), B = (3, 1, 0), C = (-1, 2, 1) by 3."
+        "Multiply every coordinate of A = (1, 0, 1), B = (1, 1, 0), C = (-1, 1, 1) by 3."
     )
     assert check("01-normal", (1, 1, 1)).correct and not check("01-normal", (0, 0, 1)).correct
 

@@ -396,11 +396,14 @@ def test_any_point_on_the_line_is_collinear():
 
 
 def test_the_scaled_triangle_can_be_typed_in_the_explorer():
-    # 05-scale-area says "type the new coordinates in the boxes": the explorer takes each one
-    from trinormal.exercises.nb05 import SCALE_ABC, SCALE_FACTOR
+    # 05-scale-area says "type the new coordinates in the boxes": the explorer takes each one,
+    # in the notebook's triangle and in every student's variant
+    from trinormal.exercises.nb05 import EXPLORER_RANGE, SCALE_ABC, SCALE_FACTOR
+    from trinormal.exercises.variants import TEMPLATES
     from trinormal.explorer import Explorer
 
     ex = Explorer(a=SCALE_ABC[0], b=SCALE_ABC[1], c=SCALE_ABC[2])
+    assert (ex.view.bounds[0], ex.view.bounds[1]) == (-EXPLORER_RANGE, EXPLORER_RANGE)
     before = ex.result.area
     for p, point in zip("abc", SCALE_ABC, strict=True):
         for q, x in zip("xyz", point, strict=True):
@@ -408,6 +411,9 @@ def test_the_scaled_triangle_can_be_typed_in_the_explorer():
             assert ex.message.value == "", ex.message.value
     assert ex.result.exact.c == tuple(SCALE_FACTOR * x for x in SCALE_ABC[2])
     assert check("05-scale-area", ex.result.area / before)
+    (template,) = [t for t in TEMPLATES if t.group == "05-scale-area"]
+    for triangle, k in template.numbers():
+        assert all(abs(k * x) <= EXPLORER_RANGE for p in triangle for x in p), (triangle, k)
 
 
 def test_exact_properties_are_judged_exactly_and_a_near_miss_is_measured():

@@ -30,6 +30,9 @@ SCALE_ABC: tuple[tuple[int, int, int], tuple[int, int, int], tuple[int, int, int
     (-1, 1, 1),
 )
 SCALE_FACTOR = 3
+#: The explorer's default range (``Explorer(min=-5, max=5)``): every coordinate 05-scale-area
+#: asks a student to type, in the notebook and in each student's variant, lies within it.
+EXPLORER_RANGE = 5
 
 
 def _unreadable(error: Exception) -> Verdict:

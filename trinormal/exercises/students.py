@@ -166,7 +166,7 @@ def task(name: str) -> None:
     Examples
     --------
     >>> task("05-scale-area")  # doctest: +ELLIPSIS
-    05-scale-area: Multiply every coordinate of A = (1, 0, 2), B = (3, 1, 0), C = (-1, 2, 1) by 3...
+    05-scale-area: Multiply every coordinate of A = (1, 0, 1), B = (1, 1, 0), C = (-1, 1, 1) by 3...
     """
     chosen = session_student()
     _print_task(name, get if chosen is None else chosen.exercise)

@@ -117,8 +117,11 @@ def _clean_flat(pqr: Any) -> bool:
 
 
 def _clean_scale(abk: Any) -> bool:
+    from trinormal.exercises.nb05 import EXPLORER_RANGE
+
     triangle: tuple[Point, ...] = abk[0]
-    return any(_normal(triangle))
+    fits = all(abs(abk[1] * x) <= EXPLORER_RANGE for p in triangle for x in p)
+    return fits and any(_normal(triangle))
 
 
 def _clean_line(ab: Any) -> bool:
@@ -272,7 +275,7 @@ def variant_exercise(name: str, index: int) -> Exercise:
     Examples
     --------
     >>> variant_exercise("05-scale-area", 3).prompt[-44:]
-    'by 3. By what number is the area multiplied?'
+    'by 2. By what number is the area multiplied?'
     """
     template = _template(name)
     built = template.build(variant_numbers(name, index))
