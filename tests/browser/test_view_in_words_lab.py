@@ -32,7 +32,8 @@ CONTROLS = """() => [...document.querySelectorAll(
     '.tnx-root button, .tnx-root input, .tnx-root select, .tnx-root [data-vertex]')]
   .filter((e) => e.getClientRects().length)
   .map((e) => { e.focus(); const r = e.getBoundingClientRect(); const c = getComputedStyle(e);
-                return { name: e.getAttribute('aria-label') || e.closest('label')?.textContent || '',
+                return { name: e.getAttribute('aria-label') || e.closest('label')?.textContent
+                               || (e.matches('button') ? e.textContent : '') || '',
                          width: r.width, height: r.height, ring: c.outlineStyle }; })"""
 
 

@@ -185,8 +185,9 @@ class PrintModel:
         --------
         >>> data = print_model((0, 0, 0), (1, 0, 0), (0, 1, 0)).three_mf()
         >>> import zipfile, io
-        >>> zipfile.ZipFile(io.BytesIO(data)).namelist()
-        ['[Content_Types].xml', '_rels/.rels', '3D/3dmodel.model']
+        >>> names = zipfile.ZipFile(io.BytesIO(data)).namelist()
+        >>> len(names), names[0], names[-1]  # the content types, the relations and the model
+        (3, '[Content_Types].xml', '3D/3dmodel.model')
         """
         buffer = io.BytesIO()
         with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as z:

@@ -9,7 +9,7 @@ let forms = 0; // face-number boxes made on this page: unique ids for their labe
 /** Make `stageEl` focusable and turn the stage's camera from the keys; returns a stop function. */
 export function turnWithKeys(stageEl, stage) {
   stageEl.tabIndex = 0;
-  stageEl.setAttribute("role", "img");
+  stageEl.setAttribute("role", "group"); // not "img": the Full screen and Save picture buttons sit inside it
   stageEl.setAttribute("aria-label", "The model in 3D. Arrow keys turn it, + and − zoom, Home resets the view.");
   const onKey = (event) => {
     const step = (event.shiftKey ? 45 : 15) * (Math.PI / 180);
