@@ -21,6 +21,8 @@ from typing import Any
 from trinormal.mesh.io import READ_ERRORS, READ_NOTES
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
+from trinormal.mesh.shells import CAP_FRACTION
+from trinormal.mesh.welding import WELD_AUTO, WELD_NEAR
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = [
@@ -219,14 +221,16 @@ def site_constants() -> dict[str, Any]:
     Returns
     -------
     dict
-        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol`` and
+        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol``,
         ``selection`` (the readout of a face picked in the 3D view:
-        `trinormal.mesh.selection.selection_constants`).
+        `trinormal.mesh.selection.selection_constants`) and ``weld`` (the weld and
+        near-miss distances over the model's size, and the share of caps below which
+        an open piece encloses a volume).
 
     Examples
     --------
     >>> sorted(site_constants())
-    ['limits', 'messages', 'nouns', 'rows', 'selection', 'summary', 'tol']
+    ['limits', 'messages', 'nouns', 'rows', 'selection', 'summary', 'tol', 'weld']
     """
     return {
         "messages": dict(MESSAGES),
@@ -236,4 +240,5 @@ def site_constants() -> dict[str, Any]:
         "nouns": {k: list(t) for k, t in NOUNS.items()},
         "tol": DEFAULT_TOL,
         "selection": selection_constants(),
+        "weld": {"auto": WELD_AUTO, "near": WELD_NEAR, "cap_fraction": CAP_FRACTION},
     }

@@ -15,6 +15,8 @@ importScripts(
   "trinormal-core.js",
   "trinormal-mesh-base.js",
   "trinormal-mesh-read.js",
+  "trinormal-mesh-weld.js",
+  "trinormal-mesh-shells.js",
   "trinormal-mesh-check.js",
   "trinormal-mesh-write.js"
 );
