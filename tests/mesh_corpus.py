@@ -271,13 +271,18 @@ def slivers(scale: float) -> Model:
 
 
 def seamed(model: Model, side: Callable[[np.ndarray], np.ndarray]) -> Model:
-    """The model with its own copies of the vertices of the faces on one ``side``: a UV seam."""
+    """The model with its own copies of the vertices of the faces on one ``side``: a UV seam.
+
+    Vertices no face uses afterwards are dropped, as an exporter writes only what it uses.
+    """
     v, polys = model
     f = np.asarray(polys)
     mine = side(v[f].mean(axis=1))
     out = f.copy()
     out[mine] = f[mine] + len(v)
-    return np.vstack([v, v]), out.tolist()
+    both = np.vstack([v, v])
+    used, index = np.unique(out, return_inverse=True)
+    return both[used], index.reshape(out.shape).tolist()
 
 
 def soup(model: Model, noise: float = 0.0, seed: int = 3) -> Model:

@@ -296,8 +296,8 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
             raise ValueError(f"the weld distance must be a number >= 0, not {distance!r}")
         if asked > WELD_MAX * size:
             raise ValueError(
-                f"the weld distance {asked:g} is more than {WELD_MAX:g} of the model's size "
-                f"({size:g}): merging that far apart closes real holes"
+                f"the weld distance {asked!r} is more than {WELD_MAX!r} times the model's size "
+                f"({size!r}): merging corners that far apart closes real holes"
             )
         dist = max(asked, auto) if asked > 0 else 0.0
     exact = _exact_representatives(v)
