@@ -100,6 +100,13 @@ MESSAGES: dict[str, str] = {
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",
     "fixed": "Fixed: {faces} turned over. The report below is the repaired mesh's.",
+    # the weld control, shown when the report finds a near miss (trinormal mesh --weld)
+    "weld": "Merge corners closer than {distance}",
+    "welding": "Merging corners closer than {distance}…",
+    "welded": (
+        "Corners closer than {distance} are merged for the check and the fix, as "
+        "trinormal mesh --weld does."
+    ),
     # beside "Fix winding": what it repairs, and what it leaves to a modelling program
     "fix_nothing": (
         "Every face is wound the right way round already: there is nothing to turn over."

@@ -174,6 +174,14 @@ def _mesh_limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return f"{LIMITS[name]:,}".replace(",", "\u202f")
 
 
+def _mesh_weld(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_weld auto|near|cap_fraction``: a weld distance over the size, or the caps' share."""
+    from trinormal.mesh_page import site_constants
+
+    (name,) = args
+    return repr(site_constants()["weld"][name])
+
+
 def _mesh_api(args: list[str], page: Page, config: MkDocsConfig) -> str:
     """``mesh_api PART...``: the trinormal.mesh names those modules define, documented."""
     return mesh_api_markdown(args)
@@ -195,6 +203,7 @@ HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
     "mesh_examples": _mesh_examples,
     "mesh_limit": _mesh_limit,
     "mesh_api": _mesh_api,
+    "mesh_weld": _mesh_weld,
 }
 
 

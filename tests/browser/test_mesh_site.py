@@ -35,7 +35,7 @@ MESH_JS = [
     ROOT / "docs/assets/javascripts" / name
     for name in (
         "trinormal-core.js",
-        *(f"trinormal-mesh-{p}.js" for p in ("base", "read", "check", "write")),
+        *(f"trinormal-mesh-{p}.js" for p in ("base", "read", "weld", "shells", "check", "write")),
     )
 ]
 MESHES = ROOT / "tests/data/meshes"
