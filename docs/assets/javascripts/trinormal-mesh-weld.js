@@ -25,9 +25,10 @@ self.TrinormalMesh.part("weld", "read", function (base) {
     return Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   }
 
-  function wordsOf(x) {
-    f64[0] = x + 0.0; // -0 is 0
-    return [u32[0], u32[1]];
+  /** h mixed with the two 32-bit words of x's float64 bits (-0 is 0). */
+  function mixIn(h, x) {
+    f64[0] = x + 0.0;
+    return I.fmix(I.fmix(h ^ u32[0]) ^ u32[1]);
   }
 
   /** Each vertex's smallest index at exactly its position; null when every position is unique. */
@@ -37,11 +38,7 @@ self.TrinormalMesh.part("weld", "read", function (base) {
     var rep = null;
     for (var i = 0; i < n; i++) {
       var x = V[3 * i], y = V[3 * i + 1], z = V[3 * i + 2];
-      var h = 0, w;
-      w = wordsOf(x); h = I.fmix(h ^ w[0]); h = I.fmix(h ^ w[1]);
-      w = wordsOf(y); h = I.fmix(h ^ w[0]); h = I.fmix(h ^ w[1]);
-      w = wordsOf(z); h = I.fmix(h ^ w[0]); h = I.fmix(h ^ w[1]);
-      var slot = h & table.mask;
+      var slot = mixIn(mixIn(mixIn(0, x), y), z) & table.mask;
       for (;;) {
         var at = table.slots[slot];
         if (at < 0) {
