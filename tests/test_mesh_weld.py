@@ -204,29 +204,29 @@ def test_a_cup_is_judged_and_a_sheet_or_terrain_only_for_consistency():
 # --------------------------------------------------------------------------- the command line and the page
 
 
-def run_cli(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        [sys.executable, "-m", "trinormal.cli", "mesh", *args],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+def run_cli(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    """``trinormal mesh ARGS`` in this process: its status, stdout and stderr."""
+    from trinormal.cli import main
+
+    status = main(["mesh", *args])
+    out = capsys.readouterr()
+    return status, out.out, out.err
 
 
-def test_the_command_line_welds_on_request(tmp_path):
+def test_the_command_line_welds_on_request(tmp_path, capsys):
     v, polys = soup(BALL, 2e-6)
     path = tmp_path / "soup.obj"
     path.write_bytes(obj(v, polys))
-    plain = run_cli(str(path), "--json")
-    assert json.loads(plain.stdout)["report"]["near_miss"] == {"edges": 960, "distance": 1e-5}
+    _, plain, _ = run_cli(capsys, str(path), "--json")
+    assert json.loads(plain)["report"]["near_miss"] == {"edges": 960, "distance": 1e-5}
     for extra in (["--weld"], ["--weld", "1e-5"]):
-        out = json.loads(run_cli(str(path), "--json", *extra).stdout)["report"]
+        out = json.loads(run_cli(capsys, str(path), "--json", *extra)[1])["report"]
         assert out["n_components"] == 1 and out["near_miss"] is None, extra
     for bad in ("x", "-1", "nan"):
-        run = run_cli(str(path), "--weld", bad)
-        assert run.returncode == 2 and "--weld" in run.stderr, bad
-    run = run_cli(str(path), "--weld", "1")
-    assert run.returncode == 2 and "weld distance 1.0" in run.stderr
+        status, _, err = run_cli(capsys, str(path), "--weld", bad)
+        assert status == 2 and "--weld" in err, bad
+    status, _, err = run_cli(capsys, str(path), "--weld", "1")
+    assert status == 2 and "weld distance 1.0" in err
 
 
 def test_the_page_draws_no_merged_seam_as_a_hole(tmp_path):
