@@ -73,20 +73,27 @@ self.TrinormalMesh.part("weld", "read", function (base) {
     var cells = new Map(), cell = new Float64Array(3 * k);
     for (r = 0; r < k; r++) {
       for (a = 0; a < 3; a++) cell[3 * r + a] = Math.floor((P[3 * r + a] - lo[a]) / (2.0 * dist));
-      var key = cell[3 * r] + "," + cell[3 * r + 1] + "," + cell[3 * r + 2];
+    }
+    // a cell's key: a 32-bit hash of its three numbers (cells that share one are told apart below)
+    var keyOf = function (x, y, z) {
+      return Math.imul(x >>> 0, 73856093) ^ Math.imul(y >>> 0, 19349663) ^ Math.imul(z >>> 0, 83492791);
+    };
+    for (r = 0; r < k; r++) {
+      var key = keyOf(cell[3 * r], cell[3 * r + 1], cell[3 * r + 2]);
       var list = cells.get(key);
       if (list) list.push(r);
       else cells.set(key, [r]);
     }
     for (r = 0; r < k; r++) {
+      var cx = cell[3 * r], cy = cell[3 * r + 1], cz = cell[3 * r + 2];
       for (var dx = -1; dx <= 1; dx++) {
         for (var dy = -1; dy <= 1; dy++) {
           for (var dz = -1; dz <= 1; dz++) {
-            var near = cells.get((cell[3 * r] + dx) + "," + (cell[3 * r + 1] + dy) + "," + (cell[3 * r + 2] + dz));
+            var near = cells.get(keyOf(cx + dx, cy + dy, cz + dz));
             if (!near) continue;
             for (var n = 0; n < near.length; n++) {
               var j = near[n];
-              if (j <= r) continue;
+              if (j <= r || cell[3 * j] !== cx + dx || cell[3 * j + 1] !== cy + dy || cell[3 * j + 2] !== cz + dz) continue;
               var d = Math.max(Math.abs(P[3 * r] - P[3 * j]), Math.abs(P[3 * r + 1] - P[3 * j + 1]), Math.abs(P[3 * r + 2] - P[3 * j + 2]));
               if (d <= dist) {
                 out.i.push(r);
