@@ -134,9 +134,9 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     sign = np.where(flip[idx], -1.0, 1.0)
     fixed = np.bincount(comp[idx], weights=det * sign, minlength=nc)[:nc]
     solid = closed & orientable & (np.abs(fixed) > error)
-    cavity = shells.cavities(v, f, comp, flip, solid, scale)
+    cavity = shells._cavities(v, f, comp, flip, solid, scale)
     open_piece = ~closed & (open_edges[:nc] == boundary_edges[:nc]) & orientable
-    cap = shells.capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING)
+    cap = shells._capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING)
     inward = (solid & ((fixed < 0) != cavity)) | (cap.encloses & (cap.fixed < 0))
     flip[idx] ^= inward[comp[idx]]
     return _Winding(

@@ -28,6 +28,8 @@ import numpy as np
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray
 from trinormal.mesh.topology import _components, _HalfEdges
 
+__all__ = ["CAP_FRACTION"]
+
 #: An open piece encloses a volume when its holes' caps are less than this share of the area
 #: of the piece closed over its holes: a hemisphere's cap is 1/3 of it, a flat sheet's 1/2.
 CAP_FRACTION: float = 0.4
@@ -77,7 +79,7 @@ def _inside(point: FloatArray, corners: FloatArray) -> bool:
     return bool(abs(float(turns.sum()) / (4.0 * np.pi)) > 0.5)
 
 
-def cavities(
+def _cavities(
     v: FloatArray, f: IntArray, comp: IntArray, flip: BoolArray, solid: BoolArray, scale: FloatArray
 ) -> BoolArray:
     """Which pieces lie inside an odd number of the ``solid`` pieces (closed, with a volume).
@@ -119,7 +121,7 @@ def cavities(
 
 
 @dataclass(frozen=True)
-class Capped:
+class _Capped:
     """The open pieces closed over their holes, one entry per piece.
 
     ``encloses`` (C,): an open piece whose caps are less than `CAP_FRACTION` of the area
@@ -132,7 +134,7 @@ class Capped:
     fixed: FloatArray
 
 
-def capped(
+def _capped(
     v: FloatArray,
     he: _HalfEdges,
     comp: IntArray,
@@ -141,7 +143,7 @@ def capped(
     scale: FloatArray,
     ref: FloatArray,
     rounding: int,
-) -> Capped:
+) -> _Capped:
     """Close each ``candidate`` piece over its holes and measure it (see the module docstring).
 
     ``ref`` (C, 3) is each piece's reference point (unscaled), ``rounding`` the volume
@@ -150,7 +152,7 @@ def capped(
     nc = candidate.size
     zero = np.zeros(nc)
     if not candidate.any():
-        return Capped(np.zeros(nc, dtype=bool), zero, zero)
+        return _Capped(np.zeros(nc, dtype=bool), zero, zero)
     f = he.faces
     nv = v.shape[0]
     faces = np.flatnonzero((comp >= 0) & candidate[np.maximum(comp, 0)])
@@ -196,4 +198,4 @@ def capped(
     error = (rounding + n_terms) * np.finfo(np.float64).eps * sizes
     caps = total(hc, cap_area)
     encloses = candidate & (caps < CAP_FRACTION * (caps + total(c, area))) & (np.abs(fixed) > error)
-    return Capped(encloses, volume, fixed)
+    return _Capped(encloses, volume, fixed)

@@ -285,6 +285,21 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
     ------
     ValueError
         A distance that is negative, not finite, or above `WELD_MAX` times the size.
+
+    Examples
+    --------
+    A ball as a soup of faces, every other corner moved 2e-6 along x: a near miss.
+
+    >>> from trinormal.mesh import icosphere
+    >>> v, f = icosphere(1)
+    >>> corners = v[f].reshape(-1, 3) + np.tile([[2e-6, 0, 0], [0, 0, 0]], (120, 1))
+    >>> soup = np.arange(len(corners)).reshape(-1, 3)
+    >>> w = weld(corners, soup)
+    >>> w.merged, w.welded, w.near_edges, w.near_distance
+    (156, 0, 200, 5e-06)
+    >>> w = weld(corners, soup, True)
+    >>> w.welded, w.distance, w.near_edges
+    (42, 5e-06, 0)
     """
     v, f = vertices, faces
     size = model_size(v, f)
