@@ -260,3 +260,21 @@ def test_the_page_draws_no_merged_seam_as_a_hole(tmp_path):
     )
     assert run.returncode == 0, run.stderr
     assert json.loads(run.stdout) == [0, 1, True]
+
+
+def test_the_notebook_view_draws_a_real_hole_on_a_seamed_model_and_not_the_seam():
+    from trinormal.mesh.widget import MeshView
+
+    v, polys = seamed(tri(*uv_sphere(16, 8)), lambda c: c[:, 1] > 0)
+    f = np.array(polys)
+    # a hole at the seam, in a face that uses a copy: the report names the first vertex there
+    first = {}
+    rep = np.array([first.setdefault(tuple(p), i) for i, p in enumerate(v.tolist())])
+    hole = int(np.flatnonzero((rep[f] != f).any(axis=1))[0])
+    holed = np.delete(f, hole, axis=0)
+    r = mesh.check(v, holed)
+    assert len(r.boundary_edges) == 3 and not set(f[hole]) >= set(r.boundary_edges.ravel())
+    view = MeshView(v, holed)
+    sides = np.frombuffer(view.boundary, dtype="<i4")
+    assert len(sides) == 3  # the hole's rim, found on the file's faces; the seam is none
+    assert set((sides // 3).tolist()) <= set(range(len(holed)))
