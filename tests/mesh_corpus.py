@@ -68,8 +68,9 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
         m = parse_mesh(data, _format_of(name, None), name)
     except MeshFileError as exc:
         return {"error": str(exc), "key": exc.key}
-    r = check(m.vertices, m.faces)
-    fixed, _ = fix_winding(m.vertices, m.faces)
+    weld = name.startswith("weld-")  # the page's weld control, the CLI's --weld
+    r = check(m.vertices, m.faces, weld=weld)
+    fixed, _ = fix_winding(m.vertices, m.faces, weld=weld)
     write_mesh(scratch, m, fixed)
     before, after = m.normals_against(), m.normals_against(fixed)
     return {
@@ -273,6 +274,74 @@ def slivers(scale: float) -> Model:
     ]
     v = np.array([face[k] for face in faces for order in ORDERS for k in order], dtype=np.float64)
     return v * scale, [[3 * i, 3 * i + 1, 3 * i + 2] for i in range(len(v) // 3)]
+
+
+def seamed(model: Model, side: Callable[[np.ndarray], np.ndarray]) -> Model:
+    """The model with its own copies of the vertices of the faces on one ``side``: a UV seam.
+
+    Vertices no face uses afterwards are dropped, as an exporter writes only what it uses.
+    """
+    v, polys = model
+    f = np.asarray(polys)
+    mine = side(v[f].mean(axis=1))
+    out = f.copy()
+    out[mine] = f[mine] + len(v)
+    both = np.vstack([v, v])
+    used, index = np.unique(out, return_inverse=True)
+    return both[used], index.reshape(out.shape).tolist()
+
+
+def soup(model: Model, noise: float = 0.0, seed: int = 3) -> Model:
+    """Every face with its own three corners, moved by up to ``noise`` of the size at random."""
+    v, polys = model
+    corners = v[np.asarray(polys)].reshape(-1, 3)
+    rng = np.random.default_rng(seed)
+    size = float((v.max(axis=0) - v.min(axis=0)).max())
+    corners = corners + rng.uniform(-noise, noise, corners.shape) * size
+    return corners, np.arange(len(corners)).reshape(-1, 3).tolist()
+
+
+def last_bits(model: Model, seed: int = 4) -> Model:
+    """A soup whose corners differ in their last bits: what a CAD tessellation writes."""
+    v, polys = soup(model)
+    rng = np.random.default_rng(seed)
+    steps = rng.integers(-2, 3, v.shape)
+    out = v.copy()
+    for _ in range(2):
+        out = np.where(steps > 0, np.nextafter(out, np.inf), out)
+        out = np.where(steps < 0, np.nextafter(out, -np.inf), out)
+        steps = np.sign(steps) * (np.abs(steps) - 1)
+    return out, polys
+
+
+def shells_and_open_pieces() -> Iterator[tuple[str, Model]]:
+    """Welded seams, soups, near misses, hollow models, cups, sheets (issue 31)."""
+    ball = tri(*icosphere(2))
+    yield "uv-seamed", seamed(tri(*uv_sphere(16, 8)), lambda c: c[:, 1] > 0)
+    yield "cad-noise", last_bits(ball)
+    yield "soup", soup(ball)
+    yield "weld-soup", soup(ball)
+    yield "near-miss", soup(ball, 2e-6)
+    yield "weld-near-miss", soup(ball, 2e-6)
+    yield "far-miss", soup(ball, 3e-3)  # a real gap: neither merged nor a near miss
+    v, f = icosphere(2)
+    inner = v * 0.6
+    yield "hollow-ball", (np.vstack([v, inner]), f.tolist() + (f[:, ::-1] + len(v)).tolist())
+    yield "hollow-ball-wrong", (np.vstack([v, inner]), f.tolist() + (f + len(v)).tolist())
+    nested = [v, inner, v * 0.3]
+    polys = f.tolist() + (f[:, ::-1] + len(v)).tolist() + (f + 2 * len(v)).tolist()
+    yield "ball-in-hollow-ball", (np.vstack(nested), polys)  # a ball inside the cavity
+    centres = v[f].mean(axis=1)
+    holed = f[centres[:, 2] < 0.9]
+    yield "ball-hole-inward", tri(v, holed[:, ::-1])
+    yield "ball-hole", tri(v, holed)
+    cup = f[centres[:, 2] < 0.05]
+    yield "cup-inward", tri(v, cup[:, ::-1])
+    yield "cup", tri(v, cup)
+    gv, gf = terrain(6, 5)
+    yield "sheet-flat", tri(gv * [1.0, 1.0, 0.0], gf)
+    yield "sheet-flat-down", tri(gv * [1.0, 1.0, 0.0], np.asarray(gf)[:, ::-1])
+    yield "terrain-up", tri(gv, gf)
 
 
 def models() -> Iterator[tuple[str, Model]]:
@@ -743,6 +812,8 @@ def corpus() -> list[tuple[str, bytes]]:
         name, data = rng.choice(small)
         files.append((f"damaged{k}-{name}", damaged(rng, data)))
     files += lenient()
+    for name, model in shells_and_open_pieces():  # after the random edits: they pick the same
+        files += every_encoding(name, model)
     names = [n for n, _ in files]
     assert len(set(names)) == len(names), "two corpus files share a name"
     return files

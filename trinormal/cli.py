@@ -47,6 +47,7 @@ import argparse
 import contextlib
 import errno
 import json
+import math
 import os
 import re
 import sys
@@ -337,8 +338,29 @@ def _mesh_parser() -> argparse.ArgumentParser:
         help="write the mesh with every piece wound consistently (and outward where closed) "
         "to OUT; its extension chooses the format",
     )
+    p.add_argument(
+        "--weld",
+        nargs="?",
+        const=True,
+        default=False,
+        type=_weld_distance,
+        metavar="DIST",
+        help="also join boundary corners up to DIST apart (without DIST: the distance the "
+        "report suggests for its near miss); corners at one position are always joined",
+    )
     p.add_argument("--json", action="store_true", help="the report as JSON")
     return p
+
+
+def _weld_distance(text: str) -> float:
+    """Read the --weld distance: a finite number >= 0."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value) or value < 0:
+        raise argparse.ArgumentTypeError(f"not a distance >= 0: {text!r}")
+    return value
 
 
 def _run_mesh(args_in: list[str]) -> int:
@@ -355,7 +377,7 @@ def _run_mesh(args_in: list[str]) -> int:
 
     try:
         data = mesh.read_mesh(args.file)
-        report = mesh.check(data.vertices, data.faces)
+        report = mesh.check(data.vertices, data.faces, weld=args.weld)
         fixed = None
         if args.fix is not None:
             out_fmt = mesh.io._format_of(args.fix, None)

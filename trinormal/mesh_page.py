@@ -22,6 +22,8 @@ from trinormal.mesh.io import READ_ERRORS, READ_NOTES
 from trinormal.mesh.printing import printing_constants
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
+from trinormal.mesh.shells import CAP_FRACTION
+from trinormal.mesh.welding import WELD_AUTO, WELD_NEAR
 from trinormal.tolerances import DEFAULT_TOL, PLANAR_TOL
 
 __all__ = [
@@ -99,6 +101,13 @@ MESSAGES: dict[str, str] = {
     "checking": "Checking {name}…",
     "fixing": "Fixing the winding…",
     "fixed": "Fixed: {faces} turned over. The report below is the repaired mesh's.",
+    # the weld control, shown when the report finds a near miss (trinormal mesh --weld)
+    "weld": "Merge corners closer than {distance}",
+    "welding": "Merging corners closer than {distance}…",
+    "welded": (
+        "Corners closer than {distance} are merged for the check and the fix, as "
+        "trinormal mesh --weld does."
+    ),
     # beside "Fix winding": what it repairs, and what it leaves to a modelling program
     "fix_nothing": (
         "Every face is wound the right way round already: there is nothing to turn over."
@@ -221,15 +230,18 @@ def site_constants() -> dict[str, Any]:
     -------
     dict
         ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol``, ``planar_tol``
-        (`trinormal.tolerances.PLANAR_TOL`, for splitting polygons) and
+        (`trinormal.tolerances.PLANAR_TOL`, for splitting polygons),
         ``selection`` (the readout of a face picked in the 3D view:
-        `trinormal.mesh.selection.selection_constants`) and ``printing`` (the report for
-        printing's templates and limits: `trinormal.mesh.printing.printing_constants`).
+        `trinormal.mesh.selection.selection_constants`), ``printing`` (the report for
+        printing's templates and limits: `trinormal.mesh.printing.printing_constants`) and
+        ``weld`` (the weld and near-miss distances over the model's size, and the share of
+        caps below which an open piece encloses a volume).
 
     Examples
     --------
     >>> sorted(site_constants())
-    ['limits', 'messages', 'nouns', 'planar_tol', 'printing', 'rows', 'selection', 'summary', 'tol']
+    ['limits', 'messages', 'nouns', 'planar_tol', 'printing', 'rows', 'selection', 'summary', 'tol',
+     'weld']
     """
     return {
         "messages": dict(MESSAGES),
@@ -241,4 +253,5 @@ def site_constants() -> dict[str, Any]:
         "planar_tol": PLANAR_TOL,
         "selection": selection_constants(),
         "printing": printing_constants(),
+        "weld": {"auto": WELD_AUTO, "near": WELD_NEAR, "cap_fraction": CAP_FRACTION},
     }

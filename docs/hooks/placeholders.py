@@ -187,6 +187,14 @@ def _mesh_units(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return shown(UNITS[name])
 
 
+def _mesh_weld(args: list[str], page: Page, config: MkDocsConfig) -> str:
+    """``mesh_weld auto|near|cap_fraction``: a weld distance over the size, or the caps' share."""
+    from trinormal.mesh_page import site_constants
+
+    (name,) = args
+    return repr(site_constants()["weld"][name])
+
+
 def _mesh_api(args: list[str], page: Page, config: MkDocsConfig) -> str:
     """``mesh_api PART...``: the trinormal.mesh names those modules define, documented."""
     return mesh_api_markdown(args)
@@ -209,6 +217,7 @@ HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
     "mesh_limit": _mesh_limit,
     "mesh_units": _mesh_units,
     "mesh_api": _mesh_api,
+    "mesh_weld": _mesh_weld,
 }
 
 

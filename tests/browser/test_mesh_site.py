@@ -36,7 +36,10 @@ MESH_JS = [
     ROOT / "docs/assets/javascripts" / name
     for name in (
         "trinormal-core.js",
-        *(f"trinormal-mesh-{p}.js" for p in ("base", "read", "check", "write", "print")),
+        *(
+            f"trinormal-mesh-{p}.js"
+            for p in ("base", "read", "weld", "shells", "check", "write", "print")
+        ),
     )
 ]
 MESHES = ROOT / "tests/data/meshes"

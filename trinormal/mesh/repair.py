@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from trinormal.mesh import shells, welding
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray, _check_faces, _check_vertices
 from trinormal.mesh.topology import _components, _HalfEdges
 
@@ -52,6 +53,10 @@ class _Winding:
     scale: FloatArray  # (C,) the power of two each piece's coordinates were divided by
     flip: BoolArray  # (F,) what fix_winding flips
     inconsistent_pairs: tuple[IntArray, IntArray]  # half-edges of those edges
+    solid: BoolArray  # (C,) closed, orientable, its volume's sign certain: judged by it
+    cavity: BoolArray  # (C,) a solid piece inside an odd number of solid pieces
+    encloses: BoolArray  # (C,) an open piece judged by its volume closed over its holes
+    capped_volume: FloatArray  # (C,) six times that volume as wound now, over scale**3
 
     @property
     def n_components(self) -> int:
@@ -62,10 +67,15 @@ class _Winding:
         return _unscaled(float(self.volume[piece]) / 6.0, float(self.scale[piece]))
 
     def outward(self, volume: FloatArray) -> list[bool | None]:
-        """True/False where the sign of ``volume`` is certain, None where it is not."""
+        """Whether each piece faces away from its material where that is certain, else None.
+
+        A solid piece faces out when its volume is positive, or negative for a cavity.
+        """
         return [
-            None if abs(vol) <= err else bool(vol > 0)
-            for vol, err in zip(volume.tolist(), self.volume_error.tolist(), strict=True)
+            None if abs(vol) <= err else bool(vol > 0) != cav
+            for vol, err, cav in zip(
+                volume.tolist(), self.volume_error.tolist(), self.cavity.tolist(), strict=True
+            )
         ]
 
 
@@ -79,6 +89,7 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     # closed: no edge of the piece is a boundary or is shared by three faces or more
     edge_comp = comp[he.order[he.starts] // 3]
     open_edges = np.bincount(edge_comp[he.counts != 2], minlength=nc)
+    boundary_edges = np.bincount(edge_comp[he.counts == 1], minlength=nc)
     closed = open_edges[:nc] == 0
 
     # neighbours across edges shared by exactly two faces: agree or disagree?
@@ -118,10 +129,15 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
         * np.finfo(np.float64).eps
         * np.bincount(comp[idx], weights=size, minlength=nc)[:nc]
     )
-    # after the consistent winding, a closed piece that encloses negative volume turns over
+    # after the consistent winding, a closed piece that encloses negative volume turns over,
+    # unless it is a cavity (shells.py); so does an open piece whose capped volume is negative
     sign = np.where(flip[idx], -1.0, 1.0)
     fixed = np.bincount(comp[idx], weights=det * sign, minlength=nc)[:nc]
-    inward = closed & orientable & (fixed < -error)
+    solid = closed & orientable & (np.abs(fixed) > error)
+    cavity = shells._cavities(v, f, comp, flip, solid, scale)
+    open_piece = ~closed & (open_edges[:nc] == boundary_edges[:nc]) & orientable
+    cap = shells._capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING)
+    inward = (solid & ((fixed < 0) != cavity)) | (cap.encloses & (cap.fixed < 0))
     flip[idx] ^= inward[comp[idx]]
     return _Winding(
         component=comp,
@@ -133,6 +149,10 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
         scale=scale,
         flip=flip,
         inconsistent_pairs=(h1[same], h2[same]),
+        solid=solid,
+        cavity=cavity,
+        encloses=cap.encloses,
+        capped_volume=cap.volume,
     )
 
 
@@ -199,14 +219,21 @@ def _volume_terms(
     return det, size
 
 
-def fix_winding(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
-    """Wind every piece of a mesh consistently, and closed pieces outward.
+def fix_winding(
+    vertices: npt.ArrayLike, faces: npt.ArrayLike, weld: float | bool = False
+) -> tuple[IntArray, IntArray]:
+    """Wind every piece of a mesh consistently, and pieces that enclose a volume outward.
 
     Parameters
     ----------
     vertices, faces : array_like
-        The mesh. Which faces agree comes from ``faces`` alone; the coordinates
-        only tell outward from inward.
+        The mesh. Faces agree or disagree across the edges they share, corners
+        at one position being one corner (`trinormal.mesh.welding`); the
+        coordinates tell outward from inward.
+    weld : float or bool, default False
+        Boundary corners closer than this are one corner too (never less than
+        ``WELD_AUTO`` times the model's size; 0: only corners at one position);
+        True: the distance the report's near miss suggests. See `trinormal.mesh.check`.
 
     Returns
     -------
@@ -219,10 +246,14 @@ def fix_winding(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> tuple[IntArray
     Notes
     -----
     A mesh already wound consistently and outward comes back unchanged, and
-    fixing a fixed mesh changes nothing. Within an open piece (one with a
-    hole or a rim) the side that needs fewer flips wins: an open sheet has no
-    inside to face away from. A closed piece whose volume is too small for
-    its sign to be trusted (a flat, doubled sheet) is only made consistent.
+    fixing a fixed mesh changes nothing. Within a piece the side that needs
+    fewer flips wins; then a closed piece faces out of its material (a cavity
+    inside another closed piece faces into the cavity), and so does an open
+    piece that mostly encloses a volume (a cup, a sphere with a hole, judged
+    closed over its holes: `trinormal.mesh.shells`). An open piece that
+    encloses nothing (a sheet, a terrain) has no inside to face away from,
+    and a closed piece whose volume is too small for its sign to be trusted
+    (a flat, doubled sheet) is only made consistent.
 
     Examples
     --------
@@ -246,7 +277,7 @@ def fix_winding(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> tuple[IntArray
     """
     v, _ = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
-    w = _winding(v, _HalfEdges.of(f))
+    w = _winding(v, welding.weld(v, f, weld).half_edges)
     flipped = np.flatnonzero(w.flip).astype(np.intp)
     return _turn_over(f, flipped), flipped
 

@@ -22,10 +22,11 @@ from trinormal.mesh.repair import _Winding, _winding
 from trinormal.mesh.topology import (
     _boundary_edges,
     _duplicates,
-    _HalfEdges,
     _non_manifold_edges,
     _non_manifold_vertices,
 )
+from trinormal.mesh.welding import round_distance
+from trinormal.mesh.welding import weld as weld_faces
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = ["NOUNS", "SUMMARY", "ComponentReport", "MeshReport", "check"]
@@ -47,14 +48,24 @@ class ComponentReport:
     orientable : bool
         The piece can be wound consistently at all (a Möbius strip cannot).
     outward : bool or None
-        For a closed, consistently wound piece: True if its normals point out
-        (the enclosed volume is positive), False if in; None when the question
-        has no answer (an open or inconsistent piece, or no volume to speak of).
+        For a consistently wound piece judged by a volume (``judged_by``): True
+        if its normals point away from its material (out of a solid, into a
+        cavity), False if they point into it; None when the question has no
+        answer (an inconsistent piece, a sheet, no volume to speak of).
     volume : float or None
-        The enclosed volume as the faces are wound now (negative: inside out),
-        for a closed, consistently wound piece; otherwise None.
+        The enclosed volume as the faces are wound now (negative: the normals
+        point in, right for a cavity), for a closed, consistently wound piece;
+        otherwise None.
     faces_to_flip : int
         How many of its faces `trinormal.mesh.fix_winding` turns over.
+    cavity : bool
+        A closed piece inside an odd number of other closed pieces: the hollow
+        of a wall with thickness, whose normals should point into it.
+    judged_by : str or None
+        What tells this piece's outside from its inside: ``"volume"`` (a closed
+        piece, its enclosed volume), ``"volume_over_holes"`` (an open piece that
+        mostly encloses a volume, closed over its holes: `trinormal.mesh.shells`),
+        or None (a sheet or terrain, no volume, or no consistent winding).
     """
 
     faces: int
@@ -64,6 +75,8 @@ class ComponentReport:
     outward: bool | None
     volume: float | None
     faces_to_flip: int
+    cavity: bool = False
+    judged_by: str | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """Return the fields as a JSON-ready dictionary."""
@@ -75,6 +88,8 @@ class ComponentReport:
             "outward": self.outward,
             "volume": self.volume,
             "faces_to_flip": self.faces_to_flip,
+            "cavity": self.cavity,
+            "judged_by": self.judged_by,
         }
 
 
@@ -122,6 +137,18 @@ class MeshReport:
     measures : trinormal.mesh.printing.Measures
         The surface area and the bounding box; `MeshReport.printing` adds the holes,
         the volume and the verdict (the report for printing).
+    weld_distance : float
+        Boundary corners no farther apart than this along each axis were merged
+        for the topology (corners at one position always are).
+    merged_vertices : int
+        How many vertices the topology replaced by another at exactly their position.
+    welded_vertices : int
+        How many others it replaced by a boundary corner within ``weld_distance``.
+    near_miss_edges : int
+        Boundary edges that would close if corners closer than
+        ``near_miss_distance`` were merged too (0: none).
+    near_miss_distance : float or None
+        That distance: ``weld=`` it to merge them.
 
     Examples
     --------
@@ -148,6 +175,11 @@ class MeshReport:
     components: tuple[ComponentReport, ...]
     faces_to_flip: IntArray
     measures: Measures = field(repr=False)
+    weld_distance: float = 0.0
+    merged_vertices: int = 0
+    welded_vertices: int = 0
+    near_miss_edges: int = 0
+    near_miss_distance: float | None = None
 
     @property
     def printing(self) -> PrintReport:
@@ -166,11 +198,15 @@ class MeshReport:
 
     @property
     def outward(self) -> bool | None:
-        """Whether every closed piece faces out, wound consistently; None if none is closed."""
-        closed = [c for c in self.components if c.closed]
-        if not closed:
+        """Whether every piece with an inside faces out, wound consistently; None if none has.
+
+        The pieces with an inside are the closed ones and the open ones that mostly
+        enclose a volume (``judged_by``); a cavity faces out when it faces into its hollow.
+        """
+        judged = [c for c in self.components if c.closed or c.judged_by is not None]
+        if not judged:
             return None
-        return all(c.outward is True for c in closed)
+        return all(c.outward is True for c in judged)
 
     @property
     def ok(self) -> bool:
@@ -213,6 +249,12 @@ class MeshReport:
             "inconsistent_edges": _pairs(self.inconsistent_edges),
             "components": [c.to_dict() for c in self.components],
             "faces_to_flip": self.faces_to_flip.tolist(),
+            "weld_distance": self.weld_distance,
+            "merged_vertices": self.merged_vertices,
+            "welded_vertices": self.welded_vertices,
+            "near_miss": None
+            if self.near_miss_distance is None
+            else {"edges": self.near_miss_edges, "distance": self.near_miss_distance},
             **self.printing.to_dict(),
         }
 
@@ -322,6 +364,42 @@ SUMMARY: dict[str, str | tuple[str, str]] = {
     ),
     "flip_end_closed": " and outward.",
     "flip_end_open": ".",
+    "welded": (
+        "{n} corner less than {distance} from another corner is taken as that corner, so the "
+        "faces there join.",
+        "{n} corners less than {distance} from another corner are taken as that corner, so the "
+        "faces there join.",
+    ),
+    "near_miss": (
+        "{n} boundary edge would close if corners closer than {distance} were merged: probably "
+        "an export that did not weld its vertices.",
+        "{n} boundary edges would close if corners closer than {distance} were merged: probably "
+        "an export that did not weld its vertices.",
+    ),
+    "cavity": (
+        "{name} is a cavity inside another closed piece, and its normals point into the hollow, "
+        "away from the material, as they should."
+    ),
+    "cavity_inside_out": (
+        "{name} is a cavity inside another closed piece, but its normals point out of the "
+        "hollow, into the material: it is inside out."
+    ),
+    "open_inside_out": (
+        "{name} is open, but closed over its holes it encloses a volume, and every normal "
+        "points inward: it is inside out."
+    ),
+    "open_encloses": (
+        "{name} is open, but closed over its holes it encloses a volume, so its outside can be "
+        "told: its normals point outward.",
+        "{n} open pieces enclose a volume when closed over their holes, so their outside can "
+        "be told: their normals point outward.",
+    ),
+    "open_sheet": (
+        "{name} is open and encloses nothing, like a sheet or a terrain: only whether its faces "
+        "agree can be judged, not which side is out.",
+        "{n} open pieces enclose nothing, like sheets or terrains: only whether their faces "
+        "agree can be judged, not which side is out.",
+    ),
 }
 
 
@@ -346,9 +424,12 @@ def _summary_lines(r: MeshReport) -> list[str]:
             pieces=_n(len(r.components), "piece"),
         )
     ]
+    if r.welded_vertices:
+        distance = _distance(r.weld_distance)
+        lines.append(_say("welded", n=r.welded_vertices, distance=distance))
     if r.ok:
         lines.append(_say("ok"))
-        return lines
+        return lines + _piece_lines(r)
     nd = len(r.degenerate_faces)
     if nd:
         parts = []
@@ -367,26 +448,61 @@ def _summary_lines(r: MeshReport) -> list[str]:
     ):
         if len(found):
             lines.append(_say(key, n=len(found)))
-    many = len(r.components) > 1
-    for i, c in enumerate(r.components):
-        name = _say("piece", i=i + 1, faces=_n(c.faces, "face")) if many else _say("whole")
-        if not c.orientable:
-            lines.append(_say("not_orientable", name=name))
-        elif not c.consistent:
-            lines.append(_say("inconsistent", name=name))
-        elif c.closed and c.outward is False:
-            lines.append(_say("inside_out", name=name))
-        elif c.closed and c.outward is None:
-            lines.append(_say("no_volume", name=name))
+    if r.near_miss_distance is not None:
+        distance = _distance(r.near_miss_distance)
+        lines.append(_say("near_miss", n=r.near_miss_edges, distance=distance))
+    lines += _piece_lines(r)
     n_flip = len(r.faces_to_flip)
     if n_flip:
-        closed = any(c.closed for c in r.components)
-        end = _say("flip_end_closed" if closed else "flip_end_open")
+        judged = any(c.closed or c.judged_by is not None for c in r.components)
+        end = _say("flip_end_closed" if judged else "flip_end_open")
         lines.append(_say("flip", n=n_flip, end=end))
     return lines
 
 
-def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TOL) -> MeshReport:
+def _distance(x: float) -> str:
+    """Write a distance as the summary does: rounded up to 1, 2 or 5 times a power of ten."""
+    return round_distance(x, above=False)[1]
+
+
+def _piece_lines(r: MeshReport) -> list[str]:
+    """Say what can be said of each piece's winding, and why; right open pieces counted."""
+    lines = []
+    many = len(r.components) > 1
+    names = []
+    sheets: list[str] = []
+    enclosing: list[str] = []
+    for i, c in enumerate(r.components):
+        name = _say("piece", i=i + 1, faces=_n(c.faces, "face")) if many else _say("whole")
+        names.append(name)
+        if not c.orientable:
+            lines.append(_say("not_orientable", name=name))
+        elif not c.consistent:
+            lines.append(_say("inconsistent", name=name))
+        elif c.closed and c.cavity:
+            lines.append(_say("cavity" if c.outward else "cavity_inside_out", name=name))
+        elif c.closed and c.outward is False:
+            lines.append(_say("inside_out", name=name))
+        elif c.closed and c.outward is None:
+            lines.append(_say("no_volume", name=name))
+        elif not c.closed and c.outward is False:
+            lines.append(_say("open_inside_out", name=name))
+        elif not c.closed and c.outward is True:
+            enclosing.append(name)
+        elif not c.closed:
+            sheets.append(name)
+    for key, found in (("open_encloses", enclosing), ("open_sheet", sheets)):
+        if found:
+            lines.append(_say(key, n=len(found), name=found[0]))
+    return lines
+
+
+def check(
+    vertices: npt.ArrayLike,
+    faces: npt.ArrayLike,
+    tol: float = DEFAULT_TOL,
+    weld: float | bool = False,
+) -> MeshReport:
     """Find everything wrong with a mesh: degenerate, duplicate and flipped faces, holes, fins.
 
     Parameters
@@ -398,6 +514,12 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
         Degeneracy threshold: a face is degenerate when ``|N| <= tol · L²``,
         N its normal and L its longest side, whatever the mesh's scale (see
         `trinormal.mesh.degenerate_faces`).
+    weld : float or bool, default False
+        The topology (edges, holes, pieces, winding) joins corners at exactly one
+        position, and boundary corners closer than ``WELD_AUTO`` times the model's
+        size (`trinormal.mesh.welding`). A number merges boundary corners up to that
+        distance apart along each axis; True, up to the distance of the near miss the
+        report would suggest; 0, only corners at exactly one position.
 
     Returns
     -------
@@ -427,7 +549,8 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
     The mesh is wound inconsistently: some faces are turned the other way round from their
       neighbours, so their normals point the wrong way. Lighting makes such faces dark, and
       back-face culling makes them vanish.
-    Fixing the winding turns 2 faces over, so that every piece is wound consistently.
+    Fixing the winding turns 2 faces over, so that every piece is wound consistently and
+      outward.
     1 hole: 4 edges around it.
     Size: 2 × 2 × 2 (x, y, z) in the file's units, which slicers read as mm.
     Read as millimetres its largest side, 2, is under 10 mm: if the model is in inches,
@@ -441,7 +564,8 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
     v, _ = _check_vertices(vertices)
     f = _check_faces(faces, v.shape[0])
     nv, nf = v.shape[0], f.shape[0]
-    he = _HalfEdges.of(f)
+    welded = weld_faces(v, f, weld)
+    he = welded.half_edges
 
     deg = degenerate_faces(v, f, t)
     a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
@@ -452,7 +576,7 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
 
     used = np.zeros(nv, dtype=bool)
     used[f.ravel()] = True
-    same, rev = _duplicates(f)
+    same, rev = _duplicates(he.faces)
 
     w = _winding(v, he)
     h1, _ = w.inconsistent_pairs
@@ -476,6 +600,11 @@ def check(vertices: npt.ArrayLike, faces: npt.ArrayLike, tol: float = DEFAULT_TO
         components=_component_reports(w),
         faces_to_flip=np.flatnonzero(w.flip).astype(np.intp),
         measures=measure(v, f, used),
+        weld_distance=welded.distance,
+        merged_vertices=welded.merged,
+        welded_vertices=welded.welded,
+        near_miss_edges=welded.near_edges,
+        near_miss_distance=welded.near_distance,
     )
 
 
@@ -489,15 +618,21 @@ def _component_reports(w: _Winding) -> tuple[ComponentReport, ...]:
     for i in range(nc):
         consistent = bool(w.inconsistent[i] == 0)
         measurable = bool(w.closed[i]) and consistent
+        judged_by = "volume" if w.solid[i] else "volume_over_holes" if w.encloses[i] else None
+        outward_i = outward[i] if measurable else None
+        if w.encloses[i] and consistent:
+            outward_i = bool(w.capped_volume[i] > 0)
         comps.append(
             ComponentReport(
                 faces=int(sizes[i]),
                 closed=bool(w.closed[i]),
                 consistent=consistent,
                 orientable=bool(w.orientable[i]),
-                outward=outward[i] if measurable else None,
+                outward=outward_i,
                 volume=w.enclosed_volume(i) if measurable else None,
                 faces_to_flip=int(flips[i]),
+                cavity=bool(w.cavity[i]),
+                judged_by=judged_by,
             )
         )
     return tuple(comps)

@@ -39,6 +39,7 @@ from trinormal.explorer.view import BUNDLE
 from trinormal.mesh.normals import face_normals, vertex_normals
 from trinormal.mesh.report import MeshReport, check
 from trinormal.mesh.selection import PRECISION, SELECTION, face_selection, selection_text
+from trinormal.mesh.welding import weld
 from trinormal.validation import check_precision
 
 __all__ = ["MAX_ARROWS", "MESH_BUNDLE", "MeshView", "face_selection", "selection_text"]
@@ -206,8 +207,12 @@ class MeshView(anywidget.AnyWidget):
             self.positions = _buffer(v, "f8")
             self.faces = _buffer(f, "u4")
             self.flipped = _buffer(self.report.faces_to_flip, "i4")
-            self.boundary = _buffer(_edge_sides(f, self.report.boundary_edges, nv), "i4")
-            self.non_manifold = _buffer(_edge_sides(f, self.report.non_manifold_edges, nv), "i4")
+            # the report's edges join corners by position (welding.py): match them on the same faces
+            joined = weld(v, f, self.report.weld_distance).faces if nf else f
+            self.boundary = _buffer(_edge_sides(joined, self.report.boundary_edges, nv), "i4")
+            self.non_manifold = _buffer(
+                _edge_sides(joined, self.report.non_manifold_edges, nv), "i4"
+            )
             self.arrow_faces = _buffer(arrow, "i4")
             self.arrow_normals = _buffer(normals, "f4")
             self.vertex_normals = _buffer(

@@ -294,6 +294,7 @@ function mount(root) {
   const result = $("tn-mesh-result");
   const fixButton = $("tn-mesh-fix");
   const download = $("tn-mesh-download");
+  const weldButton = $("tn-mesh-weld");
   const drop = $("tn-mesh-drop");
   const worker = createWorker();
   let current = null; // the last result from the worker
@@ -324,7 +325,13 @@ function mount(root) {
     root.dataset.busy = String(on);
     barBox.hidden = !on;
     input.disabled = on;
-    for (const b of root.querySelectorAll("button")) b.disabled = on || (b === download && !fixedFile) || (b === fixButton && !canFix());
+    for (const b of root.querySelectorAll("button")) b.disabled = on || (b === download && !fixedFile) || (b === fixButton && !canFix()) || (b === weldButton && !nearMiss());
+  }
+
+  /** The distance text of the report's near miss (the weld control's), or null. */
+  function nearMiss() {
+    const near = current && current.report.near_miss;
+    return near ? window.TrinormalMesh.internal.roundDistance(near.distance, false)[1] : null;
   }
 
   function canFix() {
@@ -341,6 +348,10 @@ function mount(root) {
     $("tn-mesh-format").textContent = kind;
     renderReport(res.report);
     root.dataset.report = JSON.stringify(res.report);
+    const distance = nearMiss();
+    weldButton.hidden = !distance;
+    weldButton.style.display = distance ? "" : "none"; // .md-button's display overrides [hidden]
+    if (distance) weldButton.textContent = message("weld", { distance });
     setStatus(note || "", "ok");
     return showView(res);
   }
@@ -391,6 +402,24 @@ function mount(root) {
     }
   }
 
+  async function weld() {
+    const distance = nearMiss();
+    if (busy || !distance) return;
+    setBusy(true);
+    bar.value = 50;
+    setStatus(message("welding", { distance }));
+    try {
+      const res = await worker.run("weld", {}, [], progress);
+      const shown = showResult(res, message("welded", { distance }));
+      setBusy(false);
+      root.dataset.state = "welded";
+      await shown;
+    } catch (err) {
+      setBusy(false);
+      setStatus(err.message, "error");
+    }
+  }
+
   // A file beyond the page's limit is refused on its size alone, before any of it is read.
   async function openFile(file) {
     if (!file || busy) return;
@@ -408,6 +437,7 @@ function mount(root) {
 
   input.addEventListener("change", () => openFile(input.files && input.files[0]));
   fixButton.addEventListener("click", fix);
+  weldButton.addEventListener("click", weld);
   download.addEventListener("click", () => fixedFile && saveFile(fixedFile));
   for (const b of root.querySelectorAll("button[data-example]")) {
     b.addEventListener("click", async () => {

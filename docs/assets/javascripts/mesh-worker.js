@@ -15,12 +15,14 @@ importScripts(
   "trinormal-core.js",
   "trinormal-mesh-base.js",
   "trinormal-mesh-read.js",
+  "trinormal-mesh-weld.js",
+  "trinormal-mesh-shells.js",
   "trinormal-mesh-check.js",
   "trinormal-mesh-write.js",
   "trinormal-mesh-print.js"
 );
 
-let current = null; // {mesh, faces, report}
+let current = null; // {mesh, faces, report, weld}
 
 function post(id, type, extra, transfer) {
   self.postMessage(Object.assign({ id, type }, extra), transfer || []);
@@ -74,15 +76,22 @@ self.onmessage = (event) => {
       const t1 = performance.now();
       const report = TrinormalMesh.check(mesh.vertices, mesh.faces, progressFor(id, "check"));
       const t2 = performance.now();
-      current = { mesh, faces: mesh.faces, report };
+      current = { mesh, faces: mesh.faces, report, weld: false };
       const [result, transfer] = payload(mesh, mesh.faces, report);
       result.timing = { read_ms: t1 - t0, check_ms: t2 - t1 };
+      post(id, "done", { result }, transfer);
+    } else if (op === "weld") {
+      if (!current) throw new Error("no mesh to weld");
+      const mesh = current.mesh;
+      const report = TrinormalMesh.check(mesh.vertices, mesh.faces, progressFor(id, "check"), true);
+      current = { mesh, faces: mesh.faces, report, weld: true };
+      const [result, transfer] = payload(mesh, mesh.faces, report);
       post(id, "done", { result }, transfer);
     } else if (op === "fix") {
       if (!current) throw new Error("no mesh to fix");
       const faces = TrinormalMesh.fixWinding(current.faces, current.report);
-      const report = TrinormalMesh.check(current.mesh.vertices, faces, progressFor(id, "check"));
-      current = { mesh: current.mesh, faces, report };
+      const report = TrinormalMesh.check(current.mesh.vertices, faces, progressFor(id, "check"), current.weld);
+      current = { mesh: current.mesh, faces, report, weld: current.weld };
       const file = TrinormalMesh.write(current.mesh, faces);
       const [result, transfer] = payload(current.mesh, faces, report, file);
       post(id, "done", { result }, transfer);

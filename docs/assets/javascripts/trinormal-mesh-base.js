@@ -5,6 +5,8 @@
  *
  *   trinormal-mesh-base.js   the package's messages and limits, errors, Python's text rules
  *   trinormal-mesh-read.js   the OBJ, STL and PLY readers (trinormal/mesh/io.py)
+ *   trinormal-mesh-weld.js   which vertices are one corner (welding.py)
+ *   trinormal-mesh-shells.js volumes, cavities, open pieces closed over holes (shells.py)
  *   trinormal-mesh-check.js  the report (report.py, topology.py, repair.py, normals.py)
  *   trinormal-mesh-write.js  the winding fix and the writers (repair.py, io.py)
  *   trinormal-mesh-print.js  the report for printing (printing.py): holes, area, volume, size

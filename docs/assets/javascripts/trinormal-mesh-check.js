@@ -2,9 +2,9 @@
  * trinormal's mesh check in the browser, part 3 of 4: the report. The same keys and values
  * as Python's trinormal.mesh.check(vertices, faces).to_dict(), computed the same way
  * (trinormal/mesh/report.py, topology.py, repair.py, normals.py), and its sentences.
- * Loaded after trinormal-mesh-read.js; see trinormal-mesh-base.js for how the parts fit.
+ * Loaded after trinormal-mesh-shells.js; see trinormal-mesh-base.js for how the parts fit.
  */
-self.TrinormalMesh.part("check", "read", function (base) {
+self.TrinormalMesh.part("check", "shells", function (base) {
   "use strict";
   var I = base.internal, MESH = I.MESH, TOL = MESH.tol, Growable = I.Growable;
   // The exact core's integer square root (Python's math.isqrt), so the two ports share one.
@@ -502,97 +502,6 @@ self.TrinormalMesh.part("check", "read", function (base) {
     return { flip: flip, orientable: orientable, inconsistent: inconsistent };
   }
 
-  var EPS = Math.pow(2, -52);
-  var VOLUME_ROUNDING = 8;
-
-  /** 2 ** (frexp(x)[1] - 1) in Python: the largest power of two <= x >= 0 (0.5 for 0). */
-  function powerOfTwoBelow(x) {
-    if (x === 0) return 0.5;
-    var k = Math.min(1023, Math.floor(Math.log2(x)));
-    if (Math.pow(2, k) > x) k--;
-    else if (k < 1023 && Math.pow(2, k + 1) <= x) k++;
-    return Math.pow(2, k);
-  }
-
-  /**
-   * Six times the enclosed volume of each piece, from the first vertex of its first face, as
-   * wound now (`volume`) and after the consistent flips (`fixed`), with its rounding bound.
-   * Every coordinate is first divided by its piece's `scale` (the largest power of two not
-   * above its largest |coordinate|: exact in binary), so the triple products can neither
-   * overflow nor underflow; the three sums are the true ones over scale ** 3.
-   */
-  function volumes(V, faces, comp, nComp, flip) {
-    var nf = comp.length;
-    var ref = new Int32Array(nComp).fill(-1);
-    var largest = new Float64Array(nComp), scale = new Float64Array(nComp);
-    var volume = new Float64Array(nComp), fixed = new Float64Array(nComp);
-    var sizeSum = new Float64Array(nComp), nIn = new Float64Array(nComp);
-    var f, k, cf, at;
-    for (k = 0; k < 3 * nf; k++) {
-      if ((cf = comp[(k / 3) | 0]) < 0) continue;
-      at = 3 * faces[k];
-      largest[cf] = Math.max(largest[cf], Math.abs(V[at]), Math.abs(V[at + 1]), Math.abs(V[at + 2]));
-    }
-    for (k = 0; k < nComp; k++) scale[k] = powerOfTwoBelow(largest[k]);
-    for (f = 0; f < nf; f++) {
-      cf = comp[f];
-      if (cf < 0) continue;
-      if (ref[cf] < 0) ref[cf] = 3 * faces[3 * f];
-      var o = ref[cf], c = scale[cf];
-      var ox = V[o] / c, oy = V[o + 1] / c, oz = V[o + 2] / c;
-      var i0 = 3 * faces[3 * f], i1 = 3 * faces[3 * f + 1], i2 = 3 * faces[3 * f + 2];
-      var px = V[i0] / c - ox, py = V[i0 + 1] / c - oy, pz = V[i0 + 2] / c - oz;
-      var qx = V[i1] / c - ox, qy = V[i1 + 1] / c - oy, qz = V[i1 + 2] / c - oz;
-      var sx = V[i2] / c - ox, sy = V[i2 + 1] / c - oy, sz = V[i2 + 2] / c - oz;
-      var det = px * (qy * sz - qz * sy) + py * (qz * sx - qx * sz) + pz * (qx * sy - qy * sx);
-      var size =
-        Math.sqrt(px * px + py * py + pz * pz) *
-        Math.sqrt(qx * qx + qy * qy + qz * qz) *
-        Math.sqrt(sx * sx + sy * sy + sz * sz);
-      volume[cf] += det;
-      fixed[cf] += det * (flip[f] ? -1.0 : 1.0);
-      sizeSum[cf] += size;
-      nIn[cf] += 1;
-    }
-    var error = new Float64Array(nComp);
-    for (var i = 0; i < nComp; i++) error[i] = (VOLUME_ROUNDING + nIn[i]) * EPS * sizeSum[i];
-    return { volume: volume, fixed: fixed, error: error, scale: scale };
-  }
-
-  /** Each piece's entry of the report, and the faces to flip (closed pieces turned outward). */
-  function pieceReports(pieces, closed, w, vol, flip) {
-    var nComp = pieces.count, comp = pieces.comp;
-    var inward = new Uint8Array(nComp);
-    for (var i = 0; i < nComp; i++) inward[i] = closed[i] && w.orientable[i] && vol.fixed[i] < -vol.error[i] ? 1 : 0;
-    var toFlip = [];
-    var flips = new Int32Array(nComp), sizes = new Int32Array(nComp);
-    for (var f = 0; f < comp.length; f++) {
-      if (comp[f] < 0) continue;
-      sizes[comp[f]]++;
-      if (flip[f] ^ inward[comp[f]]) {
-        toFlip.push(f);
-        flips[comp[f]]++;
-      }
-    }
-    var components = [];
-    for (i = 0; i < nComp; i++) {
-      var consistent = w.inconsistent[i] === 0;
-      var measurable = closed[i] && consistent;
-      var v = vol.volume[i];
-      components.push({
-        faces: sizes[i],
-        closed: !!closed[i],
-        consistent: consistent,
-        orientable: !!w.orientable[i],
-        outward: measurable ? (Math.abs(v) <= vol.error[i] ? null : v > 0) : null,
-        // x * scale ** 3 as Python's _unscaled takes it: ±Infinity only where the volume overflows
-        volume: measurable ? v / 6.0 * vol.scale[i] * vol.scale[i] * vol.scale[i] : null,
-        faces_to_flip: flips[i],
-      });
-    }
-    return { components: components, faces_to_flip: toFlip };
-  }
-
   // ------------------------------------------------------------------ the report
 
   function indicesWhere(array, test) {
@@ -601,12 +510,68 @@ self.TrinormalMesh.part("check", "read", function (base) {
     return out;
   }
 
+  /** Which faces have three distinct vertices: the faces that have edges. */
+  function cleanFaces(faces) {
+    var nf = faces.length / 3;
+    var clean = new Uint8Array(nf);
+    for (var f = 0; f < nf; f++) {
+      var fa = faces[3 * f], fb = faces[3 * f + 1], fc = faces[3 * f + 2];
+      clean[f] = fa !== fb && fb !== fc && fc !== fa ? 1 : 0;
+    }
+    return clean;
+  }
+
+  /** The welded faces and their edges, for a representative of every vertex (`rep`). */
+  function joined(faces, nv, rep) {
+    var wf = rep ? I.weldMapped(faces, rep) : faces;
+    var clean = cleanFaces(wf);
+    return { rep: rep, faces: wf, clean: clean, e: edgeGroups(wf, nv, clean) };
+  }
+
+  /** The boundary corners of a joined mesh, sorted. */
+  function boundaryCorners(t) {
+    return Int32Array.from(new Set(t.e.boundary)).sort();
+  }
+
   /**
-   * The report of trinormal.mesh.check(vertices, faces): the same keys and values as its
-   * to_dict(), and for the 3D view one face side (3 * face + k) of every boundary and
+   * The topology of trinormal.mesh.welding.weld: corners at one position joined, then boundary
+   * corners within the weld distance, then the near miss beyond it (`weld`: false, a number or
+   * true, as Python's weld=).
+   */
+  function welded(V, faces, nv, weld) {
+    var size = I.modelSize(V, faces), auto = I.WELD.auto * size;
+    var dist = weld === true || weld === false || weld === undefined ? auto : weld > 0 ? Math.max(weld, auto) : 0;
+    var exact = I.exactRepresentatives(V);
+    var t = joined(faces, nv, exact);
+    if (t.e.boundarySides.length && dist > 0) {
+      var rep = I.mergeClose(V, exact || I.weldIdentity(nv), boundaryCorners(t), dist);
+      if (rep) t = joined(faces, nv, rep);
+    }
+    var near = { edges: 0, distance: null };
+    var range = I.WELD.near * size;
+    if (t.e.boundarySides.length && range > dist) {
+      var b = boundaryCorners(t);
+      var most = I.nearestLargest(V, b, range);
+      if (most !== null) {
+        var suggest = I.roundDistance(most, true)[0];
+        var t2 = joined(faces, nv, I.mergeClose(V, t.rep || I.weldIdentity(nv), b, suggest));
+        var closes = t.e.boundarySides.length - t2.e.boundarySides.length;
+        if (closes > 0 && weld === true) {
+          t = t2;
+          dist = suggest;
+        } else if (closes > 0) near = { edges: closes, distance: suggest };
+      }
+    }
+    var merged = I.replaced(exact);
+    return { t: t, distance: dist, merged: merged, welded: I.replaced(t.rep) - merged, near: near };
+  }
+
+  /**
+   * The report of trinormal.mesh.check(vertices, faces, weld=weld): the same keys and values as
+   * its to_dict(), and for the 3D view one face side (3 * face + k) of every boundary and
    * non-manifold edge. `onProgress(fraction)` is called now and then.
    */
-  function check(vertices, faces, onProgress) {
+  function check(vertices, faces, onProgress, weld) {
     var progress = onProgress || function () {};
     var nv = vertices.length / 3;
     var nf = faces.length / 3;
@@ -618,27 +583,20 @@ self.TrinormalMesh.part("check", "read", function (base) {
     var kind = degenerateFaces(vertices, faces);
     var used = new Uint8Array(nv);
     for (s = 0; s < faces.length; s++) used[faces[s]] = 1;
-    var clean = new Uint8Array(nf); // three distinct vertices: the faces that have edges
-    for (var f = 0; f < nf; f++) {
-      var fa = faces[3 * f], fb = faces[3 * f + 1], fc = faces[3 * f + 2];
-      clean[f] = fa !== fb && fb !== fc && fc !== fa ? 1 : 0;
-    }
-    var dups = duplicateFaces(faces, clean);
     progress(0.2);
-    var e = edgeGroups(faces, nv, clean);
+    var w0 = welded(vertices, faces, nv, weld || false);
+    var wf = w0.t.faces, clean = w0.t.clean, e = w0.t.e;
+    var dups = duplicateFaces(wf, clean);
     progress(0.5);
     var pieces = pieceLabels(e.parent, clean);
-    var pinches = pinchPoints(faces, nv, e.fanParent, clean);
-    var closed = new Uint8Array(pieces.count).fill(1); // every edge shared by exactly two faces
-    for (s = 0; s < e.openSides.length; s++) closed[pieces.comp[(e.openSides.data[s] / 3) | 0]] = 0;
+    var pinches = pinchPoints(wf, nv, e.fanParent, clean);
     progress(0.6);
-    var w = consistentFlips(faces, e, pieces, clean);
+    var w = consistentFlips(wf, e, pieces, clean);
     progress(0.75);
-    var vol = volumes(vertices, faces, pieces.comp, pieces.count, w.flip);
-    var p = pieceReports(pieces, closed, w, vol, w.flip);
+    var p = I.pieceReports(vertices, wf, pieces, e, w, w.flip);
     progress(0.9);
     var c = p.components;
-    var anyClosed = c.some(function (x) { return x.closed; });
+    var judged = c.some(function (x) { return x.closed || x.judged_by !== null; });
     var degenerate = indicesWhere(kind, function (k) { return k > 0; });
     var unused = indicesWhere(used, function (u) { return !u; });
     var report = {
@@ -647,7 +605,7 @@ self.TrinormalMesh.part("check", "read", function (base) {
       n_components: pieces.count,
       closed: c.length > 0 && c.every(function (x) { return x.closed; }),
       consistent_winding: c.every(function (x) { return x.consistent; }),
-      outward: anyClosed ? c.every(function (x) { return !x.closed || x.outward === true; }) : null,
+      outward: judged ? c.every(function (x) { return !(x.closed || x.judged_by !== null) || x.outward === true; }) : null,
       ok: false,
       unused_vertices: unused,
       degenerate_faces: degenerate,
@@ -661,6 +619,10 @@ self.TrinormalMesh.part("check", "read", function (base) {
       inconsistent_edges: sortedPairs(e.inconsistentPairs),
       components: c,
       faces_to_flip: p.faces_to_flip,
+      weld_distance: w0.distance,
+      merged_vertices: w0.merged,
+      welded_vertices: w0.welded,
+      near_miss: w0.near.distance === null ? null : w0.near,
       _boundary_sides: e.boundarySides.array(),
       _non_manifold_sides: e.nonManifoldSides.array(),
     };
@@ -729,6 +691,11 @@ self.TrinormalMesh.part("check", "read", function (base) {
     return I.fill(t, values);
   }
 
+  /** A distance as the summary writes it: rounded up to 1, 2 or 5 times a power of ten. */
+  function distanceText(x) {
+    return I.roundDistance(x, false)[1];
+  }
+
   /** The report in plain sentences, one finding per line: MeshReport.summary() of Python. */
   function summary(r) {
     var lines = [
@@ -738,9 +705,10 @@ self.TrinormalMesh.part("check", "read", function (base) {
         pieces: counted(r.n_components, "piece"),
       }),
     ];
+    if (r.welded_vertices) lines.push(sentence("welded", { n: r.welded_vertices, distance: distanceText(r.weld_distance) }));
     if (r.ok) {
       lines.push(sentence("ok", {}));
-      return lines;
+      return lines.concat(pieceLines(r));
     }
     var nd = r.degenerate_faces.length;
     if (nd) {
@@ -760,20 +728,34 @@ self.TrinormalMesh.part("check", "read", function (base) {
     for (var i = 0; i < simple.length; i++) {
       if (simple[i][1].length) lines.push(sentence(simple[i][0], { n: simple[i][1].length }));
     }
+    if (r.near_miss) lines.push(sentence("near_miss", { n: r.near_miss.edges, distance: distanceText(r.near_miss.distance) }));
+    lines = lines.concat(pieceLines(r));
+    var nFlip = r.faces_to_flip.length;
+    if (nFlip) {
+      var judged = r.components.some(function (c) { return c.closed || c.judged_by !== null; });
+      lines.push(sentence("flip", { n: nFlip, end: sentence(judged ? "flip_end_closed" : "flip_end_open", {}) }));
+    }
+    return lines;
+  }
+
+  /** What can be said of each piece's winding, and why (report.py's _piece_lines). */
+  function pieceLines(r) {
+    var lines = [], sheets = [], enclosing = [];
     var many = r.components.length > 1;
-    var anyClosed = false;
     r.components.forEach(function (c, j) {
-      if (c.closed) anyClosed = true;
       var name = many ? sentence("piece", { i: j + 1, faces: counted(c.faces, "face") }) : sentence("whole", {});
       if (!c.orientable) lines.push(sentence("not_orientable", { name: name }));
       else if (!c.consistent) lines.push(sentence("inconsistent", { name: name }));
+      else if (c.closed && c.cavity) lines.push(sentence(c.outward ? "cavity" : "cavity_inside_out", { name: name }));
       else if (c.closed && c.outward === false) lines.push(sentence("inside_out", { name: name }));
       else if (c.closed && c.outward === null) lines.push(sentence("no_volume", { name: name }));
+      else if (!c.closed && c.outward === false) lines.push(sentence("open_inside_out", { name: name }));
+      else if (!c.closed && c.outward === true) enclosing.push(name);
+      else if (!c.closed) sheets.push(name);
     });
-    var nFlip = r.faces_to_flip.length;
-    if (nFlip) {
-      lines.push(sentence("flip", { n: nFlip, end: sentence(anyClosed ? "flip_end_closed" : "flip_end_open", {}) }));
-    }
+    [["open_encloses", enclosing], ["open_sheet", sheets]].forEach(function (kf) {
+      if (kf[1].length) lines.push(sentence(kf[0], { n: kf[1].length, name: kf[1][0] }));
+    });
     return lines;
   }
 
