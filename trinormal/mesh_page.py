@@ -239,7 +239,7 @@ def site_constants() -> dict[str, Any]:
 
     Examples
     --------
-    >>> sorted(site_constants())
+    >>> sorted(site_constants())  # doctest: +NORMALIZE_WHITESPACE
     ['limits', 'messages', 'nouns', 'planar_tol', 'printing', 'rows', 'selection', 'summary', 'tol',
      'weld']
     """

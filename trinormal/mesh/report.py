@@ -328,9 +328,9 @@ SUMMARY: dict[str, str | tuple[str, str]] = {
     "unused": ("{n} vertex is not used by any face.", "{n} vertices are not used by any face."),
     "boundary": (
         "{n} edge belongs to one face only: the surface has holes (or is an open sheet), so it "
-        "has no inside. Through a hole you see the back of the faces behind it.",
+        "is not watertight. Through a hole you see the back of the faces behind it.",
         "{n} edges belong to one face only: the surface has holes (or is an open sheet), so it "
-        "has no inside. Through a hole you see the back of the faces behind it.",
+        "is not watertight. Through a hole you see the back of the faces behind it.",
     ),
     "non_manifold_edges": (
         "{n} edge is shared by three faces or more, like the spine of a book: no single "
@@ -544,8 +544,8 @@ def check(
     (4, array([8, 9]))
     >>> print(r.summary())
     8 vertices, 10 triangles, 1 piece.
-    4 edges belong to one face only: the surface has holes (or is an open sheet), so it has
-      no inside. Through a hole you see the back of the faces behind it.
+    4 edges belong to one face only: the surface has holes (or is an open sheet), so it is
+      not watertight. Through a hole you see the back of the faces behind it.
     The mesh is wound inconsistently: some faces are turned the other way round from their
       neighbours, so their normals point the wrong way. Lighting makes such faces dark, and
       back-face culling makes them vanish.

@@ -1,5 +1,5 @@
 /*
- * trinormal's mesh check in the browser, part 1 of 4: what every other part uses. The page
+ * trinormal's mesh check in the browser, part 1 of 7: what every other part uses. The page
  * reads an OBJ, STL or PLY file, reports what is wrong with it, fixes its winding and writes
  * the repaired file, as trinormal.mesh does in Python, with these scripts loaded in order:
  *

@@ -1,5 +1,5 @@
 /*
- * trinormal's mesh check in the browser, part 3 of 4: the report. The same keys and values
+ * trinormal's mesh check in the browser, part 5 of 7: the report. The same keys and values
  * as Python's trinormal.mesh.check(vertices, faces).to_dict(), computed the same way
  * (trinormal/mesh/report.py, topology.py, repair.py, normals.py), and its sentences.
  * Loaded after trinormal-mesh-shells.js; see trinormal-mesh-base.js for how the parts fit.
@@ -774,6 +774,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     summary: summary,
     counted: counted,
     degenerateFaces: degenerateFaces,
-    internal: Object.assign({}, I, { faceNormals: faceNormals, powerOfTwoBelow: powerOfTwoBelow }),
+    internal: Object.assign({}, I, { faceNormals: faceNormals }),
   };
 });

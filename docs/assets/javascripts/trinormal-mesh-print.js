@@ -154,8 +154,8 @@ self.TrinormalMesh.part("print", "check", function (base) {
   }
 
   /** check() of trinormal-mesh-check.js, with the report for printing added after its keys. */
-  function check(vertices, faces, onProgress) {
-    var r = base.check(vertices, faces, onProgress);
+  function check(vertices, faces, onProgress, weld) {
+    var r = base.check(vertices, faces, onProgress, weld);
     var m = measure(vertices, faces);
     var h = holes(r.boundary_edges);
     r.holes = h;

@@ -1,5 +1,5 @@
 /*
- * trinormal's mesh check in the browser, part 2 of 4: the OBJ, STL and PLY readers, as
+ * trinormal's mesh check in the browser, part 2 of 7: the OBJ, STL and PLY readers, as
  * trinormal/mesh/io.py reads (the same vertices and faces in the same order, the same error
  * for the same bad file). Loaded after trinormal-mesh-base.js; see there how the parts fit.
  */

@@ -289,5 +289,5 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return { components: components, faces_to_flip: toFlip };
   }
 
-  return { internal: Object.assign({}, I, { pieceReports: pieceReports }) };
+  return { internal: Object.assign({}, I, { pieceReports: pieceReports, powerOfTwoBelow: powerOfTwoBelow }) };
 });

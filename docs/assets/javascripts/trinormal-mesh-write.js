@@ -1,5 +1,5 @@
 /*
- * trinormal's mesh check in the browser, part 4 of 4: the winding fix and the writers, as
+ * trinormal's mesh check in the browser, part 6 of 7: the winding fix and the writers, as
  * trinormal.mesh.fix_winding turns faces over and trinormal.mesh.write_mesh writes a file
  * (byte for byte). Loaded after trinormal-mesh-check.js; see trinormal-mesh-base.js for how
  * the parts fit.
