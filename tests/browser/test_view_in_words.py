@@ -188,7 +188,7 @@ def test_the_calculators_view_is_described_heard_and_driven_by_keyboard(page, se
     assert text.startswith(f"{name}: {report['n_faces']} faces in "), text
     flips = report["faces_to_flip"]
     assert ("No face needs flipping." in text) == (not flips), text
-    assert page.locator("#tn-mesh-view [role=img]").get_attribute("aria-describedby") == (
+    assert page.locator("#tn-mesh-view .tnm-stage").get_attribute("aria-describedby") == (
         words.get_attribute("id")
     )
     # pick a face by its number, from the keyboard: the description says what is under it
