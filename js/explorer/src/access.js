@@ -11,11 +11,11 @@
 import { createListen } from "./audio.js";
 import { describeState } from "./describe.js";
 import { element, setAttr, setText } from "./dom.js";
+import { turnWithKeys } from "./mesh/keys.js";
 import { injectStyle } from "./style.js";
 import CSS from "./access.css";
 
 const SETTLE_MS = 250;
-const TURN = 15 * (Math.PI / 180); // one arrow key (Shift: three times as far)
 
 let ids = 0;
 
@@ -26,33 +26,6 @@ function viewerOf(view) {
   const c = d.A.clone().add(d.B).add(d.C).divideScalar(3);
   const v = view.stage.camera.position.clone().sub(c);
   return [v.x, v.y, v.z];
-}
-
-/**
- * Turn the view from the keyboard on the focused stage itself (not on a vertex, whose arrow keys
- * move it): arrow keys turn, + and − zoom, Home looks from where "Reset view" does. The drag's
- * alternative for a reader without a pointer (WCAG 2.5.7), as in the mesh view.
- */
-function turnWithKeys(stageEl, stage) {
-  const onKey = (event) => {
-    if (event.target !== stageEl || event.altKey || event.ctrlKey || event.metaKey) return;
-    const step = event.shiftKey ? 3 * TURN : TURN;
-    const keys = {
-      ArrowLeft: () => stage.turn(-step, 0),
-      ArrowRight: () => stage.turn(step, 0),
-      ArrowUp: () => stage.turn(0, step),
-      ArrowDown: () => stage.turn(0, -step),
-      "+": () => stage.zoom(0.8),
-      "=": () => stage.zoom(0.8),
-      "-": () => stage.zoom(1.25),
-      Home: () => stage.reset(),
-    };
-    if (!keys[event.key]) return;
-    event.preventDefault(); // the page does not scroll
-    keys[event.key]();
-  };
-  stageEl.addEventListener("keydown", onKey);
-  return () => stageEl.removeEventListener("keydown", onKey);
 }
 
 /**

@@ -6,12 +6,22 @@ import { element, listen } from "../dom.js";
 
 let forms = 0; // face-number boxes made on this page: unique ids for their labels
 
-/** Make `stageEl` focusable and turn the stage's camera from the keys; returns a stop function. */
-export function turnWithKeys(stageEl, stage) {
+/** The mesh view's stage, focusable and named: the arrow keys of turnWithKeys act on it. */
+export function focusableStage(stageEl) {
   stageEl.tabIndex = 0;
   stageEl.setAttribute("role", "group"); // not "img": the Full screen and Save picture buttons sit inside it
   stageEl.setAttribute("aria-label", "The model in 3D. Arrow keys turn it, + and − zoom, Home resets the view.");
+}
+
+/**
+ * Turn a view from the keyboard while its focused stage itself has the focus (not a control
+ * inside it, such as a vertex whose arrow keys move it): arrow keys turn by 15° (Shift: 45°),
+ * + and − zoom, Home resets the view. The drag's alternative for a reader without a pointer
+ * (WCAG 2.5.7), in the explorer and the mesh view. Returns the function that stops it.
+ */
+export function turnWithKeys(stageEl, stage) {
   const onKey = (event) => {
+    if (event.target !== stageEl || event.altKey || event.ctrlKey || event.metaKey) return;
     const step = (event.shiftKey ? 45 : 15) * (Math.PI / 180);
     const keys = {
       ArrowLeft: () => stage.turn(-step, 0),
@@ -23,10 +33,9 @@ export function turnWithKeys(stageEl, stage) {
       "-": () => stage.zoom(1.25),
       Home: () => stage.reset(),
     };
-    const act = keys[event.key];
-    if (!act || event.altKey || event.ctrlKey || event.metaKey) return;
+    if (!keys[event.key]) return;
     event.preventDefault(); // the page does not scroll
-    act();
+    keys[event.key]();
   };
   return listen(stageEl, { keydown: onKey });
 }

@@ -43,7 +43,7 @@ import { createArrows } from "./arrows.js";
 import { displayPositions, readMesh } from "./data.js";
 import { createMeshDescription } from "./describe.js";
 import { framingPoints, MARGIN, startDirection } from "./framing.js";
-import { createFaceForm, turnWithKeys } from "./keys.js";
+import { createFaceForm, focusableStage, turnWithKeys } from "./keys.js";
 import { createLod } from "./lod.js";
 import { createOutlines, faultSides } from "./outlines.js";
 import { drawLegend, showSelection } from "./panels.js";
@@ -227,6 +227,7 @@ function render({ model, el }) {
     showPick(view);
   }
 
+  focusableStage(stageEl);
   const stopKeys = turnWithKeys(stageEl, stage);
   // a finger scrolls the page over the view until a tap turns it on (a tap also picks)
   const touch = touchGate({ root, stageEl, controls: stage.controls, canvas: stage.canvas, activeClass: "tnm-touch-active" });
