@@ -2,7 +2,8 @@
 
 A corpus of triangles (right, equilateral, obtuse, tilted in 3D, at tiny and huge
 coordinates, both windings, both kinds of marks, several sizes, and thin ones the
-generator refuses) is made into models by `trinormal.printmodel`;
+generator refuses, naming the size that fits or saying none does, and thin ones whose
+marks stand on tabs beside the corners) is made into models by `trinormal.printmodel`;
 ``tests/printmodel_parity_check.js`` runs ``trinormal-printmodel.js`` in Node on the
 same edges and compares every STL byte, every character of the 3MF model XML and
 every refusal's sentence.
@@ -35,6 +36,12 @@ TRIANGLES = [
     ((0, 0, 0), (1, 0, 0), ("0.5", "0.05", 0)),  # thin: refused
     ((3, 6, -8), (-6, -6, -2), (-6, -5, 0)),  # the arrow would touch the mark at A
     ((7, -3, -8), (-2, 1, 1), (-2, 2, 5)),  # the arrow would touch the ridge V
+    ((0, 0, 0), (1, 0, 0), ("0.5", "0.2", 0)),  # thin, 80 × 16 mm: smaller features fit
+    ((0, 0, 0), (5, 0, 0), ("2.5", "0.5", 0)),  # thinner: the smallest features fit
+    ((0, 0, 0), (1, 0, 0), ("0.9", "0.06", 0)),  # too thin at 80 mm: the size that fits named
+    ((0, 0, 0), (1, 0, 0), ("0.5", "0.001", 0)),  # too thin at any size accepted
+    (("-3.4", "3.3", "-1.2"), (-2, "2.6", "1.9"), ("3.7", "1.5", "4.9")),  # marks on tabs
+    (("0.3", "-2.1", "-2.2"), ("-1.6", "-3.2", "-0.6"), ("2.3", "-1.2", "-2.5")),  # tabs
 ]
 
 
@@ -59,6 +66,12 @@ def corpus() -> list[dict]:
     return cases
 
 
+def _outline(xml: Path) -> int:
+    """How many corners the plate's bottom has: 3 for the triangle, more with tabs."""
+    text = xml.read_text(encoding="utf-8")
+    return text.count('z="0"/>')
+
+
 def test_the_site_makes_pythons_model_byte_for_byte(tmp_path):
     """One Node run for the whole corpus: no difference in any file or refusal."""
     manifest = []
@@ -77,6 +90,10 @@ def test_the_site_makes_pythons_model_byte_for_byte(tmp_path):
     assert made >= 20 and len(manifest) - made >= 4  # models and refusals both compared
     assert {e["marks"] for e in manifest if "stl" in e} == {"letters", "braille"}
     assert sum("would touch" in e.get("error", "") for e in manifest) >= 2
+    assert sum("mm or larger (--size" in e.get("error", "") for e in manifest) >= 4
+    assert sum("even at 1000 mm" in e.get("error", "") for e in manifest) >= 2
+    tabs = [e for e in manifest if "xml" in e and _outline(tmp_path / e["xml"]) > 3]
+    assert len(tabs) >= 4  # plates with the marks on tabs beside their corners compared too
     (tmp_path / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps({"print": print_constants()}), encoding="utf-8")

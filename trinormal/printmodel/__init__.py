@@ -6,9 +6,15 @@
   (z = 0), its longest side ``size`` mm long (80 by default);
 * the normal N as an arrow standing on the plate's top face at the centroid;
 * U and V as raised ridges from A towards the next two corners of the winding,
-  each ending in a point;
+  each ending in a point (short of the arrow when it stands in the way);
 * A, B and C marked beside their corners: embossed block letters, or braille
   cells (A = dot 1, B = dots 1 2, C = dots 1 4) with ``marks="braille"``.
+
+A thin triangle gets smaller features (`_features.FITS`: letters down to 4 mm
+tall, narrower gaps and ridges; braille keeps its standard cell); if its marks
+still do not fit inside, they stand on tabs of the plate beside the corners.
+Only when even that fails is it refused, and the message names the smallest
+whole ``size`` that fits (or says that none up to 1000 mm does).
 
 The top face is the triangle's front: seen from above, the corners in the
 order of the winding (A→B→C, or A→C→B with ``winding="ACB"``) turn
@@ -269,8 +275,16 @@ def build(u: Any, v: Any, names: str, size: float, marks: str) -> PrintModel:
     The part the site's JavaScript ports: given the same floats it makes the
     same vertices and faces. `print_model` checks the input and calls it.
     """
-    corners = F.flat_corners(u, v, size)
-    layout = F.layout(corners, size, marks, names)
+    try:
+        layout = F.fitted(u, v, size, marks, names)
+    except F.Unfit as exc:
+        fits = F.smallest_size(u, v, size, marks, names)
+        if fits is None:
+            words = PRINT_MESSAGES["too_thin_always"].format(size=_num(SIZE_RANGE[1]), reason=exc)
+        else:
+            words = PRINT_MESSAGES["too_thin"].format(size=_num(size), reason=exc, fits=_num(fits))
+        raise PrintModelError(words) from None
+    corners = layout.corners
     solid = F.solid(layout, size, marks, names)
     length = F.ARROW_LENGTH * size
     return PrintModel(
@@ -317,7 +331,8 @@ def print_model(
     ------
     PrintModelError
         For a degenerate triangle, one too thin to carry the features at this
-        size, a size out of range or an unknown kind of marks.
+        size (the message names the size that fits), a size out of range or an
+        unknown kind of marks.
     ValueError
         For a coordinate that cannot be read (the message names vertex and axis).
 
@@ -330,6 +345,12 @@ def print_model(
     Traceback (most recent call last):
     ...
     trinormal.printmodel.PrintModelError: A degenerate triangle cannot be printed: ...
+    >>> print_model((0, 0, 0), (1, 0, 0), (0.5, 0.2, 0)).corners  # 80 × 16 mm
+    ((0.0, 0.0, 3.0), (80.0, 0.0, 3.0), (40.0, 16.0, 3.0))
+    >>> print_model((0, 0, 0), (1, 0, 0), (0.5, 0.05, 0))
+    Traceback (most recent call last):
+    ...
+    trinormal.printmodel.PrintModelError: This triangle is too thin ... (--size 159), or ...
     """
     if marks not in MARKS:
         raise PrintModelError(PRINT_MESSAGES["marks_kind"].format(got=repr(marks)))
@@ -355,12 +376,7 @@ def site_constants() -> dict[str, Any]:
         "size_range": list(SIZE_RANGE),
         "marks": list(MARKS),
         "thickness": THICKNESS,
-        "margin": F.MARGIN,
-        "gap": F.GAP,
-        "min_gap": F.MIN_GAP,
-        "ridge_width": F.RIDGE_WIDTH,
         "ridge_height": F.RIDGE_HEIGHT,
-        "ridge_tip": F.RIDGE_TIP,
         "shaft_radius": F.SHAFT_RADIUS,
         "head_radius": F.HEAD_RADIUS,
         "head_length": F.HEAD_LENGTH,
@@ -371,6 +387,7 @@ def site_constants() -> dict[str, Any]:
         "dot_spacing": F.DOT_SPACING,
         "grid": F.GRID,
         "mark_radius": dict(F.MARK_RADIUS),
+        "fits": [list(f) for f in F.FITS],
         "letters": {k: [[list(p) for p in ring] for ring in v] for k, v in F.LETTERS.items()},
         "braille": {k: [list(p) for p in v] for k, v in F.BRAILLE.items()},
         "messages": dict(PRINT_MESSAGES),

@@ -1,7 +1,8 @@
 """The printable model's features: their sizes, where they stand, and the surface they make.
 
-`layout` places the arrow, the ridges and the marks on the plate (refusing a
-triangle too thin to hold them); `solid` builds the one closed surface.
+`fitted` places the arrow, the ridges and the marks on the plate, shrinking them
+step by step (`FITS`) for a thin triangle; `smallest_size` finds the size to name
+when even the smallest do not fit; `solid` builds the one closed surface.
 """
 
 from __future__ import annotations
@@ -50,6 +51,16 @@ GRID = 1024.0  # coordinates are multiples of 1/GRID mm
 #: A mark's reach from its centre (letters are 5 × 7 mm, braille two dots by two).
 MARK_RADIUS = {"letters": 4.4, "braille": 2.6}
 
+#: How far the features may shrink to fit a thin triangle, tried in order until one fits:
+#: (letters' scale, margin, gap, smallest gap, length of a ridge's point, ridge's width).
+#: Braille keeps its standard cell; letters go down to 4 mm tall; the margins, gaps and
+#: ridges stay printable with a 0.4 mm nozzle. The last entry also sizes `on_tabs`.
+FITS = (
+    (1.0, MARGIN, GAP, MIN_GAP, RIDGE_TIP, RIDGE_WIDTH),
+    (0.8, 2.0, 1.2, 0.8, 3.0, RIDGE_WIDTH),
+    (4 / 7, 1.6, 0.8, 0.6, 2.5, 1.2),
+)
+
 # Block letters, 5 × 7 mm, centred: an outline (counter-clockwise) and its holes (clockwise).
 LETTERS: dict[str, tuple[tuple[tuple[float, float], ...], ...]] = {
     "A": (
@@ -77,7 +88,9 @@ PRINT_MESSAGES: dict[str, str] = {
     "(|N| ≤ tol · L²), so it has no face to stand on and no normal to show. "
     "Move a corner off the line.",
     "too_thin": "This triangle is too thin to print at {size} mm: {reason}. "
-    "Print it larger or make it less thin.",
+    "Print it at {fits} mm or larger (--size {fits}), or make it less thin.",
+    "too_thin_always": "This triangle is too thin to print even at {size} mm: {reason}. "
+    "Make it less thin.",
     "marks": "the marks at its corners do not fit inside it",
     "ridge": "the ridge {name} is too short to show",
     "touch": "{first} and {second} would touch",
@@ -184,19 +197,32 @@ def _ring(center: Point, radius: float, shape: tuple[Point, ...] = OCTAGON) -> R
     return [(_snap(center[0] + radius * x), _snap(center[1] + radius * y)) for x, y in shape]
 
 
-def _shifted(points: tuple[tuple[float, float], ...], center: Point) -> Ring:
-    return [(_snap(center[0] + x - 2.5), _snap(center[1] + y - 3.5)) for x, y in points]
+def _shifted(points: tuple[tuple[float, float], ...], center: Point, scale: float) -> Ring:
+    """Give a letter's ring, scaled by ``scale`` about its middle, centred on ``center``."""
+    return [
+        (_snap(center[0] + (x - 2.5) * scale), _snap(center[1] + (y - 3.5) * scale))
+        for x, y in points
+    ]
 
 
 # --------------------------------------------------------------------------- the layout
+
+
+Fit = tuple[float, float, float, float, float, float]
 
 
 @dataclass(frozen=True)
 class Layout:
     corners: tuple[Point, Point, Point]  # in the winding's order, first at the origin
     centroid: Point
-    marks: tuple[Point, Point, Point]  # the centre of each corner's mark
+    marks: tuple[Point, ...]  # the centre of each corner's mark
     ridges: tuple[tuple[Point, Point, Point], ...]  # (start, base of the point, tip) of U and V
+    fit: Fit  # the entry of FITS the features were placed with
+    outline: Ring  # the plate: the corners, and any tabs that carry the marks outside them
+
+
+class Unfit(Exception):
+    """The features do not fit at this size with this entry of `FITS`; the message says why."""
 
 
 def flat_corners(u: Any, v: Any, size: float) -> tuple[Point, Point, Point]:
@@ -226,40 +252,47 @@ def _inset(p: Point, center: Point, r: float, d: float) -> Point:
     return (center[0] + (p[0] - center[0]) * k, center[1] + (p[1] - center[1]) * k)
 
 
-def _too_thin(size: float, reason: str) -> PrintModelError:
-    return PrintModelError(PRINT_MESSAGES["too_thin"].format(size=_num(size), reason=reason))
-
-
 def _unit(start: Point, end: Point) -> Point:
     length = dist(start, end)
     return ((end[0] - start[0]) / length, (end[1] - start[1]) / length)
 
 
-def _ridge(
-    start: Point, end: Point, marks: tuple[Point, Point], radius: float, sep: float
-) -> list[float]:
-    """Where a ridge from ``start`` towards ``end`` begins and ends, clear of both corners' marks.
+def _ridge(start: Point, end: Point, sep: float, obstacles: list[tuple[Point, float, float]]
+           ) -> list[float]:  # fmt: skip
+    """Where a ridge from ``start`` towards ``end`` begins and ends, clear of ``obstacles``.
 
-    Returns the distances along the line where it begins and ends, and the line's direction.
+    Each obstacle is (centre, side, reach): side 1 moves the ridge's start past it,
+    side -1 stops the ridge short of it (unless it lies behind the start). Returns
+    the distances along the line where the ridge begins and ends, and its direction.
     """
     length = dist(start, end)
     e = _unit(start, end)
-    ends = []
-    # clear of the first mark by half the ridge's width, of the last by its point's half-width
-    for m, sign, reach in (
-        (marks[0], 1.0, radius + GAP + RIDGE_WIDTH / 2),
-        (marks[1], -1.0, radius + GAP + RIDGE_WIDTH),
-    ):
+    t0, t1 = sep, length
+    for m, side, reach in obstacles:
         along = (m[0] - start[0]) * e[0] + (m[1] - start[1]) * e[1]
         off = abs((m[0] - start[0]) * e[1] - (m[1] - start[1]) * e[0])
-        ends.append(along + sign * math.sqrt(reach * reach - off * off) if off < reach else None)
-    t0 = sep if ends[0] is None else max(sep, ends[0])
-    t1 = length if ends[1] is None else min(length, ends[1])
+        if off < reach:
+            cut = along + side * math.sqrt(reach * reach - off * off)
+            if side > 0:
+                t0 = max(t0, cut)
+            elif cut > t0:
+                t1 = min(t1, cut)
     return [t0, t1, e[0], e[1]]
 
 
-def layout(corners: tuple[Point, Point, Point], size: float, marks: str, names: str) -> Layout:
-    """Where each feature stands; refuses a triangle too thin to hold them."""
+def layout(
+    corners: tuple[Point, Point, Point],
+    marks: str,
+    names: str,
+    fit: Fit,
+    tabs: tuple[tuple[Point, ...], Ring] | None = None,
+) -> Layout:
+    """Where each feature stands with the sizes ``fit``; raises `Unfit` when they do not fit.
+
+    ``tabs``, from `on_tabs`, gives the marks' places outside the triangle and the
+    plate's outline with their tabs; without it the marks stand inside, near the corners.
+    """
+    scale, margin, gap, min_gap, tip, width = fit
     p = corners
     sides = [dist(p[1], p[2]), dist(p[2], p[0]), dist(p[0], p[1])]
     perimeter = sides[0] + sides[1] + sides[2]
@@ -268,73 +301,180 @@ def layout(corners: tuple[Point, Point, Point], size: float, marks: str, names: 
         (sides[0] * p[0][0] + sides[1] * p[1][0] + sides[2] * p[2][0]) / perimeter,
         (sides[0] * p[0][1] + sides[1] * p[1][1] + sides[2] * p[2][1]) / perimeter,
     )
-    radius = MARK_RADIUS[marks]
-    if r <= MARGIN + radius + MIN_GAP:
-        raise _too_thin(size, PRINT_MESSAGES["marks"])
-    spots = (
-        _inset(p[0], center, r, MARGIN + radius),
-        _inset(p[1], center, r, MARGIN + radius),
-        _inset(p[2], center, r, MARGIN + radius),
-    )
-    line = [_inset(q, center, r, MARGIN + RIDGE_WIDTH / 2) for q in p]
+    radius = MARK_RADIUS[marks] * scale if marks == "letters" else MARK_RADIUS[marks]
+    if r <= (margin + width / 2 if tabs else margin + radius) + min_gap:
+        raise Unfit(PRINT_MESSAGES["marks"])
+    spots = tabs[0] if tabs else tuple(_inset(q, center, r, margin + radius) for q in p)
+    line = [_inset(q, center, r, margin + width / 2) for q in p]
     centroid = ((p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3)
     eu = _unit(line[0], line[1])
     ev = _unit(line[0], line[2])
     cos_a = eu[0] * ev[0] + eu[1] * ev[1]
     # the two ridges leave A's corner apart by their width and a gap
-    sep = (RIDGE_WIDTH + GAP) / (2 * math.sqrt((1 - cos_a) / 2))
+    sep = (width + gap) / (2 * math.sqrt((1 - cos_a) / 2))
     out: list[tuple[Point, Point, Point]] = []
     for k, name in ((1, "U"), (2, "V")):
-        t0, t1, ex, ey = _ridge(line[0], line[k], (spots[0], spots[k]), radius, sep)
-        if t1 - t0 < RIDGE_TIP + RIDGE_WIDTH:
-            raise _too_thin(size, PRINT_MESSAGES["ridge"].format(name=name))
+        # clear of the first mark by half the ridge's width, of the last mark and of the
+        # arrow by its point's half-width; marks on tabs stand clear of every ridge
+        marks_near = [(spots[0], 1.0, radius + gap + width / 2),
+                      (spots[k], -1.0, radius + gap + width)]  # fmt: skip
+        arrow = (centroid, -1.0, SHAFT_RADIUS + gap + width)
+        t0, t1, ex, ey = _ridge(line[0], line[k], sep, [*([] if tabs else marks_near), arrow])
+        if t1 - t0 < tip + width:
+            raise Unfit(PRINT_MESSAGES["ridge"].format(name=name))
         s = line[0]
         out.append(
             (
                 (s[0] + ex * t0, s[1] + ey * t0),
-                (s[0] + ex * (t1 - RIDGE_TIP), s[1] + ey * (t1 - RIDGE_TIP)),
+                (s[0] + ex * (t1 - tip), s[1] + ey * (t1 - tip)),
                 (s[0] + ex * t1, s[1] + ey * t1),
             )
         )
-    plan = Layout(p, centroid, spots, tuple(out))
-    _check_clearance(plan, radius, size, names)
+    plan = Layout(p, centroid, spots, tuple(out), fit, tabs[1] if tabs else list(p))
+    _check_clearance(plan, radius, min_gap, names)
     return plan
 
 
-def _check_clearance(plan: Layout, radius: float, size: float, names: str) -> None:
-    """Refuse a layout where two features come closer than the smallest gap, or reach an edge."""
+def _check_clearance(plan: Layout, radius: float, min_gap: float, names: str) -> None:
+    """Raise `Unfit` where two features come closer than ``min_gap``, or reach an edge."""
     words = PRINT_MESSAGES
     parts: list[tuple[str, Point, Point, float]] = [
         (words["arrow"], plan.centroid, plan.centroid, SHAFT_RADIUS)
     ]
     for name, spot in zip(names, plan.marks, strict=True):
-        parts.append((words["mark"].format(name=name), spot, spot, radius))
+        if len(plan.outline) == 3:  # marks inside the triangle, not on tabs
+            parts.append((words["mark"].format(name=name), spot, spot, radius))
+    width = plan.fit[5]
     for name, (s, base, tip) in zip("UV", plan.ridges, strict=True):
-        parts.append((words["ridge_name"].format(name=name), s, base, RIDGE_WIDTH / 2))
-        parts.append((words["ridge_name"].format(name=name), base, tip, RIDGE_WIDTH))
+        parts.append((words["ridge_name"].format(name=name), s, base, width / 2))
+        parts.append((words["ridge_name"].format(name=name), base, tip, width))
     for i in range(len(parts)):
         for j in range(i + 1, len(parts)):
             a, b = parts[i], parts[j]
-            if a[0] != b[0] and segment_segment(a[1], a[2], b[1], b[2]) < a[3] + b[3] + MIN_GAP:
-                raise _too_thin(size, PRINT_MESSAGES["touch"].format(first=a[0], second=b[0]))
+            if a[0] != b[0] and segment_segment(a[1], a[2], b[1], b[2]) < a[3] + b[3] + min_gap:
+                raise Unfit(words["touch"].format(first=a[0], second=b[0]))
     c = plan.corners
     for name, s, e, reach in parts:
         for k in range(3):
-            if segment_segment(s, e, c[k], c[(k + 1) % 3]) < reach + MIN_GAP:
-                raise _too_thin(
-                    size, PRINT_MESSAGES["touch"].format(first=name, second=words["edge"])
-                )
+            if segment_segment(s, e, c[k], c[(k + 1) % 3]) < reach + min_gap:
+                raise Unfit(words["touch"].format(first=name, second=words["edge"]))
+
+
+def _tab(p: Point, q: Point, start: float, half: float, depth: float) -> Ring:
+    """Outline a tab on the outside of the edge p→q (counter-clockwise), from ``start`` along it.
+
+    Returns its four corners in the plate's order: on the edge, out, out, on the edge.
+    """
+    e = _unit(p, q)
+    out = (e[1], -e[0])  # the outward normal of a counter-clockwise edge
+    a = (p[0] + e[0] * start, p[1] + e[1] * start)
+    b = (a[0] + e[0] * 2 * half, a[1] + e[1] * 2 * half)
+    return [
+        (_snap(x), _snap(y))
+        for x, y in (a, (a[0] + out[0] * depth, a[1] + out[1] * depth),
+                     (b[0] + out[0] * depth, b[1] + out[1] * depth), b)
+    ]  # fmt: skip
+
+
+def on_tabs(corners: tuple[Point, Point, Point], marks: str, names: str) -> Layout:
+    """Put each mark on a tab outside the triangle, beside its corner; the ridges inside.
+
+    The last resort of `fitted`, for a triangle too thin to hold its marks: each
+    corner's tab stands on the longer of its two sides, next to it, the mark at
+    its full size in the tab's middle. Raises `Unfit` when tabs or ridges collide.
+    """
+    _, margin, gap, min_gap, tip, width = FITS[-1]
+    p = corners
+    radius = MARK_RADIUS[marks]
+    half = radius + margin
+    depth = gap + 2 * radius + margin
+    on_edge: list[list[Ring]] = [[], [], []]  # tabs on the edge from corner k to corner k + 1
+    spots: list[Point] = []
+    for k in range(3):
+        after, before = p[(k + 1) % 3], p[(k + 2) % 3]
+        longer = max(dist(p[k], after), dist(before, p[k]))
+        if longer < 2 * (gap + half):  # the tab would overrun its side's far end
+            raise Unfit(PRINT_MESSAGES["marks"])
+        if dist(p[k], after) >= dist(before, p[k]):
+            tab = _tab(p[k], after, gap, half, depth)
+            on_edge[k].append(tab)
+        else:
+            tab = _tab(before, p[k], longer - gap - 2 * half, half, depth)
+            on_edge[(k + 2) % 3].append(tab)
+        spots.append(((tab[0][0] + tab[2][0]) / 2, (tab[0][1] + tab[2][1]) / 2))
+    outline: Ring = []
+    for k in range(3):
+        outline.append(p[k])
+        for tab in sorted(on_edge[k], key=lambda t: dist(p[k], t[0])):
+            outline += tab
+    _check_tabs([t for tabs in on_edge for t in tabs], min_gap)
+    return layout(p, marks, names, (1.0, margin, gap, min_gap, tip, width), (tuple(spots), outline))
+
+
+def _check_tabs(tabs: list[Ring], min_gap: float) -> None:
+    """Raise `Unfit` when a tab comes nearer another than ``min_gap``."""
+    for i in range(len(tabs)):
+        for j in range(i + 1, len(tabs)):
+            for m in range(4):
+                for n in range(4):
+                    a, b = tabs[i], tabs[j]
+                    if segment_segment(a[m], a[(m + 1) % 4], b[n], b[(n + 1) % 4]) < min_gap:
+                        raise Unfit(PRINT_MESSAGES["marks"])
+
+
+def fitted(u: Any, v: Any, size: float, marks: str, names: str) -> Layout:
+    """Lay the features out at ``size``, the first entry of `FITS` that fits, or raise `Unfit`.
+
+    When none fits inside the triangle, the marks go on tabs beside it (`on_tabs`);
+    the `Unfit` raised is that last resort's reason.
+    """
+    corners = flat_corners(u, v, size)
+    for fit in FITS:
+        try:
+            return layout(corners, marks, names, fit)
+        except Unfit:
+            continue
+    return on_tabs(corners, marks, names)
+
+
+def smallest_size(u: Any, v: Any, size: float, marks: str, names: str) -> float | None:
+    """Find the smallest whole size in mm above ``size`` at which the features fit, or None.
+
+    Sizes grow by a quarter (whole millimetres, up to the largest accepted) until one
+    fits, then halve the step between the last that did not and the first that did.
+    """
+    low, high = size, SIZE_RANGE[1]
+    while True:
+        if low >= high:
+            return None
+        above = min(high, float(math.floor(low * 1.25) + 1))
+        try:
+            fitted(u, v, above, marks, names)
+        except Unfit:
+            low = above
+            continue
+        break
+    low = float(math.floor(low))
+    while above - low > 1:  # above fits; low does not (or is the size asked for)
+        mid = float(math.floor((low + above) / 2))
+        try:
+            fitted(u, v, mid, marks, names)
+        except Unfit:
+            low = mid
+            continue
+        above = mid
+    return above
 
 
 # --------------------------------------------------------------------------- the solid, built
 
 
-def _ridge_outline(start: Point, base: Point, tip: Point) -> Ring:
+def _ridge_outline(start: Point, base: Point, tip: Point, width: float) -> Ring:
     """Outline a ridge counter-clockwise: a strip from ``start``, a point ending at ``tip``."""
     e = _unit(start, tip)
     n = (-e[1], e[0])
-    half = RIDGE_WIDTH / 2
-    wide = RIDGE_WIDTH
+    half = width / 2
+    wide = width
     ring = [
         (start[0] - n[0] * half, start[1] - n[1] * half),
         (base[0] - n[0] * half, base[1] - n[1] * half),
@@ -351,21 +491,21 @@ def solid(plan: Layout, size: float, marks: str, names: str) -> Builder:
     """Build the model as one surface: plate, arrow, ridges, marks, every face wound outward."""
     top = THICKNESS
     out = Builder()
-    plate: Ring = list(plan.corners)
+    plate: Ring = plan.outline
     shaft = _ring(plan.centroid, SHAFT_RADIUS)
     footprints = [shaft]
     raised: list[tuple[Ring, list[Ring], float]] = []
     for s, base, tip in plan.ridges:
-        outline = _ridge_outline(s, base, tip)
+        outline = _ridge_outline(s, base, tip, plan.fit[5])
         footprints.append(outline)
         raised.append((outline, [], _snap(top + RIDGE_HEIGHT)))
     dots: list[tuple[Ring, Ring]] = []
     for name, spot in zip(names, plan.marks, strict=True):
         if marks == "letters":
             rings = LETTERS[name]
-            outline = _shifted(rings[0], spot)
+            outline = _shifted(rings[0], spot, plan.fit[0])
             footprints.append(outline)
-            holes = [_shifted(h, spot) for h in rings[1:]]
+            holes = [_shifted(h, spot, plan.fit[0]) for h in rings[1:]]
             raised.append((outline, holes, _snap(top + LETTER_HEIGHT)))
             continue
         for col, row in BRAILLE[name]:

@@ -212,9 +212,9 @@
     });
   }
 
-  function shifted(points, center) {
+  function shifted(points, center, scale) {
     return points.map(function (q) {
-      return [snap(center[0] + q[0] - 2.5), snap(center[1] + q[1] - 3.5)];
+      return [snap(center[0] + (q[0] - 2.5) * scale), snap(center[1] + (q[1] - 3.5) * scale)];
     });
   }
 
@@ -240,8 +240,9 @@
     return [center[0] + (p[0] - center[0]) * k, center[1] + (p[1] - center[1]) * k];
   }
 
-  function tooThin(size, reason) {
-    return new PrintModelError(fill(K.messages.too_thin, { size: num(size), reason: reason }));
+  /** The features do not fit with one entry of K.fits (trinormal.printmodel._features.Unfit). */
+  function Unfit(reason) {
+    this.reason = reason;
   }
 
   function unit(start, end) {
@@ -249,26 +250,26 @@
     return [(end[0] - start[0]) / length, (end[1] - start[1]) / length];
   }
 
-  function ridge(start, end, marks, radius, sep) {
+  /** Where a ridge begins and ends along start→end, clear of obstacles [centre, side, reach]. */
+  function ridge(start, end, sep, obstacles) {
     var length = dist(start, end);
     var e = unit(start, end);
-    var ends = [];
-    // clear of the first mark by half the ridge's width, of the last by its point's half-width
-    [
-      [marks[0], 1.0, radius + K.gap + K.ridge_width / 2],
-      [marks[1], -1.0, radius + K.gap + K.ridge_width],
-    ].forEach(function (ms) {
-      var m = ms[0], reach = ms[2];
+    var t0 = sep, t1 = length;
+    obstacles.forEach(function (o) {
+      var m = o[0], side = o[1], reach = o[2];
       var along = (m[0] - start[0]) * e[0] + (m[1] - start[1]) * e[1];
       var off = Math.abs((m[0] - start[0]) * e[1] - (m[1] - start[1]) * e[0]);
-      ends.push(off < reach ? along + ms[1] * Math.sqrt(reach * reach - off * off) : null);
+      if (off < reach) {
+        var cut = along + side * Math.sqrt(reach * reach - off * off);
+        if (side > 0) t0 = Math.max(t0, cut);
+        else if (cut > t0) t1 = Math.min(t1, cut);
+      }
     });
-    var t0 = ends[0] === null ? sep : Math.max(sep, ends[0]);
-    var t1 = ends[1] === null ? length : Math.min(length, ends[1]);
     return [t0, t1, e[0], e[1]];
   }
 
-  function layout(p, size, marks, names) {
+  function layout(p, marks, names, fit, tabs) {
+    var scale = fit[0], margin = fit[1], gap = fit[2], minGap = fit[3], tip = fit[4], width = fit[5];
     var sides = [dist(p[1], p[2]), dist(p[2], p[0]), dist(p[0], p[1])];
     var perimeter = sides[0] + sides[1] + sides[2];
     var r = orient(p[0], p[1], p[2]) / perimeter;
@@ -276,66 +277,175 @@
       (sides[0] * p[0][0] + sides[1] * p[1][0] + sides[2] * p[2][0]) / perimeter,
       (sides[0] * p[0][1] + sides[1] * p[1][1] + sides[2] * p[2][1]) / perimeter,
     ];
-    var radius = K.mark_radius[marks];
-    if (r <= K.margin + radius + K.min_gap) throw tooThin(size, K.messages.marks);
-    var spots = p.map(function (q) { return inset(q, center, r, K.margin + radius); });
-    var line = p.map(function (q) { return inset(q, center, r, K.margin + K.ridge_width / 2); });
+    var radius = marks === "letters" ? K.mark_radius[marks] * scale : K.mark_radius[marks];
+    if (r <= (tabs ? margin + width / 2 : margin + radius) + minGap) throw new Unfit(K.messages.marks);
+    var spots = tabs ? tabs[0] : p.map(function (q) { return inset(q, center, r, margin + radius); });
+    var line = p.map(function (q) { return inset(q, center, r, margin + width / 2); });
     var centroid = [(p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3];
     var eu = unit(line[0], line[1]);
     var ev = unit(line[0], line[2]);
     var cosA = eu[0] * ev[0] + eu[1] * ev[1];
-    var sep = (K.ridge_width + K.gap) / (2 * Math.sqrt((1 - cosA) / 2));
+    var sep = (width + gap) / (2 * Math.sqrt((1 - cosA) / 2));
     var ridges = [[1, "U"], [2, "V"]].map(function (kn) {
       var k = kn[0];
-      var got = ridge(line[0], line[k], [spots[0], spots[k]], radius, sep);
+      var obstacles = tabs ? [] : [
+        [spots[0], 1.0, radius + gap + width / 2],
+        [spots[k], -1.0, radius + gap + width],
+      ];
+      obstacles.push([centroid, -1.0, K.shaft_radius + gap + width]);
+      var got = ridge(line[0], line[k], sep, obstacles);
       var t0 = got[0], t1 = got[1], ex = got[2], ey = got[3];
-      if (t1 - t0 < K.ridge_tip + K.ridge_width) throw tooThin(size, fill(K.messages.ridge, { name: kn[1] }));
+      if (t1 - t0 < tip + width) throw new Unfit(fill(K.messages.ridge, { name: kn[1] }));
       var s = line[0];
       return [
         [s[0] + ex * t0, s[1] + ey * t0],
-        [s[0] + ex * (t1 - K.ridge_tip), s[1] + ey * (t1 - K.ridge_tip)],
+        [s[0] + ex * (t1 - tip), s[1] + ey * (t1 - tip)],
         [s[0] + ex * t1, s[1] + ey * t1],
       ];
     });
-    var out = { corners: p, centroid: centroid, marks: spots, ridges: ridges };
-    checkClearance(out, radius, size, names);
+    var out = { corners: p, centroid: centroid, marks: spots, ridges: ridges, fit: fit, outline: tabs ? tabs[1] : p.slice() };
+    checkClearance(out, radius, minGap, names);
     return out;
   }
 
-  function checkClearance(lay, radius, size, names) {
+  /** A tab outside the edge p→q from `start` along it: on the edge, out, out, on the edge. */
+  function tab(p, q, start, half, depth) {
+    var e = unit(p, q);
+    var out = [e[1], -e[0]];
+    var a = [p[0] + e[0] * start, p[1] + e[1] * start];
+    var b = [a[0] + e[0] * 2 * half, a[1] + e[1] * 2 * half];
+    return [a, [a[0] + out[0] * depth, a[1] + out[1] * depth], [b[0] + out[0] * depth, b[1] + out[1] * depth], b].map(
+      function (q2) { return [snap(q2[0]), snap(q2[1])]; }
+    );
+  }
+
+  /** The marks on tabs beside the corners, the ridges inside (trinormal's on_tabs). */
+  function onTabs(p, marks, names) {
+    var last = K.fits[K.fits.length - 1];
+    var margin = last[1], gap = last[2], minGap = last[3], tip = last[4], width = last[5];
+    var radius = K.mark_radius[marks];
+    var half = radius + margin;
+    var depth = gap + 2 * radius + margin;
+    var onEdge = [[], [], []];
+    var spots = [];
+    for (var k = 0; k < 3; k++) {
+      var after = p[(k + 1) % 3], before = p[(k + 2) % 3];
+      var longer = Math.max(dist(p[k], after), dist(before, p[k]));
+      if (longer < 2 * (gap + half)) throw new Unfit(K.messages.marks);
+      var t;
+      if (dist(p[k], after) >= dist(before, p[k])) {
+        t = tab(p[k], after, gap, half, depth);
+        onEdge[k].push(t);
+      } else {
+        t = tab(before, p[k], longer - gap - 2 * half, half, depth);
+        onEdge[(k + 2) % 3].push(t);
+      }
+      spots.push([(t[0][0] + t[2][0]) / 2, (t[0][1] + t[2][1]) / 2]);
+    }
+    var outline = [];
+    var all = [];
+    for (k = 0; k < 3; k++) {
+      outline.push(p[k]);
+      var here = onEdge[k].slice();
+      if (here.length === 2 && dist(p[k], here[1][0]) < dist(p[k], here[0][0])) here.reverse();
+      here.forEach(function (t2) { outline.push.apply(outline, t2); });
+      all.push.apply(all, onEdge[k]);
+    }
+    checkTabs(all, minGap);
+    return layout(p, marks, names, [1.0, margin, gap, minGap, tip, width], [spots, outline]);
+  }
+
+  function checkTabs(tabs, minGap) {
+    for (var i = 0; i < tabs.length; i++) {
+      for (var j = i + 1; j < tabs.length; j++) {
+        for (var m = 0; m < 4; m++) {
+          for (var n = 0; n < 4; n++) {
+            var a = tabs[i], b = tabs[j];
+            if (segmentSegment(a[m], a[(m + 1) % 4], b[n], b[(n + 1) % 4]) < minGap) throw new Unfit(K.messages.marks);
+          }
+        }
+      }
+    }
+  }
+
+  function checkClearance(lay, radius, minGap, names) {
     var words = K.messages;
+    var width = lay.fit[5];
     var parts = [[words.arrow, lay.centroid, lay.centroid, K.shaft_radius]];
-    for (var i = 0; i < 3; i++) parts.push([fill(words.mark, { name: names[i] }), lay.marks[i], lay.marks[i], radius]);
+    for (var i = 0; i < 3; i++) {
+      if (lay.outline.length === 3) parts.push([fill(words.mark, { name: names[i] }), lay.marks[i], lay.marks[i], radius]);
+    }
     ["U", "V"].forEach(function (name, k) {
       var r = lay.ridges[k];
-      parts.push([fill(words.ridge_name, { name: name }), r[0], r[1], K.ridge_width / 2]);
-      parts.push([fill(words.ridge_name, { name: name }), r[1], r[2], K.ridge_width]);
+      parts.push([fill(words.ridge_name, { name: name }), r[0], r[1], width / 2]);
+      parts.push([fill(words.ridge_name, { name: name }), r[1], r[2], width]);
     });
     for (i = 0; i < parts.length; i++) {
       for (var j = i + 1; j < parts.length; j++) {
         var a = parts[i], b = parts[j];
-        if (a[0] !== b[0] && segmentSegment(a[1], a[2], b[1], b[2]) < a[3] + b[3] + K.min_gap) {
-          throw tooThin(size, fill(K.messages.touch, { first: a[0], second: b[0] }));
+        if (a[0] !== b[0] && segmentSegment(a[1], a[2], b[1], b[2]) < a[3] + b[3] + minGap) {
+          throw new Unfit(fill(K.messages.touch, { first: a[0], second: b[0] }));
         }
       }
     }
     var c = lay.corners;
     parts.forEach(function (part) {
       for (var k = 0; k < 3; k++) {
-        if (segmentSegment(part[1], part[2], c[k], c[(k + 1) % 3]) < part[3] + K.min_gap) {
-          throw tooThin(size, fill(K.messages.touch, { first: part[0], second: words.edge }));
+        if (segmentSegment(part[1], part[2], c[k], c[(k + 1) % 3]) < part[3] + minGap) {
+          throw new Unfit(fill(K.messages.touch, { first: part[0], second: words.edge }));
         }
       }
     });
   }
 
+  /** The layout with the first entry of K.fits that fits, else the marks on tabs (onTabs). */
+  function fitted(u, v, size, marks, names) {
+    var corners = flatCorners(u, v, size);
+    for (var i = 0; i < K.fits.length; i++) {
+      try {
+        return layout(corners, marks, names, K.fits[i]);
+      } catch (err) {
+        if (!(err instanceof Unfit)) throw err;
+      }
+    }
+    return onTabs(corners, marks, names);
+  }
+
+  function fits(u, v, size, marks, names) {
+    try {
+      fitted(u, v, size, marks, names);
+    } catch (err) {
+      if (!(err instanceof Unfit)) throw err;
+      return false;
+    }
+    return true;
+  }
+
+  /** The smallest whole size above `size` at which the features fit, or null (as Python's). */
+  function smallestSize(u, v, size, marks, names) {
+    var low = size, high = K.size_range[1], above;
+    for (;;) {
+      if (low >= high) return null;
+      above = Math.min(high, Math.floor(low * 1.25) + 1);
+      if (fits(u, v, above, marks, names)) break;
+      low = above;
+    }
+    low = Math.floor(low);
+    while (above - low > 1) {
+      var mid = Math.floor((low + above) / 2);
+      if (fits(u, v, mid, marks, names)) above = mid;
+      else low = mid;
+    }
+    return above;
+  }
+
   // ------------------------------------------------------------------------- the solid, built
 
-  function ridgeOutline(start, base, tip) {
+  function ridgeOutline(start, base, tip, width) {
     var e = unit(start, tip);
     var n = [-e[1], e[0]];
-    var half = K.ridge_width / 2;
-    var wide = K.ridge_width;
+    var half = width / 2;
+    var wide = width;
     return [
       [start[0] - n[0] * half, start[1] - n[1] * half],
       [base[0] - n[0] * half, base[1] - n[1] * half],
@@ -350,12 +460,12 @@
   function solid(lay, size, marks, names) {
     var top = K.thickness;
     var out = new Builder();
-    var plate = lay.corners.slice();
+    var plate = lay.outline;
     var shaft = ring(lay.centroid, K.shaft_radius);
     var footprints = [shaft];
     var raised = [];
     lay.ridges.forEach(function (r) {
-      var outline = ridgeOutline(r[0], r[1], r[2]);
+      var outline = ridgeOutline(r[0], r[1], r[2], lay.fit[5]);
       footprints.push(outline);
       raised.push([outline, [], snap(top + K.ridge_height)]);
     });
@@ -364,9 +474,9 @@
       var name = names[i], spot = lay.marks[i];
       if (marks === "letters") {
         var rings = K.letters[name];
-        var outline = shifted(rings[0], spot);
+        var outline = shifted(rings[0], spot, lay.fit[0]);
         footprints.push(outline);
-        var holes = rings.slice(1).map(function (h) { return shifted(h, spot); });
+        var holes = rings.slice(1).map(function (h) { return shifted(h, spot, lay.fit[0]); });
         raised.push([outline, holes, snap(top + K.letter_height)]);
         continue;
       }
@@ -450,8 +560,18 @@
    * package's sentence) for a triangle too thin to carry the features at this size.
    */
   function build(u, v, names, size, marks) {
-    var corners = flatCorners(u, v, size);
-    var lay = layout(corners, size, marks, names);
+    var lay;
+    try {
+      lay = fitted(u, v, size, marks, names);
+    } catch (err) {
+      if (!(err instanceof Unfit)) throw err;
+      var least = smallestSize(u, v, size, marks, names);
+      if (least === null) {
+        throw new PrintModelError(fill(K.messages.too_thin_always, { size: num(K.size_range[1]), reason: err.reason }));
+      }
+      throw new PrintModelError(fill(K.messages.too_thin, { size: num(size), reason: err.reason, fits: num(least) }));
+    }
+    var corners = lay.corners;
     var s = solid(lay, size, marks, names);
     return {
       vertices: s.vertices,
