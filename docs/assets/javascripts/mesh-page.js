@@ -286,6 +286,31 @@ function acceptDrops(root, drop, onFile) {
   });
 }
 
+/** The worker's progress on `bar`: reading is the first half of the bar, checking the second. */
+function progressOn(bar) {
+  return (stage, fraction) => {
+    const value = stage === "read" ? fraction / 2 : 0.5 + fraction / 2;
+    bar.value = Math.round(value * 100);
+    bar.setAttribute("aria-valuetext", `${bar.value} %`);
+  };
+}
+
+/** The example buttons: each fetches its file (from this site) and opens it. */
+function openExamples(root, open, onError) {
+  for (const b of root.querySelectorAll("button[data-example]")) {
+    b.addEventListener("click", async () => {
+      const url = new URL(b.dataset.example, document.baseURI);
+      try {
+        const response = await fetch(url);
+        if (!response.ok) throw new Error(String(response.status));
+        open(url.pathname.split("/").pop(), await response.arrayBuffer());
+      } catch (err) {
+        onError(err);
+      }
+    });
+  }
+}
+
 function mount(root) {
   const input = $("tn-mesh-file");
   const status = $("tn-mesh-status");
@@ -313,12 +338,7 @@ function mount(root) {
     status.dataset.state = state;
   }
 
-  function progress(stage, fraction) {
-    // reading is the first half of the bar, checking the second
-    const value = stage === "read" ? fraction / 2 : 0.5 + fraction / 2;
-    bar.value = Math.round(value * 100);
-    bar.setAttribute("aria-valuetext", `${bar.value} %`);
-  }
+  const progress = progressOn(bar);
 
   function setBusy(on) {
     busy = on;
@@ -380,21 +400,21 @@ function mount(root) {
     }
   }
 
-  async function fix() {
-    if (busy || !canFix()) return;
-    const name = current.name;
+  /** One step of the worker on the file shown ("fix" or "weld"), then its report. */
+  async function step(kind, working, done, state) {
     setBusy(true);
     bar.value = 50;
-    setStatus(message("fixing"));
+    setStatus(working);
     try {
-      const count = current.report.faces_to_flip.length;
-      const res = await worker.run("fix", {}, [], progress);
-      fixedFile = { bytes: res.file, name: fixedName(name) };
-      res.name = fixedFile.name; // the report below is the repaired file's
-      const shown = showResult(res, message("fixed", { faces: window.TrinormalMesh.counted(count, "face") }));
+      const res = await worker.run(kind, {}, [], progress);
+      if (kind === "fix") {
+        fixedFile = { bytes: res.file, name: fixedName(current.name) };
+        res.name = fixedFile.name; // the report below is the repaired file's
+      }
+      const shown = showResult(res, done);
       setBusy(false);
-      root.dataset.state = "fixed";
-      download.focus(); // the next step; the status above is read out (aria-live)
+      root.dataset.state = state;
+      if (kind === "fix") download.focus(); // the next step; the status above is read out (aria-live)
       await shown;
     } catch (err) {
       setBusy(false);
@@ -402,22 +422,16 @@ function mount(root) {
     }
   }
 
-  async function weld() {
+  function fix() {
+    if (busy || !canFix()) return;
+    const faces = window.TrinormalMesh.counted(current.report.faces_to_flip.length, "face");
+    step("fix", message("fixing"), message("fixed", { faces }), "fixed");
+  }
+
+  function weld() {
     const distance = nearMiss();
     if (busy || !distance) return;
-    setBusy(true);
-    bar.value = 50;
-    setStatus(message("welding", { distance }));
-    try {
-      const res = await worker.run("weld", {}, [], progress);
-      const shown = showResult(res, message("welded", { distance }));
-      setBusy(false);
-      root.dataset.state = "welded";
-      await shown;
-    } catch (err) {
-      setBusy(false);
-      setStatus(err.message, "error");
-    }
+    step("weld", message("welding", { distance }), message("welded", { distance }), "welded");
   }
 
   // A file beyond the page's limit is refused on its size alone, before any of it is read.
@@ -439,18 +453,7 @@ function mount(root) {
   fixButton.addEventListener("click", fix);
   weldButton.addEventListener("click", weld);
   download.addEventListener("click", () => fixedFile && saveFile(fixedFile));
-  for (const b of root.querySelectorAll("button[data-example]")) {
-    b.addEventListener("click", async () => {
-      const url = new URL(b.dataset.example, document.baseURI);
-      try {
-        const response = await fetch(url);
-        if (!response.ok) throw new Error(String(response.status));
-        open(url.pathname.split("/").pop(), await response.arrayBuffer());
-      } catch (err) {
-        setStatus(message("internal", { detail: err.message }), "error");
-      }
-    });
-  }
+  openExamples(root, open, (err) => setStatus(message("internal", { detail: err.message }), "error"));
   acceptDrops(root, drop, openFile);
   setBusy(false);
   root.dataset.ready = "true";

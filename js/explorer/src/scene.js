@@ -168,6 +168,31 @@ function createParts(container) {
   return { renderer, canvas, scene, camera, controls };
 }
 
+/** Where a stage's camera goes home to: what it keeps in view and where it looks from. */
+function newHome() {
+  return {
+    target: new Vector3(),
+    distance: 6,
+    radius: 1,
+    points: [new Vector3()], // what home keeps in view (display units)
+    center: new Vector3(), // the middle of their box
+    direction: DEFAULT_DIRECTION.clone(), // where the camera looks from now
+    start: DEFAULT_DIRECTION.clone(), // where "Reset view" looks from
+  };
+}
+
+/**
+ * The camera's projection for the view's size: with an inset (`free` px covered at the right,
+ * by the readout in full screen) the picture's centre moves into the part left free, at the
+ * same scale (a view offset of a camera as wide as the view and the inset together).
+ */
+function projectCamera(camera, width, height, free) {
+  camera.aspect = (width + free) / height;
+  if (free) camera.setViewOffset(width + free, height, free, 0, width, height);
+  else camera.clearViewOffset();
+  camera.updateProjectionMatrix();
+}
+
 /**
  * The stage in `container`; `onRender` runs before each picture is drawn. It renders on
  * demand (requestRender), keeps a home framing (framePoints, reset, along) and follows the
@@ -179,15 +204,7 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
   let width = 1;
   let height = 1;
   let inset = 0; // px at the right of the view that the picture keeps free (setInset)
-  const home = {
-    target: new Vector3(),
-    distance: 6,
-    radius: 1,
-    points: [new Vector3()], // what home keeps in view (display units)
-    center: new Vector3(), // the middle of their box
-    direction: DEFAULT_DIRECTION.clone(), // where the camera looks from now
-    start: DEFAULT_DIRECTION.clone(), // where "Reset view" looks from
-  };
+  const home = newHome();
   let atHome = true; // the camera is where reset or a view button put it (the user has not moved it)
 
   function draw() {
@@ -206,17 +223,8 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
     draw();
   }
 
-  /**
-   * The camera's projection for the view's size: with an inset (px covered at the right, by
-   * the readout in full screen) the picture's centre moves into the part left free, at the
-   * same scale (a view offset of a camera as wide as the view and the inset together).
-   */
   function project() {
-    const free = freeInset();
-    camera.aspect = (width + free) / height;
-    if (free) camera.setViewOffset(width + free, height, free, 0, width, height);
-    else camera.clearViewOffset();
-    camera.updateProjectionMatrix();
+    projectCamera(camera, width, height, freeInset());
   }
 
   /** The inset as the view's size allows it (at most half the view). */
