@@ -10,7 +10,7 @@
 * A, B and C marked beside their corners: embossed block letters, or braille
   cells (A = dot 1, B = dots 1 2, C = dots 1 4) with ``marks="braille"``.
 
-A thin triangle gets smaller features (`_features.FITS`: letters down to 4 mm
+A thin triangle gets smaller features, in steps (letters down to 4 mm
 tall, narrower gaps and ridges; braille keeps its standard cell); if its marks
 still do not fit inside, they stand on tabs of the plate beside the corners.
 Only when even that fails is it refused, and the message names the smallest
