@@ -133,9 +133,6 @@ def test_searching_the_guide_s_words_lists_the_guide_first(
 
 # ----------------------------------------------------------------------------- public names only
 
-#: The tallest an API page may be at 1280 px wide, in CSS pixels: a reader finds a name by
-#: scrolling, so a module with many names is split over several pages (api/mesh/).
-MAX_HEIGHT = 30_000
 #: A private name in text: ``_x`` or ``a._x`` (not a path such as ``trinormal/_notebooks``, not
 #: a dunder such as ``__init__``).
 PRIVATE = re.compile(r"(?<![\w/])(?:\w+\.)*_(?!_)[A-Za-z]\w*")
@@ -210,16 +207,3 @@ def test_a_mention_links_to_the_name_s_own_entry(site_dir: Path) -> None:
         r'<a class="autorefs autorefs-internal"[^>]*href="([^"]+)"[^>]*><code>FIELDS<', fields
     )
     assert hrefs and all(h.endswith("#trinormal.fields.FIELDS") for h in hrefs), hrefs
-
-
-def test_every_api_page_is_at_most_30000_px_tall_at_1280_px(
-    page: Any, server: str, site_dir: Path
-) -> None:
-    page.set_viewport_size({"width": 1280, "height": 800})
-    heights = {}
-    for rel in _api_pages(site_dir):
-        page.goto(server + rel)
-        page.wait_for_load_state("load")
-        heights[rel] = page.evaluate("document.documentElement.scrollHeight")
-    assert len(heights) >= len(MODULES) + 1
-    assert {rel: h for rel, h in heights.items() if h > MAX_HEIGHT} == {}, heights
