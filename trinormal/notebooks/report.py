@@ -24,13 +24,12 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
 import zipfile
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
-from dataclasses import dataclass, field
-from multiprocessing import get_context
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -326,18 +325,61 @@ def run_class(
 ) -> list[Outcome]:
     """Run every notebook, ``jobs`` at a time (the number of cores by default), each in a process.
 
+    Each notebook is run by a Python process of its own (``python -m
+    trinormal.notebooks.report NOTEBOOK TIMEOUT OUT``, which writes its `Outcome` as JSON):
+    this process starts them and waits for them, and starts no thread.
     ``progress(done, total, outcome)`` is called as each notebook finishes. The outcomes
     come back in the order of ``notebooks``.
     """
     if not notebooks:
         return []
     workers = max(1, min(jobs or os.cpu_count() or 1, len(notebooks)))
+    pending = list(enumerate(notebooks))
+    running: dict[int, subprocess.Popen[bytes]] = {}
     results: dict[int, Outcome] = {}
-    with ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn")) as pool:
-        futures = {pool.submit(run_notebook, str(p), timeout): i for i, p in enumerate(notebooks)}
-        for done, future in enumerate(as_completed(futures), 1):
-            index = futures[future]
-            results[index] = future.result()
-            if progress is not None:
-                progress(done, len(notebooks), results[index])
+    with tempfile.TemporaryDirectory(prefix="trinormal-class-") as tmp:
+        out = Path(tmp)
+        while pending or running:
+            while pending and len(running) < workers:
+                i, path = pending.pop(0)
+                command = [
+                    sys.executable,
+                    "-m",
+                    __name__,
+                    str(path),
+                    repr(timeout),
+                    str(out / f"{i}.json"),
+                ]
+                running[i] = subprocess.Popen(
+                    command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+                )
+            finished = [i for i, proc in running.items() if proc.poll() is not None]
+            if not finished:
+                time.sleep(0.05)
+            for i in finished:
+                del running[i]
+                results[i] = _read_outcome(out / f"{i}.json", notebooks[i])
+                if progress is not None:
+                    progress(len(results), len(notebooks), results[i])
     return [results[i] for i in range(len(notebooks))]
+
+
+def _read_outcome(path: Path, notebook: Path) -> Outcome:
+    """Read the `Outcome` a runner process wrote, or say in one line that the runner failed."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        checks = tuple(Check(**c) for c in data.pop("checks"))
+        return Outcome(**data, checks=checks)
+    except (OSError, ValueError, KeyError, TypeError):
+        return Outcome(str(notebook), student_name(notebook), "failed", "its runner stopped")
+
+
+def _run_one(argv: Sequence[str]) -> None:
+    """``NOTEBOOK TIMEOUT OUT``: run one notebook (`run_notebook`), its `Outcome` as JSON to OUT."""
+    notebook, timeout, out = argv
+    outcome = run_notebook(notebook, float(timeout))
+    Path(out).write_text(json.dumps(asdict(outcome)), encoding="utf-8")
+
+
+if __name__ == "__main__":
+    _run_one(sys.argv[1:])
