@@ -12,7 +12,8 @@ import sys
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
-from typing import NoReturn
+
+from trinormal.notebooks import _Parser
 
 __all__ = ["report_main", "worksheet_main"]
 
@@ -41,11 +42,6 @@ an answer key with every student's answers and worked steps. The same roster and
 seed give the same worksheets; no two students share a variant of an exercise while
 the bank has enough (60 each).
 """
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: {message}\n")
 
 
 def _report_parser() -> argparse.ArgumentParser:

@@ -57,3 +57,16 @@ export function setStyle(el, name, value) {
   styles[name] = value;
   el.style[name] = value;
 }
+
+/** Give `blob` to the browser as a download called `name` (a click on a link made for it). */
+export function saveBlob(blob, name, doc = document) {
+  const url = URL.createObjectURL(blob);
+  const a = doc.createElement("a");
+  a.href = url;
+  a.download = name;
+  a.hidden = true;
+  doc.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 0);
+}

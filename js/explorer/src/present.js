@@ -9,7 +9,7 @@
  * (an iframe without permission), the root is pinned over the window instead and Esc or the
  * button returns. Either way the root carries the class tn-fullscreen, which the styles use.
  */
-import { element, listen } from "./dom.js";
+import { element, listen, saveBlob } from "./dom.js";
 
 const SCALE = 2; // the saved picture's pixels per pixel of the view on the screen
 
@@ -165,15 +165,7 @@ export function pictureOf(stage) {
 
 /** Download pictureOf(stage) as `filename`. */
 async function savePicture(stage, filename) {
-  const blob = await pictureOf(stage);
-  const url = URL.createObjectURL(blob);
-  const a = element("a");
-  a.href = url;
-  a.download = filename;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 0);
+  saveBlob(await pictureOf(stage), filename);
 }
 
 /**

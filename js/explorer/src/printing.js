@@ -10,20 +10,7 @@
  * A refusal (a degenerate triangle, one too thin for its features) comes back as the
  * package's sentence, shown in the status line beside the buttons.
  */
-import { setText } from "./dom.js";
-
-/** Give `bytes` to the browser as a download called `name`. */
-function download(bytes, name, doc) {
-  const url = URL.createObjectURL(new Blob([bytes], { type: "model/stl" }));
-  const a = doc.createElement("a");
-  a.href = url;
-  a.download = name;
-  a.hidden = true;
-  doc.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 0);
-}
+import { saveBlob, setText } from "./dom.js";
 
 /**
  * Listen for the host's answers; returns { request(marks, status), stop() }. `status`: the
@@ -42,7 +29,7 @@ export function createPrinting(model) {
     const data = buffers && buffers[0];
     if (!data) return;
     const bytes = data instanceof DataView ? new Uint8Array(data.buffer, data.byteOffset, data.byteLength) : new Uint8Array(data);
-    download(bytes, answer.name, status.ownerDocument || document);
+    saveBlob(new Blob([bytes], { type: "model/stl" }), answer.name, status.ownerDocument || document);
     setText(status, answer.done || "");
   }
   model.on("msg:custom", onMessage);
