@@ -190,6 +190,25 @@ self.TrinormalMesh = (function (root, constants) {
     return t;
   }
 
+  /**
+   * OBJ's statements, fed its physical lines in order (the reader and the writer's stored
+   * normals): a line ending in a backslash goes on in the next one and "#" starts a comment.
+   * Returns a statement's tokens, or null while the statement goes on.
+   */
+  function objStatements() {
+    var pending = "";
+    return function (raw) {
+      if (raw.charAt(raw.length - 1) === "\\") {
+        pending += raw.slice(0, -1) + " ";
+        return null;
+      }
+      var line = pending + raw;
+      pending = "";
+      var hash = line.indexOf("#");
+      return tokens(hash < 0 ? line : line.slice(0, hash));
+    };
+  }
+
   var DIGIT = /\p{Nd}/u;
 
   /**
@@ -303,6 +322,7 @@ self.TrinormalMesh = (function (root, constants) {
       show: show,
       splitlines: splitlines,
       tokens: tokens,
+      objStatements: objStatements,
       pyFloat: pyFloat,
       pyInt: pyInt,
       number: number,

@@ -200,21 +200,12 @@ self.TrinormalMesh.part("read", "base", function (base) {
     var polys = [];
     var polyLines = [];
     var nv = 0;
-    var pending = "";
+    var statement = I.objStatements();
     for (var ln = 0; ln < lines.length; ln++) {
       if ((ln & 0xffff) === 0) progress(ln / lines.length);
       var lineno = ln + 1;
-      var raw = lines[ln];
-      if (raw.charAt(raw.length - 1) === "\\") {
-        pending += raw.slice(0, -1) + " ";
-        continue;
-      }
-      var line = pending + raw;
-      pending = "";
-      var hash = line.indexOf("#");
-      if (hash >= 0) line = line.slice(0, hash);
-      var toks = tokens(line);
-      if (!toks.length) continue;
+      var toks = statement(lines[ln]);
+      if (!toks || !toks.length) continue;
       var kw = toks[0];
       if (kw === "v") {
         if (toks.length < 4) fileError(name, lineno, "obj_vertex", {});

@@ -329,18 +329,10 @@ self.TrinormalMesh.part("write", "check", function (base) {
       }
       return out;
     }
-    var normals = [], face = -1, pending = "";
+    var normals = [], face = -1, statement = I.objStatements();
     lines.forEach(function (l) {
-      var raw = l[0];
-      if (raw.charAt(raw.length - 1) === "\\") {
-        pending += raw.slice(0, -1) + " ";
-        return;
-      }
-      var line = pending + raw;
-      pending = "";
-      var hash = line.indexOf("#");
-      var toks = I.tokens(hash < 0 ? line : line.slice(0, hash));
-      if (!toks.length) return;
+      var toks = statement(l[0]);
+      if (!toks || !toks.length) return;
       if (toks[0] === "vn" && toks.length >= 4) {
         var n3 = [I.pyFloat(toks[1]), I.pyFloat(toks[2]), I.pyFloat(toks[3])];
         normals.push(n3.indexOf(undefined) < 0 ? n3 : [0, 0, 0]);

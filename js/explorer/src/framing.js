@@ -7,7 +7,7 @@
  */
 import { Vector3 } from "three";
 import { niceCeil, powerOfTen } from "./numbers.js";
-import { DEFAULT_DIRECTION } from "./scene.js";
+import { DEFAULT_DIRECTION, boundingSphere } from "./scene.js";
 import { drawnAt } from "./scaling.js";
 
 // the views the camera may start from when the usual one is poor: 8 azimuths at 3 elevations
@@ -123,14 +123,7 @@ export function computeFrame(pts, winding, showUnit, degenerate = false) {
     // one point: frame a tick's width around it, so the view does not zoom into a dot
     for (const sign of [-1, 1]) box.push(a.clone().addScalar((sign * t) / 2));
   }
-  const lo = box[0].clone();
-  const hi = box[0].clone();
-  for (const p of box) {
-    lo.min(p);
-    hi.max(p);
-  }
-  const center = lo.clone().add(hi).multiplyScalar(0.5);
-  const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+  const { center, radius } = boundingSphere(box);
   const normal = plane ? n.clone().normalize() : null;
   const line = plane ? null : lineOf(disp);
   return { S, offset, includeOrigin, radius, center, box, L, t, normal, line, start: startDirection(normal, line) };

@@ -45,6 +45,20 @@ function usable(direction) {
 }
 
 /**
+ * The centre of the points' axis-aligned box and half its diagonal (at least 1e-3, so a
+ * single point still has a size to frame): what the camera is fitted around.
+ */
+export function boundingSphere(points) {
+  const lo = points[0].clone();
+  const hi = points[0].clone();
+  for (const p of points) {
+    lo.min(p);
+    hi.max(p);
+  }
+  return { center: lo.clone().add(hi).multiplyScalar(0.5), radius: Math.max(hi.distanceTo(lo) / 2, 1e-3) };
+}
+
+/**
  * Where the camera looks from `direction` (a z-up perspective camera of FOV degrees) so that
  * every one of `points` (display units) projects inside a view of `width` x `height` px with
  * `margin` px to spare on each side (LABEL_MARGIN: for the labels beyond the points and the
@@ -54,14 +68,7 @@ function usable(direction) {
 export function fitCamera(points, direction, { width, height }, margin = LABEL_MARGIN) {
   const d = usable(direction);
   const { x, y, z } = basis(UP, d);
-  const lo = points[0].clone();
-  const hi = points[0].clone();
-  for (const p of points) {
-    lo.min(p);
-    hi.max(p);
-  }
-  const center = lo.clone().add(hi).multiplyScalar(0.5);
-  const radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+  const { center, radius } = boundingSphere(points);
   const xs = points.map((p) => p.clone().sub(center).dot(x));
   const ys = points.map((p) => p.clone().sub(center).dot(y));
   const target = center
