@@ -85,7 +85,7 @@ function play(context, tones) {
  * pressed again, it is quiet. state(): the host's state. Returns { changed(), dispose() }.
  */
 export function createListen(bar, state) {
-  const button = element("button", "tnx-listen", "♪ Listen");
+  const button = element("button", "tnx-listen tn-text-button", "♪ Listen");
   button.type = "button";
   const label = "Listen to U, V and N: pan follows x, pitch follows y, brightness follows z";
   button.setAttribute("aria-label", label);

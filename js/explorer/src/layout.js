@@ -23,7 +23,7 @@ export function createLayout(el) {
   const main = element("div", "tnx-main");
   const side = element("div", "tnx-side");
   const toolbarEl = toolbarElement("tnx-toolbar", "3D view");
-  const stageEl = element("div", "tnx-stage");
+  const stageEl = element("div", "tnx-stage tn-stage");
   // a click gives the view focus (not a Tab stop), so its keys (f: full screen) are its own
   stageEl.tabIndex = -1;
   stageEl.dataset.lmSuppressShortcuts = "true";

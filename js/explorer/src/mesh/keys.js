@@ -52,10 +52,10 @@ export function createFaceForm({ onPick, picked }) {
   label.htmlFor = id;
   const input = element("input", "tnm-face-input");
   Object.assign(input, { id, type: "number", min: "0", step: "1", inputMode: "numeric", autocomplete: "off" });
-  const show = element("button", "tnm-button", "Show face");
+  const show = element("button", "tnm-button tn-text-button", "Show face");
   show.type = "submit";
-  const prev = element("button", "tnm-button", "Previous face to flip");
-  const next = element("button", "tnm-button", "Next face to flip");
+  const prev = element("button", "tnm-button tn-text-button", "Previous face to flip");
+  const next = element("button", "tnm-button tn-text-button", "Next face to flip");
   prev.type = next.type = "button";
   form.append(label, input, show, prev, next);
   let flipped = null;

@@ -44,7 +44,7 @@ export function createToolbar({ flags, stage, root }) {
   const el = toolbarElement("tnm-toolbar", "3D view of the mesh");
   const buttons = {};
   for (const [key, text, title] of TOGGLES) {
-    const b = element("button", "tnm-button", text);
+    const b = element("button", "tnm-button tn-text-button", text);
     b.type = "button";
     b.setAttribute("aria-pressed", "false");
     b.title = title;
@@ -52,7 +52,7 @@ export function createToolbar({ flags, stage, root }) {
     buttons[key] = b;
   }
   buttons.show_face_normals.hidden = buttons.show_vertex_normals.hidden = true;
-  const reset = element("button", "tnm-button", "Reset view");
+  const reset = element("button", "tnm-button tn-text-button", "Reset view");
   reset.type = "button";
   reset.addEventListener("click", () => stage.reset());
   el.append(reset, ...Object.values(buttons));

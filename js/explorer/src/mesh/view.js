@@ -69,7 +69,7 @@ function hint(canPick) {
 /** The view's HTML: the stage, the legend, the face-number form, the picked face's readout, the hint. */
 function layout(canPick, faceForm) {
   const root = element("div", "tn-view tnm-root");
-  const stageEl = element("div", "tnm-stage");
+  const stageEl = element("div", "tnm-stage tn-stage");
   const legend = element("ul", "tnm-legend");
   const panel = element("div", "tnm-pick"); // said by the description (describe.js), which is live
   panel.hidden = true;
