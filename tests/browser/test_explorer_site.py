@@ -759,6 +759,19 @@ def test_collinear_points_are_framed_side_on_full_screen_and_save_picture(page, 
     page.wait_for_function("() => document.fullscreenElement === null")
     settle(page)
     assert "tn-fullscreen" not in (root.get_attribute("class") or "")
+    # where the page may not use the Fullscreen API (an iframe without permission), the view is
+    # pinned over the window instead, and Esc returns
+    page.evaluate("() => { Element.prototype.requestFullscreen = () => Promise.reject(); }")
+    page.get_by_role("button", name="Full screen").click()
+    page.wait_for_function(
+        "el => el.classList.contains('tn-fullscreen')", arg=root.element_handle()
+    )
+    assert stage.bounding_box()["width"] >= 0.95 * 1280
+    page.keyboard.press("Escape")
+    page.wait_for_function(
+        "el => !el.classList.contains('tn-fullscreen')", arg=root.element_handle()
+    )
+    assert page.get_by_role("button", name="Full screen").is_visible()
     # Save picture: a PNG twice the size of the view on the screen
     size = page.evaluate(PROJECTED)
     with page.expect_download() as download:
