@@ -6,11 +6,13 @@ every coordinate's box; from the toolbar, Tab and Enter look down the z axis, Ta
 vertex C, and the arrow keys move it across the line AB: the live description changes to the
 back of the triangle; Enter on the flip turns it to the front, and ``ex.describe()`` in the
 kernel prints the view's words (the view tells the kernel where it looks from). Every control is at least 24 px and shows its focus,
-and axe-core finds nothing serious in the explorer.
+and axe-core finds nothing serious in the explorer. "Download for 3D printing" says in
+words why a thin triangle is refused, and downloads the kernel's model once a cell widens it.
 """
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 from axe_playwright_python.base import AxeResults
@@ -19,10 +21,12 @@ from page_checks import AXE, AXE_OPTIONS, serious
 
 from trinormal import triangle_normal
 from trinormal.explorer.describe import describe
+from trinormal.printmodel import print_model
 
 CELLS = [
     "from trinormal.explorer import Explorer\nex = Explorer()\nex",
     "print(ex.texts['cy'], ex.winding.value)\nprint(ex.describe())",
+    "ex.set(c=(0, 1, 0))",
 ]
 
 DESCRIPTION = ".tnx-root .tnx-describe"
@@ -111,5 +115,25 @@ def test_the_explorer_in_jupyterlab_is_described_and_driven_by_keyboard(
         page.evaluate(AXE.axe_script)
         results = page.evaluate("o => axe.run(document.querySelector('.tnx-root'), o)", AXE_OPTIONS)
         assert serious(AxeResults(results)) == []
+
+        # Download for 3D printing: a triangle too thin for its ridges is refused in words...
+        status = page.locator(".tnx-root .tnx-print-status")
+        printing = page.locator(".tnx-root").get_by_role(
+            "button", name="Download for 3D printing", exact=True
+        )
+        printing.click()
+        page.wait_for_function(
+            "el => el.textContent.includes('too thin')", arg=status.element_handle()
+        )
+        # ...and once a cell has made it wider, the kernel's model of it is downloaded
+        run_cell(page, 2)
+        page.wait_for_function(
+            "() => document.querySelector('.tnx-root input[aria-label^=\"C.y, exact\"]')?.value === '1'",
+            timeout=30_000,
+        )
+        with page.expect_download() as download:
+            printing.click()
+        want = print_model((0, 0, 0), (1, 0, 0), (0, 1, 0), winding="ACB").stl()
+        assert Path(download.value.path()).read_bytes() == want
     finally:
         context.close()
