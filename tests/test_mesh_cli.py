@@ -195,7 +195,7 @@ def test_json_has_the_report_for_printing(tmp_path):
     assert r["size"]["extent"] == pytest.approx([0.05, 0.05, 0.05])
     assert r["size"]["units_hint"] == "metres"
     assert r["verdict"] == (
-        "not watertight, 1 piece, wound consistently: not ready for a slicer (1 hole)"
+        "not watertight, 1 piece, wound outward: not ready for a slicer (1 hole)"
     )
     text = " ".join(run("mesh", str(path)).stdout.split())  # unwrapped
     assert "1 hole: 4 edges around it." in text

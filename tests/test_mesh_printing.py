@@ -113,6 +113,17 @@ def test_the_verdict_says_ready_or_what_stands_in_the_way():
         "not watertight, 1 piece, wound consistently: not ready for a slicer "
         "(3 edges of three faces or more, 1 duplicate face)"
     )
+    # an open piece that mostly encloses a volume is judged as a closed one is; a sheet is not
+    assert _verdict(v, f[:-2]) == (
+        "not watertight, 1 piece, wound outward: not ready for a slicer (1 hole)"
+    )
+    assert _verdict(v, f[:-2, ::-1]) == (
+        "not watertight, 1 piece, inside out: not ready for a slicer "
+        "(1 hole, 10 faces to turn over)"
+    )
+    assert _verdict(v[:4], f[:2]) == (  # the square of the first two faces
+        "not watertight, 1 piece, wound consistently: not ready for a slicer (1 hole)"
+    )
     assert _verdict(v[:0], np.empty((0, 3), dtype=int)) == (
         "not watertight, 0 pieces, wound consistently: not ready for a slicer (no faces)"
     )
@@ -142,7 +153,7 @@ def test_the_summary_ends_with_the_printing_lines():
         "Size: 0.05 × 0.05 × 0.05 (x, y, z) in the file's units, which slicers read as mm.",
         "Read as millimetres its largest side, 0.05, is under 1 mm: the model is probably in "
         "metres (scale it by 1000) or inches (by 25.4).",
-        "Surface area 0.0125; no enclosed volume: no piece is closed and wound consistently, "
-        "so none has an inside to measure.",
-        "Verdict: not watertight, 1 piece, wound consistently: not ready for a slicer (1 hole).",
+        "Surface area 0.0125; no enclosed volume: only a closed, consistently wound piece has "
+        "an inside to measure.",
+        "Verdict: not watertight, 1 piece, wound outward: not ready for a slicer (1 hole).",
     ]

@@ -85,8 +85,8 @@ PRINTING: dict[str, str | tuple[str, str]] = {
     "piece_volume": "piece {i}: {volume}",
     "others_none": "the other pieces, open or wound inconsistently, enclose none",
     "area_no_volume": (
-        "Surface area {area}; no enclosed volume: no piece is closed and wound consistently, "
-        "so none has an inside to measure."
+        "Surface area {area}; no enclosed volume: only a closed, consistently wound piece has "
+        "an inside to measure."
     ),
     "verdict_line": "Verdict: {verdict}.",
     "verdict": "{closure}, {pieces}, {winding}: {conclusion}",
@@ -394,21 +394,27 @@ def _total_volume(volumes: tuple[float | None, ...]) -> float | None:
     return total
 
 
+def _winding(r: MeshReport) -> str:
+    """The verdict's word on the winding: an open piece judged over its holes counts as a
+    closed one does; a sheet, which has no outside, leaves "wound consistently"."""
+    pieces = r.components
+    if not all(c.orientable for c in pieces):
+        return "one_sided"
+    if not r.consistent_winding:
+        return "inconsistent"
+    if any(c.outward is False for c in pieces):
+        return "inside_out"
+    if any(c.closed and c.outward is None for c in pieces):
+        return "no_volume"
+    if r.closed or (pieces and all(c.outward for c in pieces)):
+        return "wound_outward"
+    return "wound_consistently"
+
+
 def _verdict(r: MeshReport, n_holes: int) -> str:
     pieces = r.components
     closed_consistent = [c for c in pieces if c.closed and c.consistent]
-    if not all(c.orientable for c in pieces):
-        winding = "one_sided"
-    elif not r.consistent_winding:
-        winding = "inconsistent"
-    elif any(c.outward is False for c in closed_consistent):
-        winding = "inside_out"
-    elif any(c.outward is None for c in closed_consistent):
-        winding = "no_volume"
-    elif r.closed:
-        winding = "wound_outward"
-    else:
-        winding = "wound_consistently"
+    winding = _winding(r)
     if r.ok:
         conclusion = _say("ready")
     else:
@@ -447,7 +453,9 @@ def print_report(r: MeshReport) -> PrintReport:
     >>> p.holes, p.surface_area, p.volume, p.verdict
     ((), 24.0, 8.0, 'watertight, 1 piece, wound outward: ready for a slicer')
     >>> print_report(check(v * 0.01, f[:-2])).to_dict()["verdict"]
-    'not watertight, 1 piece, wound consistently: not ready for a slicer (1 hole)'
+    'not watertight, 1 piece, wound outward: not ready for a slicer (1 hole)'
+    >>> print_report(check(v * 0.01, f[:-2, ::-1])).to_dict()["verdict"]
+    'not watertight, 1 piece, inside out: not ready for a slicer (1 hole, 10 faces to turn over)'
     """
     holes = _holes(r.boundary_edges)
     volumes = tuple(c.volume for c in r.components)

@@ -555,8 +555,8 @@ def check(
     Size: 2 × 2 × 2 (x, y, z) in the file's units, which slicers read as mm.
     Read as millimetres its largest side, 2, is under 10 mm: if the model is in inches,
       scale it by 25.4 (by 10 if it is in centimetres).
-    Surface area 20; no enclosed volume: no piece is closed and wound consistently, so none
-      has an inside to measure.
+    Surface area 20; no enclosed volume: only a closed, consistently wound piece has an
+      inside to measure.
     Verdict: not watertight, 1 piece, wound inconsistently: not ready for a slicer (1 hole,
       2 faces to turn over).
     """

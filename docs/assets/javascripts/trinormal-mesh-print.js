@@ -111,12 +111,13 @@ self.TrinormalMesh.part("print", "check", function (base) {
   function verdict(r, nHoles) {
     var pieces = r.components;
     var measured = pieces.filter(function (c) { return c.closed && c.consistent; });
+    // an open piece judged over its holes counts as a closed one does (printing.py's _winding)
     var winding;
     if (!pieces.every(function (c) { return c.orientable; })) winding = "one_sided";
     else if (!r.consistent_winding) winding = "inconsistent";
-    else if (measured.some(function (c) { return c.outward === false; })) winding = "inside_out";
+    else if (pieces.some(function (c) { return c.outward === false; })) winding = "inside_out";
     else if (measured.some(function (c) { return c.outward === null; })) winding = "no_volume";
-    else if (r.closed) winding = "wound_outward";
+    else if (r.closed || (pieces.length && pieces.every(function (c) { return c.outward === true; }))) winding = "wound_outward";
     else winding = "wound_consistently";
     var conclusion;
     if (r.ok) conclusion = say("ready");
