@@ -395,8 +395,11 @@ def _total_volume(volumes: tuple[float | None, ...]) -> float | None:
 
 
 def _winding(r: MeshReport) -> str:
-    """The verdict's word on the winding: an open piece judged over its holes counts as a
-    closed one does; a sheet, which has no outside, leaves "wound consistently"."""
+    """Return the verdict's word on the winding.
+
+    An open piece judged over its holes counts as a closed one does; a sheet, which has no
+    outside, leaves "wound consistently".
+    """
     pieces = r.components
     if not all(c.orientable for c in pieces):
         return "one_sided"
