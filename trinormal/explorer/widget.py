@@ -559,7 +559,7 @@ class Explorer:
         the same order and the same *Parallelogram* and *N/|N|* toggles.
 
         Otherwise it returns the matplotlib drawing of the same state (`Snapshot`,
-        648 × 288 px, in the same colours, with N at the same scale and label as in
+        as `figure` shows it: the same colours, N at the same scale and label as in
         the view): when no view is shown, when there is no JavaScript (a script,
         nbconvert, a static page), or when the view has not yet drawn the current
         state. The kernel hears from the browser only between cells, so a cell that
