@@ -527,7 +527,20 @@ ex"""
 CHECK = """\
 print(ex.result.exact.a == (Fraction(1, 10), Fraction(1, 5), Fraction(3, 10)),
       ex.result.exact.b[0] == Fraction(1, 3))
-print(*(ex.texts[k] for k in ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz")))"""
+print(*(ex.texts[k] for k in ("ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz")))
+if ex.picture_source == "view":  # not in Run All: the view has not drawn yet (no matplotlib)
+    png = ex.to_png()
+    print("view", int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big"))"""
+
+#: Once the view has sent its picture of what it draws: the size of its canvas (CSS px).
+PICTURE_SENT = """() => {
+    const root = document.querySelector('.tnx-root');
+    const sent = root.tnxPicture, drawn = root.tnxProject();
+    const same = sent && JSON.stringify([sent.values.a, sent.values.b, sent.values.c])
+        === JSON.stringify(drawn.values);
+    const canvas = root.querySelector('canvas');
+    return same && [canvas.clientWidth, canvas.clientHeight];
+}"""
 
 
 @pytest.fixture
@@ -569,6 +582,9 @@ def test_dragging_a_vertex_updates_the_kernel(notebook: Any) -> None:
     page.mouse.up()
     wait_idle(page)
     page.wait_for_timeout(300)
+    # the view sends its picture once the drag has settled: ex.to_png() is then that picture,
+    # twice the size of the canvas on the screen
+    canvas = page.wait_for_function(PICTURE_SENT, timeout=30_000).json_value()
     run_cell(page, 1)
     page.wait_for_function(
         """() => {
@@ -583,6 +599,11 @@ def test_dragging_a_vertex_updates_the_kernel(notebook: Any) -> None:
     assert a == ["0.1", "0.2", "0.3"] and b == ["1/3", "0", "0"]
     assert c != ["0", "2.35", "0"]
     assert all(re.fullmatch(r"-?\d+\.\d", v) for v in c), c  # on the 0.1 grid, written exactly
+    assert output_text(page, 1).strip().splitlines()[2].split() == [
+        "view",
+        str(2 * canvas[0]),
+        str(2 * canvas[1]),
+    ]
     # the readout in the view shows the kernel's strings for the new position
     expected = triangle_normal(a, b, c).format(4)
     readout = page.locator(".jp-OutputArea-output").first.inner_text()

@@ -6,7 +6,8 @@ so `Snapshot` draws the same state with matplotlib: the triangle in 3D
 with U and V from A and N from the centre (at the scale, and with the label,
 of `trinormal.plotting.scale`, as the 3D view draws it), and bar charts of the
 components of N and of the unit normal, in the package's one colour code
-([`trinormal.colors`][trinormal.colors]). `Explorer.to_png` returns this picture.
+([`trinormal.colors`][trinormal.colors]). `Explorer.to_png` returns this picture when no 3D
+view has sent its own picture of the current state.
 
 Only the moving artists are redrawn on an update; the axes, ticks and panes come
 from a cached bitmap of the same figure, so a new PNG costs a fraction of a

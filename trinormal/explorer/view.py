@@ -143,6 +143,10 @@ class ExplorerView(anywidget.AnyWidget):
         and ``error``.
     waiting : str
         What the readout says while the view's edits wait for a busy kernel.
+    send_pictures : bool
+        Whether the view sends the kernel its picture each time it settles after a
+        change, as ``{"picture": {...}}`` with the PNG as a buffer (`Explorer.to_png`
+        keeps it). Off by default; an `Explorer` turns it on for its view.
     """
 
     _esm = BUNDLE
@@ -169,6 +173,7 @@ class ExplorerView(anywidget.AnyWidget):
     set_at = traitlets.Dict().tag(sync=True)
     last_edit = traitlets.Dict().tag(sync=True)
     waiting = traitlets.Unicode(WAITING).tag(sync=True)
+    send_pictures = traitlets.Bool(False).tag(sync=True)
 
     def __init__(self, **kwargs: Any) -> None:
         self._own = 1  # the starting values are version 0

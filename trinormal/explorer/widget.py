@@ -54,6 +54,16 @@ _WINDING_OPTIONS = tuple((w.label, w.value) for w in Winding)
 
 _RANGE_HINT = "create the Explorer with min= and max= to widen the range"
 
+#: What a picture of the 3D view shows besides the camera: the values its message names.
+PICTURE_FIELDS = ("a", "b", "c", "winding", "show_parallelogram", "show_unit_normal")
+
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def _picture_key(read: Callable[[str], Any]) -> tuple[Any, ...]:
+    """Read the values of `PICTURE_FIELDS` by name into one comparable tuple (lists as tuples)."""
+    return tuple(tuple(v) if isinstance(v, list) else v for v in map(read, PICTURE_FIELDS))
+
 
 def _num(x: float) -> str:
     """Write a number for a message with as many decimals as it needs, nothing more."""
@@ -255,12 +265,15 @@ class Explorer:
             bounds=[low, high],
             precision=precision,
             precision_range=list(PRECISION_RANGE),
+            send_pictures=True,
         )
         self.view.add_class("trinormal-explorer")
         self.view.edit_handler = self._edit
         self.view.code_setter = self._code_set
         #: Where a 3D view of this explorer last looked from (its camera), for `describe`.
         self._viewer: tuple[float, float, float] | None = None
+        #: The last picture a 3D view sent (`to_png`): the values it shows, and the PNG.
+        self._view_picture: tuple[tuple[Any, ...], bytes] | None = None
         self.view.on_msg(self._on_view_message)
         self.controls: dict[str, Control] = {}
         self.inputs: dict[str, Control] = {}
@@ -514,20 +527,64 @@ class Explorer:
         """A matplotlib figure of the current state (the static snapshot)."""
         return self.snapshot.figure
 
-    def to_png(self) -> bytes:
-        r"""Draw the current state as a PNG, for print, worksheets and outputs without JavaScript.
+    @property
+    def picture_source(self) -> str:
+        """Which picture `to_png` gives now: ``"view"`` (the 3D view's) or ``"snapshot"``.
 
-        The picture is a matplotlib rendering (`Snapshot`) of the same state, in the
-        same colours, with N at the same scale and label as in the 3D view: the kernel
-        cannot reach the browser's WebGL canvas. The view's *Save picture* button
-        downloads the 3D view itself, at twice its size on the screen.
+        ``"view"`` when a 3D view of this explorer has sent its picture of the current
+        state (the same A, B and C, order and toggles); ``"snapshot"`` otherwise.
 
         Examples
         --------
-        >>> Explorer().to_png()[:8]
+        >>> Explorer().picture_source  # no view has drawn it
+        'snapshot'
+        """
+        return "snapshot" if self._view_png() is None else "view"
+
+    def _view_png(self) -> bytes | None:
+        """Return the last picture a 3D view sent if it shows the current state, else None."""
+        picture = self._view_picture
+        current = _picture_key(lambda name: getattr(self.view, name))
+        return picture[1] if picture is not None and picture[0] == current else None
+
+    def to_png(self) -> bytes:
+        r"""Give the current state as a PNG: the 3D view's own picture, else a matplotlib one.
+
+        While the explorer is shown in Jupyter, its 3D view sends the kernel the
+        picture *Save picture* downloads (the view as it is on the screen, at twice
+        its size there, labels included) each time that picture settles after a
+        change: a cell's `set`, the end of a drag, a key, a flip, the end of a turn of
+        the camera, *Reset view*, a new size. `to_png` returns that picture when one
+        has arrived for the current state: the same A, B and C (their exact text),
+        the same order and the same *Parallelogram* and *N/|N|* toggles.
+
+        Otherwise it returns the matplotlib drawing of the same state (`Snapshot`,
+        as `figure` shows it: the same colours, N at the same scale and label as in
+        the view): when no view is shown, when there is no JavaScript (a script,
+        nbconvert, a static page), or when the view has not yet drawn the current
+        state. The kernel hears from the browser only between cells, so a cell that
+        calls ``ex.set(...)`` and then ``ex.to_png()`` gets the matplotlib drawing,
+        and so do the cells after the one that shows the explorer in *Run All*; run
+        the cell again once the view shows the triangle. `picture_source` says which
+        of the two you get.
+
+        Returns
+        -------
+        bytes
+            A PNG file.
+
+        Examples
+        --------
+        No view has drawn this explorer, so the picture is the matplotlib drawing:
+
+        >>> ex = Explorer()
+        >>> ex.picture_source
+        'snapshot'
+        >>> ex.to_png()[:8]
         b'\x89PNG\r\n\x1a\n'
         """
-        return self.snapshot.to_png()
+        png = self._view_png()
+        return self.snapshot.to_png() if png is None else png
 
     def render(self) -> None:
         """Bring the snapshot's pixels up to date (see `Snapshot.render`)."""
@@ -612,9 +669,20 @@ class Explorer:
         """  # noqa: E501
         return describe(self.result, self._viewer if viewer is None else tuple(viewer))
 
-    def _on_view_message(self, _widget: Any, content: Any, _buffers: Any) -> None:
-        """Keep where a 3D view looks from (``{"viewer": [x, y, z]}``, sent when it settles)."""
-        viewer = content.get("viewer") if isinstance(content, dict) else None
+    def _on_view_message(self, _widget: Any, content: Any, buffers: Any) -> None:
+        """Keep what a 3D view sends when it settles: where it looks from, and its picture.
+
+        ``{"viewer": [x, y, z]}`` is the direction towards its camera (`describe`);
+        ``{"picture": {"a": [...], ..., "show_unit_normal": ...}}`` with one buffer, a
+        PNG, is its picture and the values it shows (`to_png`).
+        """
+        if not isinstance(content, dict):
+            return
+        shown = content.get("picture")
+        png = bytes(buffers[0]) if buffers else b""
+        if isinstance(shown, dict) and png.startswith(_PNG_SIGNATURE):
+            self._view_picture = (_picture_key(shown.get), png)
+        viewer = content.get("viewer")
         if (
             isinstance(viewer, list)
             and len(viewer) == 3

@@ -15,7 +15,7 @@ import { turnWithKeys } from "./mesh/keys.js";
 import { injectStyle } from "./style.js";
 import CSS from "./access.css";
 
-const SETTLE_MS = 250;
+export const SETTLE_MS = 250;
 
 let ids = 0;
 

@@ -12,10 +12,10 @@
  * rendering), framing.js (the units and the box the camera keeps in view), scaling.js (how
  * long N is drawn), picture.js (axes, triangle, arrows and labels), panels.js (readout,
  * messages, legend), interaction.js (moving a vertex), touch.js, access.js (the view in words
- * and in sound, for a reader who cannot see it). This file builds them and
+ * and in sound, for a reader who cannot see it), topng.js (its picture for the kernel). This file builds them and
  * keeps them in step with the model.
  */
-import { addAccess } from "./access.js";
+import { addAccess, SETTLE_MS } from "./access.js";
 import { createControls } from "./controls.js";
 import { createEdits } from "./edits.js";
 import { Drawing } from "./geometry.js";
@@ -31,6 +31,7 @@ import CSS from "./style.css";
 import { isDark, roleColor, surface, watchTheme } from "./theme.js";
 import { createPrintButtons, createToolbar } from "./toolbar.js";
 import { setStyle } from "./dom.js";
+import { sendPictures } from "./topng.js";
 import { touchGate } from "./touch.js";
 
 const KEYS = [
@@ -198,7 +199,12 @@ function render({ model, el }) {
   view.controls = createControls(parts.root, { get, edit, color: view.colors });
 
   try {
-    view.stage = createStage(parts.stageEl, { onRender: () => view.labels.layout(view.stage.camera, view.stage.size()) });
+    view.stage = createStage(parts.stageEl, {
+      onRender: () => {
+        view.labels.layout(view.stage.camera, view.stage.size());
+        view.pictures?.rendered();
+      },
+    });
   } catch (err) {
     return showWithoutWebGL(parts, { model, controls: view.controls, keys: KEYS });
   }
@@ -256,8 +262,11 @@ function render({ model, el }) {
   repaint(view);
   // for a reader who cannot see the picture: the description and the Listen button (access.js)
   const stopAccess = addAccess(view);
+  // the picture for the kernel's ex.to_png(), sent each time it settles (topng.js)
+  view.pictures = sendPictures(view, { settleMs: SETTLE_MS });
 
   return () => {
+    view.pictures.stop();
     stopAccess();
     stopModel();
     view.toolbar.dispose();
