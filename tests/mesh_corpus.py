@@ -9,7 +9,8 @@ reversed faces, polygons, extreme scales and files that cannot be read (one at l
 reason of `trinormal.mesh.io.READ_ERRORS`), and small files with random edits.
 
 `outcome(name, data)` is what Python makes of a file, as the page shows it: the report
-(``check(...).to_dict()``), its sentences, the format, the polygons the split found not
+(``check(...).to_dict()``), its sentences, the page's tables of it
+(`trinormal.mesh_page.report_table`), the format, the polygons the split found not
 planar or crossing themselves, and the repaired file (`fix_winding`, then `write_mesh` of the
 read model: the file itself with the faces turned over); or the sentence of the error.
 ``tests/test_mesh_parity.py`` runs the page's JavaScript on the same files in Node.
@@ -39,7 +40,7 @@ from trinormal.mesh import (
     write_mesh,
 )
 from trinormal.mesh.io import MeshFileError, _format_of
-from trinormal.mesh_page import EXAMPLES, example_file
+from trinormal.mesh_page import EXAMPLES, example_file, report_table
 
 ROOT = Path(__file__).resolve().parents[1]
 STORED = (ROOT / "tests" / "data" / "meshes", ROOT / "trinormal" / "mesh" / "data")
@@ -73,9 +74,11 @@ def outcome(name: str, data: bytes, scratch: Path) -> dict[str, Any]:
     fixed, _ = fix_winding(m.vertices, m.faces, weld=weld)
     write_mesh(scratch, m, fixed)
     before, after = m.normals_against(), m.normals_against(fixed)
+    d = r.to_dict()
     return {
-        "report": _finite_or_text(r.to_dict()),
+        "report": _finite_or_text(d),
         "summary": r.summary(width=0).split("\n"),
+        "table": report_table(d),
         "format": m.format,
         "binary": m.encoding == "binary",
         "polygons": m.n_polygons,

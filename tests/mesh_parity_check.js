@@ -1,8 +1,8 @@
 /*
  * Run the mesh page's JavaScript (docs/assets/javascripts/trinormal-mesh*.js, loaded in the
  * order mesh-worker.js loads them) on a corpus of mesh files and compare, file by file, with
- * what Python made of each: the report, its sentences, the format, the repaired file byte for
- * byte, or the error message. Used by tests/test_mesh_parity.py:
+ * what Python made of each: the report, its sentences, the page's tables of it, the format,
+ * the repaired file byte for byte, or the error message. Used by tests/test_mesh_parity.py:
  *   node tests/mesh_parity_check.js CORPUS_DIR CONSTANTS.json
  * CORPUS_DIR/manifest.json lists {name, file, expected, repaired}: `file` holds the bytes the
  * page is given, `repaired` (when the file can be read) the bytes Python's write_mesh wrote for
@@ -99,6 +99,7 @@ function run(M, name, bytes) {
   var shown = {
     report: finiteOrText(dict),
     summary: M.summary(dict),
+    table: M.table(dict),
     format: mesh.format,
     binary: !!mesh.binary,
     polygons: mesh.polygons,

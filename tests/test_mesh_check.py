@@ -348,6 +348,41 @@ def test_fix_winding_flips_the_fewest_faces_on_an_open_sheet():
     assert (fixed == f).all()
 
 
+def test_turn_over_turns_exactly_the_faces_listed_keeping_the_first_corner():
+    v, f = mesh.torus(n_major=8, n_minor=5)
+    which = np.array([7, 0, 31, 7], dtype=np.uint16)  # any order, any integer type, 7 twice
+    out = mesh.turn_over(f.astype(np.int32), which)
+    assert out.dtype == np.intp and out is not f
+    listed = np.zeros(len(f), dtype=bool)
+    listed[[0, 7, 31]] = True
+    assert (out[listed] == f[listed][:, [0, 2, 1]]).all()
+    assert (out[~listed] == f[~listed]).all()
+    assert (mesh.face_normals(v, out)[listed] == -mesh.face_normals(v, f)[listed]).all()
+    # the report's faces to flip, turned over, are fix_winding's answer
+    bad = mesh.turn_over(f, [3, 4, 5])
+    fixed, flipped = mesh.fix_winding(v, bad)
+    assert flipped.tolist() == [3, 4, 5] and (fixed == f).all()
+    assert (mesh.turn_over(bad, mesh.check(v, bad).faces_to_flip) == fixed).all()
+    assert (mesh.turn_over(f, []) == f).all() and (mesh.turn_over(f[:0], []) == f[:0]).all()
+
+
+@pytest.mark.parametrize(
+    "faces,which,message",
+    [
+        ([[0, 1, 2]], [1], r"which\[0\] is face 1, but the valid face indices are 0 to 0$"),
+        ([[0, 1, 2], [0, 2, 3]], [0, -1], r"which\[1\] is face -1"),
+        (np.zeros((0, 3), dtype=int), [0], r"which\[0\] is face 0, but there are no faces"),
+        ([[0, 1, 2]], [True], r"got dtype bool; for a mask of the faces, pass numpy.flatnonzero"),
+        ([[0, 1, 2]], [0.0], r"which must hold face indices \(integers\), got dtype float64$"),
+        ([[0, 1, 2]], [[0]], r"shape \(k,\), got shape \(1, 1\)"),
+        ([[0, 1]], [0], r"faces must have shape \(F, 3\)"),
+    ],
+)
+def test_turn_over_names_what_is_not_a_face(faces, which, message):
+    with pytest.raises(ValueError, match=message):
+        mesh.turn_over(faces, which)
+
+
 def test_a_mobius_strip_is_reported_and_left_alone():
     n = 12
     t = np.linspace(0, 2 * np.pi, n, endpoint=False)

@@ -16,11 +16,13 @@ import re
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from trinormal import colors, mesh_page
 from trinormal.mesh import MeshFileError, check, parse_mesh, read_mesh
 from trinormal.mesh.io import OTHER_ERRORS, READ_ERRORS
+from trinormal.mesh.printing import shown
 
 ROOT = Path(__file__).resolve().parents[1]
 JS = ROOT / "docs" / "assets" / "javascripts"
@@ -90,6 +92,60 @@ def test_the_report_rows_are_keys_of_pythons_report():
     v, f = mesh_page.example_mesh("cube-one-face-flipped.obj")
     keys = set(check(v, f).to_dict())
     assert {key for key, _ in mesh_page.REPORT_ROWS} <= keys
+
+
+def test_the_piece_columns_are_keys_of_pythons_pieces():
+    v, f = mesh_page.example_mesh("cube-one-face-flipped.obj")
+    keys = set(check(v, f).components[0].to_dict())
+    first, *others = (key for key, _ in mesh_page.PIECE_COLUMNS)
+    assert first == "piece" and set(others) == keys - {"judged_by"}
+
+
+def _rows(report: dict) -> dict[str, str]:
+    return {key: text for key, _, text in mesh_page.report_table(report)["rows"]}
+
+
+def test_the_tables_show_a_cavity_its_volume_and_the_report_for_printing():
+    """A hollow ball in metres: the inner shell is a cavity with a negative volume."""
+    from trinormal.mesh import icosphere
+
+    v, f = icosphere(2)
+    hollow = check(np.vstack([v, v * 0.5]), np.vstack([f, f[:, ::-1] + len(v)]))
+    d = hollow.to_dict()
+    table = mesh_page.report_table(d)
+    columns = [key for key, _ in mesh_page.PIECE_COLUMNS]
+    outer, inner = ({k: c for k, c in zip(columns, p, strict=True)} for p in table["pieces"])
+    assert (outer["piece"], outer["cavity"], inner["piece"], inner["cavity"]) == (
+        "1",
+        "no",
+        "2",
+        "yes",
+    )
+    assert inner["outward"] == "yes" and inner["volume"] == shown(hollow.components[1].volume)
+    assert inner["volume"].startswith("-") and not outer["volume"].startswith("-")
+    rows = _rows(d)
+    p = hollow.printing
+    # the words of the summary's lines: its numbers, its units hint, its verdict
+    assert rows["surface_area"] == shown(p.surface_area) and rows["volume"] == shown(p.volume)
+    assert rows["size"] == "2 × 2 × 2\n" + p.size.lines()[1]
+    assert rows["verdict"] == p.verdict and rows["holes"] == "0"
+    assert f"Surface area {rows['surface_area']};" in hollow.summary(width=0)
+
+
+def test_a_table_cell_lists_twelve_items_then_how_many_more():
+    # fifteen separate triangles: fifteen pieces, each a hole of 3 edges
+    v = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]]) + 2.0 * np.arange(15)[:, None, None]
+    d = check(v.reshape(-1, 3), np.arange(45).reshape(-1, 3)).to_dict()
+    rows = _rows(d)
+    holes = d["holes"]
+    assert len(holes) > mesh_page.TABLE_LISTED
+    listed = ", ".join(str(h) for h in holes[: mesh_page.TABLE_LISTED])
+    assert rows["holes"] == f"{len(holes)}: {listed}, {len(holes) - 12} more"
+    assert rows["volume"] == mesh_page.MESSAGES["no_volume_cell"]
+    assert rows["boundary_edges"].startswith(f"{len(d['boundary_edges'])}: edges ")
+    assert rows["unused_vertices"] == "0" and rows["n_components"] == "15"
+    empty = _rows(check(np.zeros((0, 3)), np.zeros((0, 3), dtype=int)).to_dict())
+    assert empty["size"] == "—" and empty["outward"] == "—"
 
 
 @pytest.mark.parametrize("name", [n for n, _ in mesh_page.EXAMPLES])

@@ -2,8 +2,9 @@
 
 The corpus of ``tests/mesh_corpus.py`` (every mesh file the tests use, the page's examples,
 and files made in every format and encoding, many of them damaged or unreadable) is written
-to a temporary folder with what Python makes of each file: the report, its sentences and the
-repaired file, or the error's sentence. ``tests/mesh_parity_check.js`` runs the page's own
+to a temporary folder with what Python makes of each file: the report, its sentences, the
+page's tables of it (`trinormal.mesh_page.report_table`) and the repaired file, or the
+error's sentence. ``tests/mesh_parity_check.js`` runs the page's own
 JavaScript on the same files in Node, once for the whole corpus, and lists every file where
 anything differs, down to one byte of the repaired file.
 """
@@ -21,6 +22,7 @@ from mesh_corpus import corpus, outcome
 
 from trinormal.mesh import degenerate_faces, face_normals
 from trinormal.mesh.io import READ_ERRORS
+from trinormal.mesh_page import MESSAGES, PIECE_COLUMNS
 from trinormal.tolerances import DEFAULT_TOL
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -67,6 +69,15 @@ def assert_every_kind_of_file(manifest: list[dict]) -> None:
     hints = {r["size"]["units_hint"] for r in printing if r["size"]}
     assert hints == {None, "metres", "inches", "micrometres"}
     assert sum(r["verdict"].endswith(": ready for a slicer") for r in printing) >= 5
+    # the page's tables: cavities, a list of holes cut short, hints, no volume, infinite ones
+    tables = [r["table"] for r in read]
+    cells = [dict((k, t) for k, _, t in table["rows"]) for table in tables]
+    cavity = [k for k, _ in PIECE_COLUMNS].index("cavity")
+    assert sum(any(p[cavity] == "yes" for p in table["pieces"]) for table in tables) >= 3
+    assert sum("more" in c["holes"] for c in cells) >= 3
+    assert sum("Read as millimetres" in c["size"] for c in cells) >= 5
+    assert sum(c["volume"] == MESSAGES["no_volume_cell"] for c in cells) >= 5
+    assert sum(c["volume"] in ("inf", "-inf") for c in cells) >= 1
     refused = {e["expected"].get("key") for e in manifest}
     parts = {"at_line", "no_extension", "ply_valid", "ply_no_vertices"}  # parts of sentences
     assert set(READ_ERRORS) - parts - refused == set()

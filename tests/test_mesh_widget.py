@@ -6,9 +6,12 @@ compared with the arrays and the report, the clicked face's normal with Fraction
 
 from __future__ import annotations
 
+import json
+import shutil
 import subprocess
 import sys
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -173,6 +176,62 @@ def test_set_mesh_shows_the_repair(ball: mesh.MeshData) -> None:
     data = bundle[0] if isinstance(bundle, tuple) else bundle
     assert data["text/plain"] == view.summary()
     assert "application/vnd.jupyter.widget-view+json" in data
+
+
+def view_words(*views: MeshView) -> list[str]:
+    """The words under each view, as the mesh view's describe.js writes them from its traits."""
+    node = shutil.which("node")
+    assert node, "`node` is not on PATH: install Node.js to test the view's JavaScript"
+    facts = [
+        {
+            "about": v.about,
+            "faces": v.n_faces,
+            "flipped": decode(v, "flipped", "i4").tolist(),
+            "picked": v.picked,
+            "selection": v.selection,
+        }
+        for v in views
+    ]
+    script = Path(__file__).parent / "mesh_describe_check.mjs"
+    run = subprocess.run(
+        [node, str(script)], input=json.dumps(facts), capture_output=True, text=True, check=True
+    )
+    words: list[str] = json.loads(run.stdout)
+    return words
+
+
+def test_the_description_names_the_file_and_its_pieces_as_the_site_page_does(
+    ball: mesh.MeshData,
+) -> None:
+    """A view of a file names the file (the site names the file chosen); arrays, "The model"."""
+    from_file = MeshView(ball)
+    report = from_file.report
+    assert from_file.about == {
+        "name": "damaged_ball.obj",
+        "pieces": [
+            {k: getattr(c, k) for k in ("faces", "closed", "outward", "faces_to_flip")}
+            for c in report.components
+        ],
+    }
+    v, f = mesh.cube()
+    two = np.vstack([f, f + 8])[:-1]  # two cubes, the second with a hole
+    arrays = MeshView(np.vstack([v, v + 5.0]), two)
+    named = MeshView(ball.vertices, ball.faces, report=report, name="my ball.stl")
+    words = view_words(from_file, arrays, named)
+    assert words[0].startswith("damaged_ball.obj: 1263 faces in 1 piece. The piece is open"), words
+    assert "Faces to flip (outlined): " in words[0]
+    assert words[1].startswith(
+        "The model: 23 faces in 2 pieces. Its pieces: piece 1, 12 faces: closed; "
+        "piece 2, 11 faces: open (it has a hole)."
+    ), words[1]
+    assert words[2].startswith("my ball.stl: 1263 faces"), words[2]
+    # another mesh shown in the same view: its own name, or none
+    from_file.set_mesh(v, f)
+    assert from_file.about["name"] == "" and view_words(from_file)[0].startswith("The model: 12")
+    from_file.set_mesh(ball, name="again.obj")
+    assert from_file.about["name"] == "again.obj"
+    with pytest.raises(ValueError, match=r"name must be a string \(the model's name\), got 3"):
+        MeshView(v, f, name=3)
 
 
 def test_without_anywidget_the_error_names_the_extra() -> None:

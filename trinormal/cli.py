@@ -383,7 +383,7 @@ def _run_mesh(args_in: list[str]) -> int:
             out_fmt = mesh.io._format_of(args.fix, None)
             # the faces fix_winding turns over are the report's: turn them over once found
             flipped = report.faces_to_flip
-            faces = mesh.repair._turn_over(data.faces, flipped)
+            faces = mesh.turn_over(data.faces, flipped)
             mesh.write_mesh(args.fix, data, faces, out_fmt)  # in its own format: the file, kept
             against = data.normals_against(faces) if out_fmt == data.format else None
             fixed = (out_fmt, flipped, against)

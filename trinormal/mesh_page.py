@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import Any
 
 from trinormal.mesh.io import READ_ERRORS, READ_NOTES
-from trinormal.mesh.printing import printing_constants
+from trinormal.mesh.printing import Size, printing_constants, shown
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
 from trinormal.mesh.shells import CAP_FRACTION
@@ -31,11 +31,14 @@ __all__ = [
     "LIMITS",
     "MESSAGES",
     "NOUNS",
+    "PIECE_COLUMNS",
     "REPORT_ROWS",
     "SUMMARY",
+    "TABLE_LISTED",
     "example_file",
     "example_mesh",
     "file_size",
+    "report_table",
     "site_constants",
 ]
 
@@ -117,10 +120,15 @@ MESSAGES: dict[str, str] = {
         "as they are: a slicer needs a closed surface to tell inside from outside, so fill or "
         "remove them in a modelling program such as Blender or MeshLab."
     ),
+    # in the tables: a value with no answer, the size, and no enclosed volume
+    "no_answer": "—",
+    "size_cell": "{x} × {y} × {z}",
+    "no_volume_cell": "none: no piece is closed and wound consistently",
     # under the table of pieces
     "pieces_dash": (
-        "— : no answer for that piece. Facing outward means something only for a closed "
-        "piece wound consistently."
+        "— : no answer for that piece. Only a piece wound consistently that encloses a "
+        "volume (closed, or open but closed over its holes) faces outward or inward, and "
+        "only a closed one has its volume measured."
     ),
 }
 
@@ -143,7 +151,121 @@ REPORT_ROWS: tuple[tuple[str, str], ...] = (
     ("consistent_winding", "Wound consistently"),
     ("outward", "Every closed piece faces outward"),
     ("faces_to_flip", "Faces to flip"),
+    # the report for printing (trinormal.mesh.printing), in the order of the summary's lines
+    ("holes", "Holes (the edges around each, largest first)"),
+    ("size", "Size: x × y × z, in the file's units (slicers read mm)"),
+    ("surface_area", "Surface area (the file's units squared)"),
+    ("volume", "Enclosed volume (closed pieces wound consistently)"),
+    ("verdict", "Verdict"),
 )
+
+#: The columns of the table of pieces: ``piece`` (its number, from 1), then keys of
+#: ``ComponentReport.to_dict()``.
+PIECE_COLUMNS: tuple[tuple[str, str], ...] = (
+    ("piece", "Piece"),
+    ("faces", "Faces"),
+    ("closed", "Closed"),
+    ("consistent", "Wound consistently"),
+    ("orientable", "Can be wound consistently"),
+    ("outward", "Faces outward"),
+    ("cavity", "Cavity (inside another closed piece)"),
+    ("volume", "Enclosed volume"),
+    ("faces_to_flip", "Faces to flip"),
+)
+
+#: Items a cell of the tables lists before "N more".
+TABLE_LISTED = 12
+
+
+def _noun(key: str) -> str:
+    """Name what a row's list holds, by the row's key: faces, edges or vertices."""
+    return "edge" if key.endswith("_edges") else "vertex" if key.endswith("_vertices") else "face"
+
+
+def _cell(value: Any, key: str = "") -> str:
+    """How one value of the report reads in a cell: a list as "2: faces 5, 9" (`key` names it)."""
+    if value is True or value is False:
+        return MESSAGES["yes" if value else "no"]
+    if value is None:
+        return MESSAGES["no_answer"]
+    if isinstance(value, list):
+        if not value:
+            return "0"
+        items = [f"{x[0]}–{x[1]}" if isinstance(x, list) else str(x) for x in value[:TABLE_LISTED]]
+        more = len(value) - TABLE_LISTED
+        if more > 0:
+            items.append(MESSAGES["more"].format(count=more))
+        if key == "holes":  # edges around each hole: numbers, not indices
+            return f"{len(value)}: {', '.join(items)}"
+        one, many = NOUNS[_noun(key)]
+        return f"{len(value)}: {one if len(value) == 1 else many} {', '.join(items)}"
+    return str(value)
+
+
+def _printing_cell(report: dict[str, Any], key: str) -> str:
+    """Write a cell of the report for printing: its numbers as the summary writes them."""
+    if key == "size":
+        size = report["size"]
+        if size is None:
+            return MESSAGES["no_answer"]
+        x, y, z = (shown(e) for e in size["extent"])
+        box = Size(tuple(size["min"]), tuple(size["max"]))
+        # the units hint, if any, on a line of its own
+        return "\n".join([MESSAGES["size_cell"].format(x=x, y=y, z=z), *box.lines()[1:]])
+    if key == "surface_area":
+        return shown(report["surface_area"])
+    if report["volume"] is None:
+        return MESSAGES["no_volume_cell"]
+    return shown(report["volume"])
+
+
+def report_table(report: dict[str, Any]) -> dict[str, list[list[str]]]:
+    """Write a report's two tables as the page shows them, every cell as text.
+
+    The page's JavaScript (``table`` in ``trinormal-mesh-print.js``) writes the same cells
+    from the same report; ``tests/test_mesh_parity.py`` compares the two on every file of
+    its corpus.
+
+    Parameters
+    ----------
+    report : dict
+        ``check(...).to_dict()``.
+
+    Returns
+    -------
+    dict
+        ``rows``: ``[key, label, text]`` for each of `REPORT_ROWS`; ``pieces``: one list of
+        texts per piece, a text for each of `PIECE_COLUMNS`.
+
+    Examples
+    --------
+    >>> from trinormal.mesh import check, cube
+    >>> v, f = cube()
+    >>> t = report_table(check(v * 30, f[:-1]).to_dict())
+    >>> [text for key, label, text in t["rows"] if key in ("boundary_edges", "holes", "size")]
+    ['3: edges 4–6, 6–7, 7–4', '1: 3', '60 × 60 × 60']
+    >>> t["pieces"]
+    [['1', '11', 'no', 'yes', 'yes', 'yes', 'no', '—', '0']]
+    """
+    rows = []
+    for key, label in REPORT_ROWS:
+        if key in ("size", "surface_area", "volume"):
+            text = _printing_cell(report, key)
+        else:
+            text = _cell(report[key], key)
+        rows.append([key, label, text])
+    pieces = []
+    for i, piece in enumerate(report["components"]):
+        cells = []
+        for key, _ in PIECE_COLUMNS:
+            if key == "piece":
+                cells.append(str(i + 1))
+            elif key == "volume" and piece["volume"] is not None:
+                cells.append(shown(piece["volume"]))
+            else:
+                cells.append(_cell(piece[key]))
+        pieces.append(cells)
+    return {"rows": rows, "pieces": pieces}
 
 
 #: The page's example models: file name, the button's words, and how the model is made.
@@ -229,7 +351,8 @@ def site_constants() -> dict[str, Any]:
     Returns
     -------
     dict
-        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``tol``, ``planar_tol``
+        ``messages``, ``limits``, ``rows`` (``[key, label]`` pairs), ``columns`` (the
+        table of pieces', as pairs), ``listed`` (`TABLE_LISTED`), ``tol``, ``planar_tol``
         (`trinormal.tolerances.PLANAR_TOL`, for splitting polygons),
         ``selection`` (the readout of a face picked in the 3D view:
         `trinormal.mesh.selection.selection_constants`), ``printing`` (the report for
@@ -240,13 +363,15 @@ def site_constants() -> dict[str, Any]:
     Examples
     --------
     >>> sorted(site_constants())  # doctest: +NORMALIZE_WHITESPACE
-    ['limits', 'messages', 'nouns', 'planar_tol', 'printing', 'rows', 'selection', 'summary', 'tol',
-     'weld']
+    ['columns', 'limits', 'listed', 'messages', 'nouns', 'planar_tol', 'printing', 'rows',
+     'selection', 'summary', 'tol', 'weld']
     """
     return {
         "messages": dict(MESSAGES),
         "limits": dict(LIMITS),
         "rows": [list(r) for r in REPORT_ROWS],
+        "columns": [list(c) for c in PIECE_COLUMNS],
+        "listed": TABLE_LISTED,
         "summary": {k: list(t) if isinstance(t, tuple) else t for k, t in SUMMARY.items()},
         "nouns": {k: list(t) for k, t in NOUNS.items()},
         "tol": DEFAULT_TOL,

@@ -65,6 +65,9 @@ def test_the_mesh_view_renders_and_a_click_shows_the_exact_normal(lab: Lab, page
     # the faults are drawn and named in the legend: 53 faces to flip, 13 rim edges, arrows
     legend = root.locator(".tnm-legend").inner_text()
     assert "(53)" in legend and "(13)" in legend and "1263 drawn" in legend, legend
+    # the words under the view name the file, as the site page's do (issue 33)
+    words = root.locator(".tnm-describe").inner_text()
+    assert words.startswith("damaged_ball.obj: 1263 faces in 1 piece."), words
 
     # a click in the middle of the view: the camera starts looking at the flipped patch
     box = canvas.bounding_box()

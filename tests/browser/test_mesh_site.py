@@ -24,7 +24,16 @@ from browser_support import ROOT
 from mesh_corpus import damaged
 from page_checks import resize
 
-from trinormal.mesh_page import EXAMPLES, LIMITS, MESSAGES, REPORT_ROWS, example_file, file_size
+from trinormal.mesh_page import (
+    EXAMPLES,
+    LIMITS,
+    MESSAGES,
+    PIECE_COLUMNS,
+    REPORT_ROWS,
+    example_file,
+    file_size,
+    report_table,
+)
 from trinormal.printmodel import SAMPLE, sample_file
 
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
@@ -399,8 +408,15 @@ def test_a_file_over_the_limit_is_refused_on_its_size_in_megabytes(page, server,
 
 def test_each_piece_is_a_card_of_labels_on_a_phone_and_a_row_on_a_desktop(page, server, traffic):
     open_example(page, server, 1)  # the sphere: a piece with no answer
-    heads = page.locator(".tn-mesh-pieces thead th").all_inner_texts()
-    assert heads[0] == "Piece" and len(heads) == 7
+    heads = page.locator(".tn-mesh-pieces thead th[scope='col']").all_inner_texts()
+    assert heads == [label for _, label in PIECE_COLUMNS]
+    # every cell is Python's (report_table): the report for printing's rows, cavity, volume
+    name = EXAMPLES[1][0]
+    want = report_table(python_report(name, example_file(name))[0])
+    cells = """(id) => [...document.getElementById(id).rows].map((tr) =>
+      [...tr.cells].map((c) => c.textContent))"""
+    assert page.evaluate(cells, "tn-mesh-rows") == [row[1:] for row in want["rows"]]
+    assert page.evaluate(cells, "tn-mesh-pieces") == want["pieces"]
     labels = """() => [...document.querySelectorAll('#tn-mesh-pieces th, #tn-mesh-pieces td')]
       .map((c) => getComputedStyle(c, '::before').content)"""
     for width in (1280, 360):

@@ -14,7 +14,8 @@ The modules, each named for what it answers:
 * `topology` — how faces fit together: shared, boundary and non-manifold
   edges, connected pieces, [`consistent_winding`][trinormal.mesh.consistent_winding];
 * `repair` — [`fix_winding`][trinormal.mesh.fix_winding]: every piece wound
-  one way, closed pieces facing out;
+  one way, closed pieces facing out; [`turn_over`][trinormal.mesh.turn_over]
+  turns chosen faces over;
 * `report` — [`check`][trinormal.mesh.check]: everything wrong with a mesh,
   as counts, face lists and plain sentences;
 * `printing` — [`PrintReport`][trinormal.mesh.PrintReport], ``check(...).printing``:
@@ -87,7 +88,7 @@ from trinormal.mesh.normals import (
     vertex_normals,
 )
 from trinormal.mesh.printing import PrintReport, Size
-from trinormal.mesh.repair import fix_winding, signed_volume
+from trinormal.mesh.repair import fix_winding, signed_volume, turn_over
 from trinormal.mesh.report import ComponentReport, MeshReport, check
 from trinormal.mesh.shapes import cube, damaged_model, icosphere, terrain, torus, uv_sphere
 from trinormal.mesh.topology import (
@@ -131,6 +132,7 @@ __all__ = [
     "signed_volume",
     "terrain",
     "torus",
+    "turn_over",
     "uv_sphere",
     "vertex_normals",
     "write_mesh",

@@ -12,9 +12,10 @@ no neighbour, and an edge shared by three faces or more cannot be walked once
 each way by all of them. A piece that cannot be wound consistently at all,
 like a Möbius strip, is left as it is.
 
-Both functions take a mesh as `trinormal.mesh.face_normals` does:
-``vertices``, shape (V, 3), and ``faces``, shape (F, 3), vertex indices in
-winding order.
+`fix_winding` and `signed_volume` take a mesh as `trinormal.mesh.face_normals`
+does: ``vertices``, shape (V, 3), and ``faces``, shape (F, 3), vertex indices in
+winding order; `turn_over` turns chosen faces over (the report's faces to flip,
+say) and needs the faces only.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from trinormal.mesh import shells, welding
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray, _check_faces, _check_vertices
 from trinormal.mesh.topology import _components, _HalfEdges
 
-__all__ = ["fix_winding", "signed_volume"]
+__all__ = ["fix_winding", "signed_volume", "turn_over"]
 
 #: Rounding allowance of the enclosed-volume sign, in units of the float64
 #: epsilon times the sum of |a|·|b|·|c| over the piece's faces (plus one unit
@@ -279,13 +280,71 @@ def fix_winding(
     f = _check_faces(faces, v.shape[0])
     w = _winding(v, welding.weld(v, f, weld).half_edges)
     flipped = np.flatnonzero(w.flip).astype(np.intp)
-    return _turn_over(f, flipped), flipped
+    return turn_over(f, flipped), flipped
 
 
-def _turn_over(f: IntArray, flipped: IntArray) -> IntArray:
-    """Return a copy of the faces with faces ``flipped`` turned over: ``(a, c, b)``."""
+def turn_over(faces: npt.ArrayLike, which: npt.ArrayLike) -> IntArray:
+    """Turn some faces over: ``(a, b, c)`` becomes ``(a, c, b)``, so each normal is negated.
+
+    The face keeps its first corner and lists the other two the other way round, as
+    `fix_winding` and ``trinormal mesh FILE --fix OUT`` turn faces over; the normal
+    ``(B − A) × (C − A)`` of the face turned over is exactly minus the one before.
+
+    Parameters
+    ----------
+    faces : array_like of int, shape (F, 3)
+        Vertex indices of each triangle, in winding order.
+    which : array_like of int, shape (k,)
+        The indices of the faces to turn over, in any order (``MeshReport.faces_to_flip``,
+        say); a face listed twice is turned over once. For a boolean mask ``m`` of the
+        faces, pass ``numpy.flatnonzero(m)``.
+
+    Returns
+    -------
+    ndarray of int, shape (F, 3)
+        A copy of ``faces`` with those faces turned over; the others as they were.
+
+    Raises
+    ------
+    ValueError
+        ``faces`` not of shape (F, 3), or ``which`` not face indices: the message names
+        the first entry of ``which`` that is not a face.
+
+    Examples
+    --------
+    >>> from trinormal.mesh import check, cube, face_normals
+    >>> v, f = cube()
+    >>> turn_over(f[:2], [1])
+    array([[0, 2, 3],
+           [0, 1, 3]])
+    >>> bad = turn_over(f, [3, 8])
+    >>> r = check(v, bad)
+    >>> r.faces_to_flip, bool((turn_over(bad, r.faces_to_flip) == f).all())
+    (array([3, 8]), True)
+    >>> face_normals(v, turn_over(f, [0]))[0], face_normals(v, f)[0]
+    (array([0., 0., 1.]), array([ 0.,  0., -1.]))
+    """
+    f = _check_faces(faces, None, check_range=False)
+    w = np.asarray(which)
+    if w.size == 0:
+        return f.copy()
+    if w.dtype.kind not in "iu":
+        raise ValueError(
+            f"which must hold face indices (integers), got dtype {w.dtype}"
+            + ("; for a mask of the faces, pass numpy.flatnonzero(mask)" if w.dtype == bool else "")
+        )
+    if w.ndim != 1:
+        raise ValueError(f"which must be a list of face indices, shape (k,), got shape {w.shape}")
+    bad = np.flatnonzero((w < 0) | (w >= f.shape[0]))
+    if bad.size:
+        k = int(bad[0])
+        raise ValueError(
+            f"which[{k}] is face {int(w[k])}, but the valid face indices are 0 to {f.shape[0] - 1}"
+            if f.shape[0]
+            else f"which[{k}] is face {int(w[k])}, but there are no faces"
+        )
     out = f.copy()
-    out[flipped, 1], out[flipped, 2] = f[flipped, 2], f[flipped, 1]
+    out[w, 1], out[w, 2] = f[w, 2], f[w, 1]
     return out
 
 

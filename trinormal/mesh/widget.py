@@ -22,6 +22,7 @@ needs numpy only.
 
 from __future__ import annotations
 
+from pathlib import PurePath
 from typing import Any
 
 from trinormal._optional import missing_extra
@@ -77,6 +78,13 @@ def _edge_sides(faces: npt.NDArray[np.intp], edges: Any, n_vertices: int) -> npt
     return out
 
 
+def _about(name: str | None, report: MeshReport) -> dict[str, Any]:
+    """Return the ``about`` trait: the model's name and what the description says of each piece."""
+    keys = ("faces", "closed", "outward", "faces_to_flip")  # no volume: JSON has no inf
+    pieces = [{k: getattr(c, k) for k in keys} for c in report.components]
+    return {"name": name or "", "pieces": pieces}
+
+
 class MeshView(anywidget.AnyWidget):
     """A live 3D view of a mesh: its two sides, its normals, and what is wrong with it.
 
@@ -89,6 +97,9 @@ class MeshView(anywidget.AnyWidget):
         Vertex indices of each triangle, in winding order.
     report : MeshReport, optional
         The mesh's [`check`][trinormal.mesh.check] report, if already made.
+    name : str, optional
+        What the view's description calls the model; by default the file's name (without
+        its folder) of a ``MeshData``, and "The model" for arrays.
     precision : int, default 4
         Decimal places of the readout of a clicked face.
     max_arrows : int, default `MAX_ARROWS`
@@ -111,6 +122,11 @@ class MeshView(anywidget.AnyWidget):
         float32 angle-weighted unit vertex normals (smooth shading, vertex arrows).
     cull, smooth, show_face_normals, show_vertex_normals : bool
         Back-face culling, smooth shading, face and vertex normal arrows.
+    about : dict
+        What the description under the view names: ``name`` (the model's, "" for none) and
+        ``pieces``, one dict per piece of the report (``faces``, ``closed``, ``outward``,
+        ``faces_to_flip``: `ComponentReport`'s), as the site's "Check a mesh" page gives
+        its view.
     picked : int
         The face last clicked (-1: none); setting it from code selects a face too.
     selection : dict
@@ -122,6 +138,11 @@ class MeshView(anywidget.AnyWidget):
     >>> view = MeshView(*cube())
     >>> view.n_faces, len(view.faces) // 4, len(view.positions) // 8
     (12, 36, 24)
+    >>> view.about
+    {'name': '', 'pieces': [{'faces': 12, 'closed': True, 'outward': True, 'faces_to_flip': 0}]}
+    >>> from trinormal.mesh import read_mesh, sample_path
+    >>> MeshView(read_mesh(sample_path())).about["name"]
+    'damaged_ball.obj'
     >>> view.picked = 3
     >>> view.selection["title"]
     'Face 3: vertices 0, 5, 4 as A, B, C'
@@ -150,6 +171,7 @@ class MeshView(anywidget.AnyWidget):
     picked = traitlets.Int(-1).tag(sync=True)
     selection = traitlets.Dict().tag(sync=True)
     precision = traitlets.Int(PRECISION).tag(sync=True)
+    about = traitlets.Dict().tag(sync=True)
 
     def __init__(
         self,
@@ -157,6 +179,7 @@ class MeshView(anywidget.AnyWidget):
         faces: npt.ArrayLike | None = None,
         *,
         report: MeshReport | None = None,
+        name: str | None = None,
         precision: int = PRECISION,
         max_arrows: int = MAX_ARROWS,
         **kwargs: Any,
@@ -165,14 +188,19 @@ class MeshView(anywidget.AnyWidget):
         if isinstance(max_arrows, bool) or not isinstance(max_arrows, int) or max_arrows < 0:
             raise ValueError(f"max_arrows must be a whole number, 0 or more, got {max_arrows!r}")
         self.max_arrows = max_arrows
-        self.set_mesh(vertices, faces, report=report)
+        self.set_mesh(vertices, faces, report=report, name=name)
         self.observe(self._on_picked, names="picked")
         self.observe(self._new_precision, names="precision")
 
     # ------------------------------------------------------------------ the mesh
 
     def set_mesh(
-        self, vertices: Any, faces: npt.ArrayLike | None = None, *, report: MeshReport | None = None
+        self,
+        vertices: Any,
+        faces: npt.ArrayLike | None = None,
+        *,
+        report: MeshReport | None = None,
+        name: str | None = None,
     ) -> None:
         """Show another mesh (a repaired one, say), checked unless ``report`` is given.
 
@@ -182,15 +210,23 @@ class MeshView(anywidget.AnyWidget):
         faces : array_like of int, shape (F, 3); omitted with a MeshData
         report : MeshReport, optional
             Its [`check`][trinormal.mesh.check] report, if already made.
+        name : str, optional
+            What the description calls the model: by default a MeshData's file name, else
+            none ("The model").
 
         Raises
         ------
         ValueError
-            Arrays that are not a mesh (the message names the first bad row).
+            Arrays that are not a mesh (the message names the first bad row), or a name
+            that is not a string.
         """
+        if name is not None and not isinstance(name, str):
+            raise ValueError(f"name must be a string (the model's name), got {name!r}")
         if faces is None:
             if not hasattr(vertices, "faces"):
                 raise ValueError("give vertices and faces, or a MeshData from read_mesh")
+            if name is None:
+                name = PurePath(vertices.path).name
             vertices, faces = vertices.vertices, vertices.faces
         # check() validates the arrays (shapes, finite coordinates, indices in range)
         self.report = check(vertices, faces) if report is None else report
@@ -218,6 +254,7 @@ class MeshView(anywidget.AnyWidget):
             self.vertex_normals = _buffer(
                 vertex_normals(v, f, "angle") if nf else np.zeros((nv, 3)), "f4"
             )
+            self.about = _about(name, self.report)
             self.picked = -1
             self.selection = {}
             self.revision += 1

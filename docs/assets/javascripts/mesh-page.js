@@ -1,8 +1,8 @@
 /*
  * The "Check a mesh" page: choose or drop an OBJ, STL or PLY file, or an example; a Web Worker
  * (mesh-worker.js, running trinormal-mesh-*.js) reads it, checks it and fixes its winding, with a
- * progress bar; the page shows the report (rows and sentences from the package, through
- * TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view, assets/explorer/mesh.js) and offers the
+ * progress bar; the page shows the report (its tables and sentences, written by TrinormalMesh
+ * in the package's words, through TRINORMAL_CONSTANTS.mesh), the model in 3D (the mesh view, assets/explorer/mesh.js) and offers the
  * repaired file for download. A face picked in the view (a click, or its number typed) is
  * answered here as the kernel answers it in Jupyter: its three vertices, its exact normal and
  * its area from the calculator's core (TrinormalCore), with the package's wording
@@ -12,7 +12,6 @@ import { modelEvents } from "./explorer-site.js"; // the calculator's 3D view, o
 
 const WORKER = new URL("mesh-worker.js", import.meta.url).href;
 const VIEW = new URL("../explorer/mesh.js", import.meta.url).href; // the mesh view (three.js in its shared chunk)
-const SHOWN = 12; // list at most this many indices in a row of the report
 
 const $ = (id) => document.getElementById(id);
 
@@ -141,53 +140,42 @@ function cell(tag, text, attrs = {}) {
   return e;
 }
 
-/** What a row's list holds, by the row's key: faces, edges or vertices. */
-function noun(key) {
-  return key.endsWith("_edges") ? "edge" : key.endsWith("_vertices") ? "vertex" : "face";
+/** The table of pieces' headings, from the package (trinormal.mesh_page.PIECE_COLUMNS). */
+function pieceHeadings() {
+  const head = $("tn-mesh-pieces-head");
+  head.textContent = "";
+  for (const [, label] of (constants().mesh || {}).columns || []) head.appendChild(cell("th", label, { scope: "col" }));
 }
 
-/** How one value of the report reads in its row: a list as "2: faces 5, 9" (`key` names it). */
-function show(value, key = "") {
-  if (value === true) return message("yes");
-  if (value === false) return message("no");
-  if (value === null || value === undefined) return "—";
-  if (Array.isArray(value)) {
-    if (!value.length) return "0";
-    const items = value.slice(0, SHOWN).map((x) => (Array.isArray(x) ? `${x[0]}–${x[1]}` : String(x)));
-    const more = value.length - SHOWN;
-    const list = items.join(", ") + (more > 0 ? ", " + message("more", { count: more }) : "");
-    const forms = ((constants().mesh || {}).nouns || {})[noun(key)] || ["", ""];
-    return `${value.length}: ${value.length === 1 ? forms[0] : forms[1]} ${list}`;
-  }
-  return String(value);
-}
-
-/** Fill the report's tables, notes and summary from the worker's report. */
+/**
+ * Fill the report's tables, notes and summary from the worker's report. The cells are
+ * TrinormalMesh.table's, the words of trinormal.mesh_page.report_table.
+ */
 function renderReport(r) {
+  const table = window.TrinormalMesh.table(r);
   const tbody = $("tn-mesh-rows");
   tbody.textContent = "";
-  const rows = (constants().mesh || {}).rows || [];
-  for (const [key, label] of rows) {
+  for (const [key, label, text] of table.rows) {
     const tr = document.createElement("tr");
-    tr.append(cell("th", label, { scope: "row" }), cell("td", show(r[key], key)));
+    tr.append(cell("th", label, { scope: "row" }), cell("td", text));
     tr.dataset.key = key;
     tbody.appendChild(tr);
   }
   const pieces = $("tn-mesh-pieces");
   pieces.textContent = "";
   // each cell carries its column's heading: on a phone the table is a list of cards
-  const heads = [...pieces.closest("table").querySelectorAll("thead th")].map((th) => th.textContent);
+  const heads = ((constants().mesh || {}).columns || []).map(([, label]) => label);
+  const none = message("no_answer");
   let dash = false;
-  r.components.forEach((c, i) => {
+  for (const [number, ...values] of table.pieces) {
     const tr = document.createElement("tr");
-    const values = [c.faces, c.closed, c.consistent, c.orientable, c.outward, c.faces_to_flip];
-    dash = dash || values.some((v) => v === null || v === undefined);
+    dash = dash || values.includes(none);
     tr.append(
-      cell("th", String(i + 1), { scope: "row", "data-label": heads[0] }),
-      ...values.map((v, k) => cell("td", typeof v === "number" ? String(v) : show(v), { "data-label": heads[k + 1] })),
+      cell("th", number, { scope: "row", "data-label": heads[0] }),
+      ...values.map((text, k) => cell("td", text, { "data-label": heads[k + 1] })),
     );
     pieces.appendChild(tr);
-  });
+  }
   const dashNote = $("tn-mesh-pieces-note");
   dashNote.textContent = dash ? message("pieces_dash") : "";
   dashNote.hidden = !dash;
@@ -449,6 +437,7 @@ function mount(root) {
     open(file.name, await file.arrayBuffer());
   }
 
+  pieceHeadings();
   input.addEventListener("change", () => openFile(input.files && input.files[0]));
   fixButton.addEventListener("click", fix);
   weldButton.addEventListener("click", weld);

@@ -6,6 +6,7 @@
  * limits are the package's (TRINORMAL_CONSTANTS.mesh.printing). Loaded after
  * trinormal-mesh-check.js: its `check` and `summary` are extended here, so the report gains
  * the keys holes, surface_area, volume, size and verdict, and the summary its printing lines.
+ * `table` writes the page's two tables of a report as mesh_page.report_table does in Python.
  */
 self.TrinormalMesh.part("print", "check", function (base) {
   "use strict";
@@ -179,6 +180,14 @@ self.TrinormalMesh.part("print", "check", function (base) {
     return say("area_volumes", { area: area, volume: shown(r.volume), pieces: parts.join(", ") });
   }
 
+  /** The units hint's line of a size, if it has one: Size.lines()[1:]. */
+  function hintLines(size) {
+    var hint = size.units_hint, e = size.extent;
+    if (hint === null) return [];
+    var limit = UNITS[hint === "micrometres" ? "micrometres_above" : hint + "_below"];
+    return [say("hint_" + hint, { largest: shown(Math.max(e[0], e[1], e[2])), limit: shown(limit) })];
+  }
+
   /** The printing lines of the summary: PrintReport.lines(). */
   function printLines(r) {
     var out = [];
@@ -191,11 +200,7 @@ self.TrinormalMesh.part("print", "check", function (base) {
     if (r.size !== null) {
       var e = r.size.extent;
       out.push(say("size", { x: shown(e[0]), y: shown(e[1]), z: shown(e[2]) }));
-      var hint = r.size.units_hint;
-      if (hint !== null) {
-        var limit = UNITS[hint === "micrometres" ? "micrometres_above" : hint + "_below"];
-        out.push(say("hint_" + hint, { largest: shown(Math.max(e[0], e[1], e[2])), limit: shown(limit) }));
-      }
+      out = out.concat(hintLines(r.size));
     }
     out.push(areaVolume(r));
     out.push(say("verdict_line", { verdict: r.verdict }));
@@ -207,5 +212,64 @@ self.TrinormalMesh.part("print", "check", function (base) {
     return base.summary(r).concat(printLines(r));
   }
 
-  return { check: check, summary: summary, internal: Object.assign({}, I, { shown: shown }) };
+  // ------------------------------------------------------------------ the page's tables
+
+  /** What a row's list holds, by the row's key: faces, edges or vertices (mesh_page._noun). */
+  function noun(key) {
+    return /_edges$/.test(key) ? "edge" : /_vertices$/.test(key) ? "vertex" : "face";
+  }
+
+  /** How one value of the report reads in a cell: a list as "2: faces 5, 9" (mesh_page._cell). */
+  function cell(value, key) {
+    if (value === true) return base.message("yes");
+    if (value === false) return base.message("no");
+    if (value === null || value === undefined) return base.message("no_answer");
+    if (Array.isArray(value)) {
+      if (!value.length) return "0";
+      var items = value.slice(0, I.MESH.listed).map(function (x) {
+        return Array.isArray(x) ? x[0] + "–" + x[1] : String(x);
+      });
+      var more = value.length - I.MESH.listed;
+      if (more > 0) items.push(base.message("more", { count: more }));
+      if (key === "holes") return value.length + ": " + items.join(", "); // edges around each
+      var forms = I.MESH.nouns[noun(key)];
+      return value.length + ": " + (value.length === 1 ? forms[0] : forms[1]) + " " + items.join(", ");
+    }
+    return String(value);
+  }
+
+  /** A cell of a row of the report for printing (mesh_page._printing_cell). */
+  function printingCell(r, key) {
+    if (key === "size") {
+      if (r.size === null) return base.message("no_answer");
+      var e = r.size.extent;
+      var box = base.message("size_cell", { x: shown(e[0]), y: shown(e[1]), z: shown(e[2]) });
+      return [box].concat(hintLines(r.size)).join("\n"); // the units hint on a line of its own
+    }
+    if (key === "surface_area") return shown(r.surface_area);
+    return r.volume === null ? base.message("no_volume_cell") : shown(r.volume);
+  }
+
+  /**
+   * The report's two tables on the page, every cell as text (mesh_page.report_table): rows,
+   * [key, label, text] for each report row; pieces, one list of texts per piece, one a column.
+   */
+  function table(r) {
+    var rows = I.MESH.rows.map(function (row) {
+      var key = row[0];
+      var printing = key === "size" || key === "surface_area" || key === "volume";
+      return [key, row[1], printing ? printingCell(r, key) : cell(r[key], key)];
+    });
+    var pieces = r.components.map(function (c, i) {
+      return I.MESH.columns.map(function (column) {
+        var key = column[0];
+        if (key === "piece") return String(i + 1);
+        if (key === "volume" && c.volume !== null) return shown(c.volume);
+        return cell(c[key], "");
+      });
+    });
+    return { rows: rows, pieces: pieces };
+  }
+
+  return { check: check, summary: summary, table: table, internal: Object.assign({}, I, { shown: shown }) };
 });

@@ -2,8 +2,9 @@
  * The mesh view described in words, under the view, in a polite live region that is also the
  * stage's accessible description: the model's name and size, its pieces, the faces to flip and
  * what is under the picked face (the host's readout of it, as printed in the panel). The name
- * and the pieces come from the host's optional "about" ({ name, pieces: the report's
- * components }); a host without it (a notebook) gets the rest.
+ * and the pieces come from the host's "about" ({ name, pieces: the report's components }): the
+ * site page's file name, or MeshView's about trait in a notebook (the file's name when it was
+ * made from a MeshData); a host without it gets "The model" and the rest.
  */
 import { element, setText } from "../dom.js";
 import { injectStyle } from "../style.js";
