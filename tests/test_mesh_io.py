@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import random
 import struct
 from pathlib import Path
 
@@ -10,7 +11,7 @@ import pytest
 
 from trinormal import mesh
 from trinormal.mesh import MeshFileError
-from trinormal.mesh.io import stl
+from trinormal.mesh.io import obj, stl
 
 DATA = Path(__file__).parent / "data" / "meshes"
 BAD = DATA / "bad"
@@ -194,43 +195,122 @@ def test_crlf_and_continued_lines(tmp_path):
 
 
 PLAIN = b"# cube corner\nv 0 0 0\nv 1.5 -0 .5\r\nv\t1e3  +2. 3E-2 \n\nf 1 2 3\nf 3 2 1\n"
+TRIANGLE = b"v 0 0 0\nv 1 0 0\nv 0 1 0\n"
 
 
 @pytest.mark.parametrize(
     "data,plain",
     [
         (PLAIN, True),
-        (b"v 1_0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 +3\n", True),  # cast by float and int
         (
             b"v 0.1 0.30000000000000004 0.1000000000000000055511151231257827\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
             True,
         ),
-        (b"v 1 2 1.00000000000000011102230246251565404236316680908203125\n", False),  # long
-        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # a comment after a face\n", False),
-        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/2 3/3\n", False),
-        (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n", False),
+        (
+            b"v 1 2 1.00000000000000011102230246251565404236316680908203125\n"
+            + TRIANGLE
+            + b"f 2 3 4",
+            True,
+        ),
+        (TRIANGLE + b"f 1 2 3\nv 0 0 1\n# between\nf 1 2 4\nv 1 1 1\nf 01 2 005\n", True),  # mixed
+        (b"f 3 1 2\n" + TRIANGLE, True),  # a face may name vertices listed after it
+        (b"  v 0 0 0\n\tv 1 0 0\r\nv 0 1 0\n \t\n# a # b\n f 1 2 3", True),  # indented, no last LF
+        (b"v 1_0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", False),  # an underscore: Python reads it
+        (TRIANGLE + b"f 1 2 +3\n", False),  # a sign: vertex numbers are digits only here
+        (TRIANGLE + b"f + 3 2\n", False),  # a sign apart from a number
+        (TRIANGLE + b"f 1 2 3.0\n", False),
+        (TRIANGLE + b"f 1 2 3e0\n", False),
+        (TRIANGLE + b"f 1 2 99999999999999999999999\n", False),
+        (TRIANGLE + b"f 1 2 3 # a comment after a face\n", False),
+        (TRIANGLE + b"f 1/1 2/2 3/3\n", False),
+        (TRIANGLE + b"f -3 -2 -1\n", False),
+        (TRIANGLE + b"f 1 2 3 4\n", False),
+        (TRIANGLE + b"f 1 2\n", False),
+        (TRIANGLE + b"f 1 2 3\x0c\n", False),  # a form feed: a line break to Python
+        ("# café\n".encode() + TRIANGLE + b"f 1 2 3\n", False),
         (b"v 0 0 0 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", False),
         (b"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", False),
+        (b"v 0 0 0\nv 1 0 0\r\rv 0 1 0\nf 1 2 3\n", False),
         (b"v 1-2 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", False),
+        (b"v 0x1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", False),
+        (b"v nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", False),
         (b"v 1e999 0 0\n", False),
         (b"v 0 0 0\nv 1 0 0\nf 1 2 3\n", False),
+        (b"f 1 2 3\n", False),
         (b"vn 0 0 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", False),
+        (b"v1 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", False),
+        (b"v 0 0 0\nv 1 0 0\nv 0 1 \\\n0\nf 1 2 3\n", False),
     ],
 )
 def test_plain_obj_files_are_read_in_one_go_with_the_same_result(data, plain):
-    from trinormal.mesh.io import obj
-
     got = obj._read_plain(data)
     assert (got is not None) == plain
     if got is None:
         return
+    _same_as_line_by_line(got, data)
     want = obj._read_lines(data, "x")
-    assert got[0].tobytes() == want.vertices.tobytes() and got[0].shape == want.vertices.shape
-    assert got[1].dtype == want.faces.dtype and (got[1] == want.faces).all()
     m = mesh.parse_mesh(data, "obj")
     assert m.vertices.tobytes() == want.vertices.tobytes() and m.source_faces.tolist() == list(
         range(len(want.faces))
     )
+
+
+def _same_as_line_by_line(got: tuple[np.ndarray, np.ndarray], data: bytes) -> None:
+    want = obj._read_lines(data, "x")
+    assert got[0].tobytes() == want.vertices.tobytes() and got[0].shape == want.vertices.shape
+    assert got[1].dtype == want.faces.dtype and got[1].shape == want.faces.shape
+    assert (got[1] == want.faces).all()
+
+
+def _plain_obj(rng: random.Random) -> bytes:
+    """The bytes of a random OBJ of plain lines: any finite coordinates, faces in range."""
+    n = rng.randint(1, 6)
+    coords = np.frombuffer(rng.randbytes(24 * n), dtype=np.float64)
+    coords = np.where(np.isfinite(coords), coords, 0.5).tolist()
+    forms = [repr, repr, "{:.3e}".format, "{:+.17g}".format, "{:f}".format, "{:.0f}".format]
+    lines = []
+    for i in range(n):
+        form = rng.choice(forms) if abs(coords[3 * i]) < 1e300 else repr  # rounding stays finite
+        lines.append("v" + "".join(f" {form(x)}" for x in coords[3 * i : 3 * i + 3]))
+    for _ in range(rng.randint(0, 6)):
+        face = "f" + "".join(f" {rng.randint(1, n):0{rng.randint(1, 3)}}" for _ in range(3))
+        lines.insert(rng.randint(0, len(lines)), face)
+    for _ in range(rng.randint(0, 2)):
+        lines.insert(rng.randint(0, len(lines)), rng.choice(["# a # comment", "#", "", " \t"]))
+    text = ""
+    for line in lines:
+        line = line.replace(" ", rng.choice([" ", "\t", "  "]))
+        text += rng.choice(["", "", " "]) + line + rng.choice(["\n", "\n", "\r\n", " \n"])
+    return text.encode()
+
+
+def test_any_plain_obj_is_read_in_one_go_as_line_by_line():
+    rng = random.Random(1)
+    for _ in range(300):
+        data = _plain_obj(rng)
+        got = obj._read_plain(data)
+        assert got is not None, data
+        _same_as_line_by_line(got, data)
+
+
+#: Pieces that make a plain OBJ something else, or leave it plain
+_PIECES = [b"+", b"-", b".", b"e", b"_", b"/", b"#", b"\\", b"\r", b"\x0b", b"\x85", b"x", b" "]
+_PIECES += [b" 1", b" 0", b"nan", b"inf", b"1e999", b"\nvt 0 0", b"\nf 1 2 3 4", b"\nf 1 1 9"]
+_PIECES += [b"\t", b"\n", b"\n# c", b"\nv 1 2 3", b"\nf 1 1 1", b"\nf 1 1 01"]
+
+
+def test_an_obj_read_in_one_go_reads_the_same_line_by_line():
+    rng = random.Random(2)
+    plain = 0
+    for _ in range(500):
+        data = _plain_obj(rng)
+        at = rng.choice([i for i, c in enumerate(data) if c in b" \n"])  # after a token
+        data = data[:at] + rng.choice(_PIECES) + data[at:]
+        got = obj._read_plain(data)
+        if got is not None:
+            _same_as_line_by_line(got, data)
+            plain += 1
+    assert 50 < plain < 450, plain  # both ways are taken
 
 
 def test_a_byte_order_mark_is_not_part_of_the_first_line():

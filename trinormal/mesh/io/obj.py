@@ -26,13 +26,6 @@ _OBJ_IGNORED = frozenset(
 )
 
 
-#: Tokens read at a time by `_numbers`: a (block, width) byte table of them stays small.
-_TOKEN_BLOCK = 1 << 16
-
-#: The longest number `_read_plain` reads; a longer token sends the file to `_read_lines`.
-_MAX_TOKEN = 40
-
-
 def _read_obj(data: bytes, name: str) -> MeshData:
     """Read OBJ text; polygons are split in their planes (`_split`).
 
@@ -53,49 +46,47 @@ def _read_plain(data: bytes) -> tuple[FloatArray, IntArray] | None:
     """Read an OBJ of plain lines with numpy, or return None to leave it to `_read_lines`.
 
     Plain lines are ``v x y z`` (three numbers), ``f a b c`` (three vertex
-    numbers from 1 up, no ``/``), blank lines and whole-line ``#`` comments,
-    in ASCII, separated by spaces or tabs, ending in LF or CRLF. Each number is
-    read by Python's own ``float`` and ``int`` (numpy's cast from bytes calls
-    them), so the result is the one `_read_lines` gives; whenever anything
-    else appears, or a number is not finite or out of range, the answer is
-    None and `_read_lines` reads the file and finds the error.
+    numbers from 1 up, digits only), blank lines and whole-line ``#`` comments,
+    in ASCII, separated by spaces or tabs, ending in LF or CRLF. The numbers of
+    the ``v`` lines are read by one call of numpy's text parser, which reads a
+    decimal with ``PyOS_string_to_double`` as Python's ``float`` does, and those
+    of the ``f`` lines by another (`_numbers`), so the result is the one
+    `_read_lines` gives. Whenever anything else appears, a number is not finite
+    or a vertex number is out of range, the answer is None and `_read_lines`
+    reads the file and finds the error.
     """
-    if not data.isascii() or b"\\" in data or b"\x7f" in data:
-        return None
+    if not data.isascii() or b"\\" in data:
+        return None  # non-ASCII text, or a continued line
+    if not data.endswith(b"\n"):
+        data += b"\n"
     b = np.frombuffer(data, dtype=np.uint8)
-    spaces = data.count(b"\n") + data.count(b"\t") + data.count(b"\r")
-    if np.count_nonzero(b < 32) != spaces:
-        return None  # a control character other than LF, CR and tab
-    cr = np.flatnonzero(b == 13)
-    if cr.size and (cr[-1] == b.size - 1 or (b[cr + 1] != 10).any()):
-        return None  # a CR that ends a line by itself
-    # +1 where a token starts, -1 right after it ends: starts and ends alternate
-    edge = np.diff((b > 32).view(np.int8), prepend=np.int8(0), append=np.int8(0))
-    bounds = np.flatnonzero(edge)
-    starts, ends = bounds[0::2], bounds[1::2]
-    del bounds
-    # token starts and line ends in file order: a token right after a line end (or the
-    # file's start) is its line's first
-    events = np.flatnonzero((edge[:-1] == 1) | (b == 10))
-    del edge
-    after_lf = np.concatenate(([True], b[events[:-1]] == 10))
-    first = after_lf[b[events] != 10]
-    heads = np.flatnonzero(first)
-    kw = b[starts[heads]]
-    single = ends[heads] - starts[heads] == 1
-    comment = kw == ord("#")
+    flags = np.equal(b, 10)  # one scratch array of a flag per byte, used three times
+    lf = np.flatnonzero(flags)
+    others = np.count_nonzero(np.less(b, 32, out=flags)) - lf.size  # tabs and CRs, or worse
+    if others and others != data.count(b"\t") + data.count(b"\r\n"):
+        return None  # a control character other than tab, or a CR that ends a line by itself
+    # space[i + 1]: whether b[i] is a space (a byte up to 32); space[0] stands for the start
+    space = np.empty(b.size + 1, dtype=bool)
+    space[0] = True
+    np.less_equal(b, 32, out=space[1:])
+    begins = np.flatnonzero(np.greater(space[:-1], space[1:], out=flags))  # a space, then not
+    del flags
+    # line k is b[bounds[k] + 1 : bounds[k + 1] + 1] and has the tokens begins[at[k] : at[k + 1]]
+    bounds = np.concatenate(([-1], lf))
+    at = np.searchsorted(begins, bounds)
+    count = np.diff(at)
+    lines = np.flatnonzero(count)  # the lines that are not blank
+    heads = begins[at[lines]]  # where their first token begins
+    del begins, at
+    kw = b[heads]
+    single = space[heads + 2]  # a space after the first letter
     vert, face = single & (kw == ord("v")), single & (kw == ord("f"))
-    if not (vert | face | comment).all() or not (vert.any() or face.any()):
+    if not (vert | face | (kw == ord("#"))).all() or not (vert.any() or face.any()):
         return None
-    if data.count(b"#") != np.count_nonzero(comment):
-        return None  # a comment after a statement, or a second '#' in a comment
-    count = np.diff(np.append(heads, starts.size))
-    if (count[vert | face] != 4).any():
+    if (count[lines[vert | face]] != 4).any():
         return None
-    kind = np.repeat(np.where(vert, 1, np.where(face, 2, 0)).astype(np.int8), count)
-    kind[heads] = 0
-    v = _numbers(b, starts[kind == 1], ends[kind == 1], np.float64)
-    f = _numbers(b, starts[kind == 2], ends[kind == 2], np.int64)
+    v = _numbers(b, bounds, lines, heads, vert, np.float64)
+    f = _numbers(b, bounds, lines, heads, face, np.int64)
     if v is None or f is None or not np.isfinite(v).all():
         return None
     nv = v.size // 3
@@ -104,93 +95,42 @@ def _read_plain(data: bytes) -> tuple[FloatArray, IntArray] | None:
     return v.reshape(-1, 3), (f - 1).astype(np.intp).reshape(-1, 3)
 
 
-def _numbers(b: npt.NDArray[np.uint8], starts: IntArray, ends: IntArray, dtype: type) -> Any:
-    """Read the tokens ``b[starts[i]:ends[i]]`` as numbers, or return None if one is not one.
+def _numbers(
+    b: npt.NDArray[np.uint8],
+    bounds: IntArray,
+    lines: IntArray,
+    heads: IntArray,
+    mine: npt.NDArray[np.bool_],
+    dtype: type,
+) -> Any:
+    """Read the three numbers after the keyword of each line ``lines[mine]``, or return None.
 
-    The tokens are copied, a block at a time, into a table of fixed-width byte
-    strings (`_token_table`). A block of plain decimals (`_plain_decimals`) is
-    read by numpy's text parser, which reads a decimal as Python's ``float``
-    does (both call ``PyOS_string_to_double``), or, for vertex numbers, by
-    arithmetic on the digits; any other block is cast by Python's ``float``
-    or ``int`` themselves.
+    The text read runs from the first of these lines to the last; their
+    keywords (at ``heads[mine]``) and any other line between them are read as
+    spaces. None when a token is not one number: numpy's text parser stops at
+    it (and vertex numbers must be digits only, as its integer parser also
+    reads a sign alone, or one apart from its digits).
     """
-    out: npt.NDArray[Any] = np.empty(starts.size, dtype=dtype)
-    if starts.size == 0:
-        return out
-    width = int((ends - starts).max())
-    if width > _MAX_TOKEN:
+    if not mine.any():
+        return np.empty(0, dtype=dtype)
+    first, last = lines[mine][[0, -1]]
+    start = bounds[first] + 1
+    chars = b[start : bounds[last + 1] + 1].copy()
+    chars[heads[mine] - start] = 32
+    between = lines[~mine & (lines > first) & (lines < last)]  # comments, the other kind
+    if between.size:
+        blank = np.zeros(last + 1 - first, dtype=bool)
+        blank[between - first] = True
+        chars[np.repeat(blank, np.diff(bounds[first : last + 2]))] = 32
+    text = chars.tobytes()
+    del chars
+    if dtype is np.int64 and text.translate(None, b"0123456789 \t\r\n"):
+        return None  # not digits only
+    try:
+        out: npt.NDArray[Any] = np.fromstring(text, dtype=dtype, sep=" ")
+    except ValueError:
         return None
-    padded = np.concatenate((b, np.zeros(width, dtype=np.uint8)))
-    for lo in range(0, starts.size, _TOKEN_BLOCK):
-        hi = min(lo + _TOKEN_BLOCK, starts.size)
-        table = _token_table(padded, starts[lo:hi], ends[lo:hi], width)
-        if dtype is np.int64 and _all_digits(table):
-            values = np.zeros(hi - lo, dtype=np.int64)
-            for col in table.T.astype(np.int64):  # a digit more, or padding: no change
-                values = np.where(col == 0, values, values * 10 + (col - ord("0")))
-            out[lo:hi] = values
-            continue
-        if dtype is np.float64 and _plain_decimals(table):
-            text = np.full((hi - lo, width + 1), 32, dtype=np.uint8)  # a space after each
-            np.copyto(text[:, :width], table, where=table != 0)
-            out[lo:hi] = np.fromstring(text.tobytes().rstrip(), dtype=np.float64, sep=" ")
-            continue
-        try:
-            out[lo:hi] = table.view(f"S{width}").ravel().astype(dtype)
-        except (ValueError, OverflowError):
-            return None
-    return out
-
-
-def _token_table(padded: npt.NDArray[np.uint8], s: IntArray, e: IntArray, width: int) -> Any:
-    """Copy tokens into a (n, width) table of bytes, each token padded with zero bytes."""
-    cols = np.arange(width)
-    table = padded[s[:, None] + cols]
-    table[cols >= (e - s)[:, None]] = 0
-    return table
-
-
-def _all_digits(table: npt.NDArray[np.uint8]) -> bool:
-    """Whether every token is digits only, short enough for an int64 (`_token_table`)."""
-    return table.shape[1] <= 18 and bool((((table >= 48) & (table <= 57)) | (table == 0)).all())
-
-
-# A decimal as ``float`` and ``strtod`` both read all of it: sign, digits, point, digits,
-# exponent. States: 0 start, 1 sign, 2 digits, 3 point after digits, 4 point first,
-# 5 fraction digits, 6 e, 7 exponent sign, 8 exponent digits, 9 end, 10 not a decimal.
-# Byte kinds: digit, point, e or E, + or -, padding, other.
-_DECIMAL = np.array(
-    [
-        [2, 4, 10, 1, 10, 10],
-        [2, 4, 10, 10, 10, 10],
-        [2, 3, 6, 10, 9, 10],
-        [5, 10, 6, 10, 9, 10],
-        [5, 10, 10, 10, 10, 10],
-        [5, 10, 6, 10, 9, 10],
-        [8, 10, 10, 7, 10, 10],
-        [8, 10, 10, 10, 10, 10],
-        [8, 10, 10, 10, 9, 10],
-        [10, 10, 10, 10, 9, 10],
-        [10, 10, 10, 10, 10, 10],
-    ],
-    dtype=np.uint8,
-)
-_DECIMAL_KIND = np.full(256, 5, dtype=np.uint8)
-_DECIMAL_KIND[48:58] = 0
-_DECIMAL_KIND[ord(".")] = 1
-_DECIMAL_KIND[[ord("e"), ord("E")]] = 2
-_DECIMAL_KIND[[ord("+"), ord("-")]] = 3
-_DECIMAL_KIND[0] = 4
-
-
-def _plain_decimals(table: npt.NDArray[np.uint8]) -> bool:
-    """Whether every token of the table is a whole plain decimal (`_DECIMAL`), no nan or inf."""
-    kinds = _DECIMAL_KIND[table.T]  # a row per column of the table
-    moves = _DECIMAL.ravel()  # state s, byte kind k: moves[s * 6 + k]
-    state = np.zeros(table.shape[0], dtype=np.uint8)
-    for kind in kinds:
-        state = moves[state * np.uint8(6) + kind]
-    return bool(np.isin(state, (2, 3, 5, 8, 9)).all())
+    return out if out.size == 3 * np.count_nonzero(mine) else None
 
 
 def _read_lines(data: bytes, name: str) -> MeshData:
