@@ -55,8 +55,9 @@ ROLE_MEANINGS: dict[str, str] = {
 COLOR_CODE = (
     "U vermillion, V blue, N green; the face yellow where you see its front (the side N "
     "points out of) and sky blue where you see its back; the points A dark grey, B amber "
-    "(U ends at B), C purple (V ends at C); the axes neutral greys, named x, y and z at "
-    "their ends."
+    "(U ends at B), C purple (V ends at C); the axes neutral (greys, or black lines in the "
+    "drawn figures), never a vector's colour, and named x, y and z (in the explorer's 3D "
+    "view, at their ends)."
 )
 
 #: The roles, in drawing order.

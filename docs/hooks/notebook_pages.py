@@ -43,12 +43,23 @@ def notebook_title(path: Path) -> str:
     return path.stem.replace("_", " ")
 
 
+#: How every notebook's opening paragraph begins: what the reader will do, its summary.
+WHAT_YOU_DO = "**What you'll do:**"
+
+
 def notebook_summary(path: Path) -> str:
-    """The first paragraph after the title of a notebook, as one line of Markdown."""
+    """A notebook's summary, as one line of Markdown.
+
+    Its "What you'll do" paragraph without the label, or else its first paragraph of
+    plain text after the title.
+    """
     for text in markdown_cells(path):
         paras = [p.strip() for p in re.split(r"\n\s*\n", text) if p.strip()]
         for p in paras:
-            if p.startswith(("#", "|", "-", "*", "$", "<", ">", "`")) or p[:2].isdigit():
+            if p.startswith(WHAT_YOU_DO):
+                p = p.removeprefix(WHAT_YOU_DO).strip()
+                p = p[:1].upper() + p[1:]
+            elif p.startswith(("#", "|", "-", "*", "$", "<", ">", "`")) or p[:2].isdigit():
                 continue
             line = " ".join(p.split())
             return line if len(line) <= 240 else line[:237].rsplit(" ", 1)[0] + " …"

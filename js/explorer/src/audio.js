@@ -80,7 +80,7 @@ function play(context, tones) {
 }
 
 /**
- * The Listen button, added to `bar`: pressed, it plays U, V and N at once and again
+ * The Listen button, added to `bar`: pressed, it plays U, V and N one after another, and again
  * after every change of the triangle (`changed()`, called when the description settles);
  * pressed again, it is quiet. state(): the host's state. Returns { changed(), dispose() }.
  */
