@@ -335,8 +335,8 @@ def _mesh_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--fix",
         metavar="OUT",
-        help="write the mesh with every piece wound consistently (and outward where it has an inside) "
-        "to OUT; its extension chooses the format",
+        help="write the mesh with every piece wound consistently (and outward where it has an "
+        "inside) to OUT; its extension chooses the format",
     )
     p.add_argument(
         "--weld",
