@@ -132,28 +132,38 @@ def readable_search_text(text: str, notebook: bool = False) -> str:
     '<p>Then N = U × V.</p> <code>\\(x\\)</code>'
     >>> readable_search_text("<pre>a = 1\n</pre> a = 1 <p>next</p>", notebook=True)
     '<pre>a = 1\n</pre> <p>next</p>'
+    >>> readable_search_text("<pre>a = 1\n</pre>In\xa0[1]: a = 1 <p>next</p>", notebook=True)
+    '<pre>a = 1\n</pre> <p>next</p>'
     """
-    if notebook:
-        text = _drop_repeated_code(text)
-    parts = _SEARCH_CODE.split(text)
-    for i in range(0, len(parts), 2):  # the even parts are outside code
-        part = parts[i]
-        if notebook:
-            part = _NOTEBOOK_PROMPT.sub("", part)
-        parts[i] = _SEARCH_MATH.sub(_math_as_text, part)
+    parts = _SEARCH_CODE.split(text)  # the even parts are outside code
+    if notebook:  # the prompts first: a cell's flattened copy starts with its "In [1]:"
+        parts[::2] = [_NOTEBOOK_PROMPT.sub("", part) for part in parts[::2]]
+        parts = _SEARCH_CODE.split(_drop_repeated_code("".join(parts)))
+    parts[::2] = [_SEARCH_MATH.sub(_math_as_text, part) for part in parts[::2]]
     return "".join(parts)
 
 
+#: Sections whose code blocks (the API's examples, the notebooks' cells and outputs) are left
+#: out of the search index: every page loads the index when it opens, and these blocks would
+#: be a third of it. They are found by the words around them and read on their pages.
+WORDS_ONLY = ("api/", "notebooks/")
+
+_CODE_BLOCK = re.compile(r"<pre>.*?</pre>", re.S)
+
+
 def readable_search_index(site_dir: str) -> None:
-    """Rewrite the built search index with its math as plain text and no heading link marks."""
+    """Rewrite the built search index: math as text, no link marks, `WORDS_ONLY` code left out."""
     index = Path(site_dir) / "search" / "search_index.json"
     if index.is_file():
         data = json.loads(index.read_text(encoding="utf-8"))
         for doc in data.get("docs", []):
-            notebook = str(doc.get("location", "")).startswith("notebooks/")
+            location = str(doc.get("location", ""))
+            notebook = location.startswith("notebooks/")
             for key in ("title", "text"):
                 if isinstance(doc.get(key), str):
                     doc[key] = readable_search_text(doc[key], notebook)
+            if location.startswith(WORDS_ONLY) and isinstance(doc.get("text"), str):
+                doc["text"] = _CODE_BLOCK.sub(" ", doc["text"])
             if isinstance(doc.get("title"), str):
                 doc["title"] = doc["title"].rstrip("¶").rstrip()  # a notebook heading's link mark
         index.write_text(json.dumps(data, ensure_ascii=False), encoding="utf-8")

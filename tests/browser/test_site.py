@@ -145,6 +145,13 @@ def test_search_snippets_are_readable_text(site_dir):
     assert {k: v for k, v in raw.items() if v} == {}
     method = " ".join(d["text"] for d in docs if d["location"].startswith("guide/method/"))
     assert "N = U × V" in method  # the math became text, not nothing
+    # the API's examples and the notebooks' cells are left out, their words kept: every page
+    # loads this index when it opens
+    words_only = [d for d in docs if d["location"].startswith(("api/", "notebooks/"))]
+    assert [d["location"] for d in words_only if "<pre>" in d["text"]] == []
+    notebook = " ".join(d["text"] for d in words_only if d["location"].startswith("notebooks/01"))
+    assert "the normal of the triangle" in notebook
+    assert any("<pre>" in d["text"] for d in docs if d["location"].startswith("guide/"))
 
 
 # ----------------------------------------------------------------------------- getting started
