@@ -21,8 +21,8 @@ AXE = Axe.from_file(AXE_JS)
 AXE_OPTIONS = {
     "resultTypes": ["violations"],
 }
-#: axe's rules that read colours (its rules tagged ``cat.color`` that a default run makes):
-#: the only ones whose answer a change of palette can change.
+#: axe's rules that read colours (its rules tagged ``cat.color`` that a default run makes,
+#: as test_accessibility.py checks): the only ones whose answer a change of palette can change.
 AXE_COLOUR_RULES = ("color-contrast", "link-in-text-block")
 
 VIEWPORTS = {"phone": (360, 740), "tablet": (768, 1024), "desktop": (1280, 800)}
