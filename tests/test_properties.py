@@ -10,9 +10,21 @@ from hypothesis import strategies as st
 
 from trinormal import triangle_normal
 
-coord = st.fractions(min_value=-1000, max_value=1000, max_denominator=1000)
+
+def fractions(bound: int, max_denominator: int) -> st.SearchStrategy[Fraction]:
+    """Every fraction from -bound to bound whose denominator is at most ``max_denominator``.
+
+    The same fractions ``st.fractions(-bound, bound, max_denominator=...)`` draws, drawn as
+    a denominator, then a numerator that keeps the fraction in range (in fewer steps).
+    """
+    return st.integers(1, max_denominator).flatmap(
+        lambda d: st.integers(-bound * d, bound * d).map(lambda n: Fraction(n, d))
+    )
+
+
+coord = fractions(1000, 1000)
 point = st.tuples(coord, coord, coord)
-scale = st.fractions(min_value=-50, max_value=50, max_denominator=50)
+scale = fractions(50, 50)
 
 
 def dot(p, q):

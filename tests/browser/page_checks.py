@@ -21,6 +21,9 @@ AXE = Axe.from_file(AXE_JS)
 AXE_OPTIONS = {
     "resultTypes": ["violations"],
 }
+#: axe's rules that read colours (its rules tagged ``cat.color`` that a default run makes,
+#: as test_accessibility.py checks): the only ones whose answer a change of palette can change.
+AXE_COLOUR_RULES = ("color-contrast", "link-in-text-block")
 
 VIEWPORTS = {"phone": (360, 740), "tablet": (768, 1024), "desktop": (1280, 800)}
 SCHEMES = ("default", "slate")  # Material's light and dark palettes
@@ -253,8 +256,22 @@ def run_axe(page: Any, options: dict[str, Any] = AXE_OPTIONS) -> Any:
     return AxeResults(page.evaluate("options => axe.run(document, options)", options))
 
 
-def axe_serious(page: Any, where: str) -> list[dict[str, Any]]:
-    """Run axe on the page as it is; its serious violations (it must have checked something)."""
-    results = run_axe(page)
+def axe_serious(page: Any, where: str, colours_only: bool = False) -> list[dict[str, Any]]:
+    """Run axe on the page as it is; its serious violations (it must have checked something).
+
+    ``colours_only``: only AXE_COLOUR_RULES, for a page whose every rule was run in another
+    palette (the structure, names and roles a palette leaves as they are).
+    """
+    options = AXE_OPTIONS
+    if colours_only:
+        options = {**AXE_OPTIONS, "runOnly": {"type": "rule", "values": list(AXE_COLOUR_RULES)}}
+    results = run_axe(page, options)
     assert results.response["passes"], f"{where}: axe checked nothing"
+    if colours_only:
+        ran = {
+            r["id"]
+            for kind in ("passes", "violations", "incomplete")
+            for r in results.response[kind]
+        }
+        assert "color-contrast" in ran, f"{where}: axe checked no colour"
     return serious(results)

@@ -2,22 +2,33 @@
 
 axe-core comes from npm (js/vendor's lockfile, vendored into tests/browser/vendor/) and is
 injected into the page by the test (it is served by nothing on the web). Every page is checked
-with it twice, in the light palette on a desktop screen and in the dark palette on a phone,
-where boxes that scroll sideways are most common: test_every_page.py.
+with it in test_every_page.py: every rule in the dark palette on a phone, where boxes that
+scroll sideways are most common, and the rules that read colours in the light palette on a
+desktop screen.
 """
 
 from __future__ import annotations
 
 import json
 
-from page_checks import open_for_axe, run_axe, serious
+from page_checks import AXE_COLOUR_RULES, axe_serious, open_for_axe, run_axe, serious
 
 
 def test_axe_does_see_a_contrast_failure(page, server, traffic):
-    """The axe check can fail: grey text on a grey background is reported."""
+    """The axe check can fail: grey text on a grey background is reported.
+
+    By a default run, and by the colour rules alone (AXE_COLOUR_RULES, the light palette's
+    run in test_every_page.py), which are every rule about colours a default run makes.
+    """
     open_for_axe(page, server, "default")
     page.add_style_tag(content="article p { color: #aaa !important; background: #ccc; }")
-    assert "color-contrast" in [v["id"] for v in serious(run_axe(page))]
+    results = run_axe(page)
+    assert "color-contrast" in [v["id"] for v in serious(results)]
+    kinds = ("passes", "violations", "incomplete", "inapplicable")
+    ran = {rule["id"] for kind in kinds for rule in results.response[kind]}
+    colour = set(page.evaluate("() => axe.getRules(['cat.color']).map((r) => r.ruleId)"))
+    assert ran & colour == set(AXE_COLOUR_RULES), ran & colour
+    assert "color-contrast" in [v["id"] for v in axe_serious(page, "home", colours_only=True)]
 
 
 # Every control a reader can reach with Tab shows where the focus is. The page records the focused

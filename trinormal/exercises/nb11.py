@@ -39,13 +39,13 @@ def _whole(x: Any) -> int:
 
 
 def _check_flipped_face(answer: Any) -> tuple[bool, str]:
-    n_faces, to_flip = _ball()
     try:
         face = _whole(answer)
     except AnswerError as error:
         return False, f"Your answer could not be read: {error}."
     except Exception:  # an object that breaks when read
         return False, "Your answer could not be read: give one whole number, such as 17."
+    n_faces, to_flip = _ball()  # read once the answer is a number: an unread one needs no ball
     if not 0 <= face < n_faces:
         return False, (
             f"The ball has faces 0 to {n_faces - 1}; there is no face {face}. Click a face "
