@@ -170,7 +170,12 @@ def _piece_scales(v: FloatArray, f: IntArray, idx: IntArray, comp: IntArray, nc:
     """
     largest = np.zeros(nc)
     if idx.size:
-        corner = np.abs(v).max(axis=1)[f[idx]].max(axis=1)
+        a = np.abs(v)
+        at_vertex = np.maximum(np.maximum(a[:, 0], a[:, 1]), a[:, 2])
+        fi = f if idx.size == f.shape[0] else f[idx]
+        corner = np.maximum(
+            np.maximum(at_vertex[fi[:, 0]], at_vertex[fi[:, 1]]), at_vertex[fi[:, 2]]
+        )
         np.maximum.at(largest, comp[idx], corner)
     _, exponent = np.frexp(largest)
     scale: FloatArray = np.ldexp(1.0, exponent - 1)
@@ -212,9 +217,7 @@ def _volume_terms(
             + p[:, 2] * (q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0])
         )
         size[lo : lo + blk.size] = (
-            np.sqrt((p * p).sum(axis=1))
-            * np.sqrt((q * q).sum(axis=1))
-            * np.sqrt((s * s).sum(axis=1))
+            shells._norm_rows(p) * shells._norm_rows(q) * shells._norm_rows(s)
         )
     return det, size
 

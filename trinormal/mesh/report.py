@@ -21,6 +21,7 @@ from trinormal.mesh.printing import Measures, PrintReport, measure, print_report
 from trinormal.mesh.repair import _Winding, _winding
 from trinormal.mesh.topology import (
     _boundary_edges,
+    _distinct_corners,
     _duplicates,
     _non_manifold_edges,
     _non_manifold_vertices,
@@ -568,9 +569,8 @@ def check(
     he = welded.half_edges
 
     deg = degenerate_faces(v, f, t)
-    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
-    coincident = (a == b).all(axis=1) | (b == c).all(axis=1) | (c == a).all(axis=1)
-    del a, b, c  # three (F, 3) arrays: not kept through the rest of the check
+    # two corners at exactly one point: one vertex, once vertices at one position are one
+    coincident = ~_distinct_corners(f if welded.exact is None else welded.exact[f])
     deg |= coincident
     collinear = deg & ~coincident
 

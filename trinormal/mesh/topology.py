@@ -42,7 +42,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from trinormal.mesh._arrays import BoolArray, IntArray, _check_faces
+from trinormal.mesh._arrays import BoolArray, IntArray, _check_faces, _packed_sort
 
 __all__ = [
     "boundary_edges",
@@ -67,16 +67,17 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
     # node numbers in 4 bytes when they fit: half the memory, the same labels
     node = np.int32 if n < 2**31 else np.intp
     parent = np.arange(n, dtype=node)
-    a = np.asarray(a).astype(node, copy=False)
-    b = np.asarray(b).astype(node, copy=False)
-    ra, rb = a, b  # the roots of each edge's ends: at first every node is its own
+    # each edge as the roots of its two ends (at first every node is its own): an edge
+    # between two roots joins what the edge between their members joins
+    ra = np.asarray(a).astype(node, copy=False)
+    rb = np.asarray(b).astype(node, copy=False)
     hooked_mask = np.zeros(n, dtype=bool)
-    while a.size:
+    while ra.size:
         differ = ra != rb
         if not differ.all():
             if not differ.any():
                 break
-            a, b, ra, rb = a[differ], b[differ], ra[differ], rb[differ]
+            ra, rb = ra[differ], rb[differ]
         high = np.maximum(ra, rb)
         np.minimum.at(parent, high, np.minimum(ra, rb))  # labels only decrease: no cycles
         hooked_mask[high] = True
@@ -89,7 +90,7 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
                 break
             parent[hooked] = top = up
         parent = parent[parent]
-        ra, rb = parent[a], parent[b]
+        ra, rb = parent[ra], parent[rb]
     # every root is the smallest node of its piece: number the roots in order
     is_root = parent == np.arange(n)
     out: IntArray = (np.cumsum(is_root) - 1)[parent].astype(np.intp)
@@ -142,12 +143,18 @@ class _HalfEdges:
         del a, b
         nv = int(hi.max()) + 1 if hi.size else 0
         new = np.ones(h.size, dtype=bool)
-        # one packed key per edge, unless it would overflow: then sort on both columns
+        # one number per edge, unless it would overflow: then sort on both columns
         if nv < 2**31:
             key = lo * nv + hi
             del lo, hi
-            order = np.argsort(key)
-            key = key[order]
+            # the key and the index in one number when they fit (the order of an edge's
+            # walks does not matter: ties are by index there, in any order here)
+            done = _packed_sort(key, nv * nv)
+            if done is None:
+                order = np.argsort(key)
+                key = key[order]
+            else:
+                order, key = done
             if order.size:
                 np.not_equal(key[1:], key[:-1], out=new[1:])
             del key
@@ -212,11 +219,6 @@ class _HalfEdges:
         index = _renumber(kept, nf)
         label[kept] = _components(kept.size, index[h1 // 3], index[h2 // 3])
         return label
-
-    def corner_at(self, h: IntArray, vertex: IntArray) -> IntArray:
-        """Return the corner (3 · face + position) of half-edge ``h``'s face at ``vertex``."""
-        out: IntArray = np.where(self.start(h) == vertex, h, _next_corner(h))
-        return out
 
 
 def _half_edges(faces: npt.ArrayLike) -> _HalfEdges:
@@ -288,18 +290,24 @@ def _non_manifold_edges(he: _HalfEdges) -> IntArray:
 def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
     """Every vertex used by a face with three distinct vertices, and its number of fans."""
     h1, h2 = he.shared_pairs
-    a, b = he.start(h1), he.end(h1)
     kept = np.repeat(he.clean, 3)
     n_kept = int(np.count_nonzero(kept))
     # numbered among the corners kept: as they are when no face uses a vertex twice
     every = n_kept == he.faces.size
     index = None if every else _renumber(np.flatnonzero(kept), he.faces.size)
-    # the two faces meet at both ends of the edge: join their corners there
-    ends = []
-    for h in (h1, h2):
-        c = np.concatenate([he.corner_at(h, a), he.corner_at(h, b)])
-        ends.append(c if index is None else index[c])
-    del a, b, index
+    # the two faces meet at both ends a and b of the edge h1 walks: join their corners there.
+    # h1's corner at a is its own, at b the next; h2's are the same if it walks a → b too,
+    # swapped if it walks b → a
+    along = he.start(h2) == he.start(h1)
+    next1, next2 = _next_corner(h1), _next_corner(h2)
+    ends = [
+        np.concatenate([h1, next1]),
+        np.concatenate([np.where(along, h2, next2), np.where(along, next2, h2)]),
+    ]
+    del along, next1, next2
+    if index is not None:
+        ends = [index[c] for c in ends]
+    del index
     fan = _components(n_kept, ends[0], ends[1])
     del ends
     vertex = he.faces.ravel() if every else he.faces.ravel()[kept]
@@ -403,23 +411,32 @@ def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
 
 def _duplicates(f: IntArray) -> tuple[IntArray, IntArray]:
     clean = np.flatnonzero(_distinct_corners(f))
-    s = np.sort(f[clean], axis=1)
     fc = f[clean]
-    even = (
-        (fc[:, 0] < fc[:, 1]).astype(np.int8) + (fc[:, 1] < fc[:, 2]) + (fc[:, 2] < fc[:, 0])
-    ) == 2
-    top = int(s[:, 2].max()) + 1 if s.size else 0
+    a, b, c = fc[:, 0], fc[:, 1], fc[:, 2]
+    even = ((a < b).astype(np.int8) + (b < c) + (c < a)) == 2
+    # the three vertices in increasing order: s0 <= s1 <= s2
+    s0, s2 = np.minimum(a, b), np.maximum(a, b)
+    s1 = np.maximum(s0, np.minimum(s2, c))
+    np.minimum(s0, c, out=s0)
+    np.maximum(s2, c, out=s2)
+    del fc, a, b, c
+    top = int(s2.max()) + 1 if s2.size else 0
+    same_key = np.zeros(clean.size, dtype=bool)
+    same_side = np.zeros(clean.size, dtype=bool)
     if top <= 2**20:  # the three vertices and the winding packed in one 61-bit key
-        key = ((s[:, 0] * top + s[:, 1]) * top + s[:, 2]) * 2 + even
+        key = ((s0 * top + s1) * top + s2) * 2 + even
+        del s0, s1, s2
         order = np.argsort(key, kind="stable")  # stable: file order within a key
+        key = key[order]
+        np.equal(key[1:] >> 1, key[:-1] >> 1, out=same_key[1:])
+        np.equal(key[1:], key[:-1], out=same_side[1:])
+        del key
     else:
-        order = np.lexsort((clean, even, s[:, 2], s[:, 1], s[:, 0]))
-    s, even, idx = s[order], even[order], clean[order]
-    same_key = np.zeros(idx.size, dtype=bool)
-    if idx.size:
-        same_key[1:] = (s[1:] == s[:-1]).all(axis=1)
-    same_side = same_key.copy()
-    same_side[1:] &= even[1:] == even[:-1]
+        order = np.lexsort((clean, even, s2, s1, s0))
+        s0, s1, s2, even = s0[order], s1[order], s2[order], even[order]
+        same_key[1:] = (s0[1:] == s0[:-1]) & (s1[1:] == s1[:-1]) & (s2[1:] == s2[:-1])
+        same_side[1:] = same_key[1:] & (even[1:] == even[:-1])
+    idx = clean[order]
     same = np.sort(idx[same_side])
     # the first face of its winding is reversed when the group began earlier (other winding)
     key_start = np.flatnonzero(~same_key)
