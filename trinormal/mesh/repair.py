@@ -26,7 +26,7 @@ import numpy.typing as npt
 
 from trinormal.mesh import shells, welding
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray, _check_faces, _check_vertices
-from trinormal.mesh.topology import _components, _HalfEdges
+from trinormal.mesh.topology import _components, _HalfEdges, _Rims, _rims
 
 __all__ = ["fix_winding", "signed_volume"]
 
@@ -57,6 +57,7 @@ class _Winding:
     cavity: BoolArray  # (C,) a solid piece inside an odd number of solid pieces
     encloses: BoolArray  # (C,) an open piece judged by its volume closed over its holes
     capped_volume: FloatArray  # (C,) six times that volume as wound now, over scale**3
+    rims: _Rims  # the holes' rims, loop by loop
 
     @property
     def n_components(self) -> int:
@@ -136,7 +137,8 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     solid = closed & orientable & (np.abs(fixed) > error)
     cavity = shells._cavities(v, f, comp, flip, solid, scale)
     open_piece = ~closed & (open_edges[:nc] == boundary_edges[:nc]) & orientable
-    cap = shells._capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING)
+    rims = _rims(he)
+    cap = shells._capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING, rims)
     inward = (solid & ((fixed < 0) != cavity)) | (cap.encloses & (cap.fixed < 0))
     flip[idx] ^= inward[comp[idx]]
     return _Winding(
@@ -153,6 +155,7 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
         cavity=cavity,
         encloses=cap.encloses,
         capped_volume=cap.volume,
+        rims=rims,
     )
 
 

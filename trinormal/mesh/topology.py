@@ -221,6 +221,38 @@ class _HalfEdges:
         return label
 
 
+@dataclass(frozen=True)
+class _Rims:
+    """The rims of the holes: the boundary half-edges joined end to end, piece by piece.
+
+    ``half_edges`` (B,) are the boundary half-edges in increasing order, ``piece`` (B,)
+    their pieces. The rims' corners, one per piece and vertex, ordered by piece then
+    vertex, are ``node_piece`` and ``node_vertex`` (N,); ``start`` (B,) is the corner
+    each half-edge leaves from, and ``loop`` (N,) each corner's loop: the rim edges of
+    one piece that join end to end (`trinormal.mesh.shells` caps each loop,
+    `trinormal.mesh.printing` counts the holes).
+    """
+
+    half_edges: IntArray
+    piece: IntArray
+    start: IntArray
+    node_piece: IntArray
+    node_vertex: IntArray
+    loop: IntArray
+
+
+def _rims(he: _HalfEdges) -> _Rims:
+    """Join the boundary half-edges of ``he`` into loops, piece by piece (`_Rims`)."""
+    h = np.sort(he.order[he.starts[he.counts == 1]].astype(np.intp))
+    piece = he.face_components[h // 3]
+    a, b = he.start(h), he.end(h)
+    nv = int(max(a.max(), b.max())) + 1 if h.size else 1
+    key = piece.astype(np.int64) * nv
+    nodes, inv = np.unique(np.concatenate([key + a, key + b]), return_inverse=True)
+    loop = _components(nodes.size, inv[: h.size], inv[h.size :])
+    return _Rims(h, piece, inv[: h.size], nodes // nv, nodes % nv, loop)
+
+
 def _half_edges(faces: npt.ArrayLike) -> _HalfEdges:
     return _HalfEdges.of(_check_faces(faces, None))
 
