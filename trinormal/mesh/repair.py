@@ -99,12 +99,22 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     f1, f2 = h1 // 3, h2 // 3
     inconsistent = np.bincount(comp[f1[same]], minlength=nc)[:nc]
 
-    # two copies of every face, as it is (i) and turned over (i + F): agreeing
-    # neighbours join like with like, disagreeing ones join each to the other's copy
-    a = np.concatenate([f1, f1 + nf])
-    b = np.concatenate([np.where(same, f2 + nf, f2), np.where(same, f2, f2 + nf)])
-    label = _components(2 * nf, a, b)
-    as_is, turned = label[:nf], label[nf:]
+    # two copies of every face, as it is and turned over: agreeing neighbours join like
+    # with like, disagreeing ones join each to the other's copy. Faces that agree with a
+    # neighbour stay together in both copies, so the copies are made of the patches of
+    # agreeing faces (numbered by their first faces, as-is copies before turned ones:
+    # the pieces of the copies are numbered as the faces' copies would be)
+    patch = _components(nf, f1[~same], f2[~same])
+    n_patches = int(patch.max()) + 1 if nf else 0
+    p1, p2 = patch[f1[same]], patch[f2[same]]
+    label = _components(
+        2 * n_patches,
+        np.concatenate([p1, p1 + n_patches]),
+        np.concatenate([p2 + n_patches, p2]),
+    )
+    del p1, p2
+    as_is, turned = label[patch], label[patch + n_patches]
+    del patch, label
     orientable_face = as_is != turned
     orientable = np.ones(nc, dtype=bool)
     orientable[comp[kept & ~orientable_face]] = False
