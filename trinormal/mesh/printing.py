@@ -265,13 +265,14 @@ def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
     total = 0.0
     for start in range(0, faces.shape[0], _AREA_BLOCK):
         blk = faces[start : start + _AREA_BLOCK]
-        # corners over the scale (exact), edges q = B − A and s = C − A, in place
-        p = vertices[blk[:, 0]]
+        # corners over the scale (exact), edges q = B − A and s = C − A, in place (rows
+        # gathered by np.take: several times faster than vertices[i])
+        p = np.take(vertices, blk[:, 0], axis=0)
         p /= scale
-        q = vertices[blk[:, 1]]
+        q = np.take(vertices, blk[:, 1], axis=0)
         q /= scale
         q -= p
-        s = vertices[blk[:, 2]]
+        s = np.take(vertices, blk[:, 2], axis=0)
         s /= scale
         s -= p
         # |N|² = n0² + n1² + n2², each n_i a difference of two products, added in this order

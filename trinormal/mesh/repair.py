@@ -219,11 +219,12 @@ def _volume_terms(
     size = np.empty(idx.size)
     for lo in range(0, idx.size, _VOLUME_BLOCK):
         blk = idx[lo : lo + _VOLUME_BLOCK]
-        c = scale[comp[blk]][:, None]
-        r = ref[comp[blk]] / c
-        p = v[f[blk, 0]] / c - r
-        q = v[f[blk, 1]] / c - r
-        s = v[f[blk, 2]] / c - r
+        piece = comp[blk]
+        c = scale[piece][:, None]
+        r = np.take(ref, piece, axis=0) / c  # rows by np.take: several times faster than v[i]
+        p = np.take(v, f[blk, 0], axis=0) / c - r
+        q = np.take(v, f[blk, 1], axis=0) / c - r
+        s = np.take(v, f[blk, 2], axis=0) / c - r
         det[lo : lo + blk.size] = (
             p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
             + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])

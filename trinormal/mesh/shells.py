@@ -159,7 +159,7 @@ def _capped(
     c = comp[faces]
     s = scale[c][:, None]
     r = ref[c] / s
-    p, q, t = (v[f[faces, k]] / s - r for k in range(3))
+    p, q, t = (np.take(v, f[faces, k], axis=0) / s - r for k in range(3))
     det = _det_rows(p, q, t)
     sign = np.where(flip[faces], -1.0, 1.0)
     size = _norm_rows(p) * _norm_rows(q) * _norm_rows(t)

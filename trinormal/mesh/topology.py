@@ -58,13 +58,23 @@ __all__ = [
 def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
     """Label the connected pieces of the graph on nodes ``0..n-1`` with edges ``a[i]–b[i]``.
 
-    Labels are 0, 1, 2, … in the order of each piece's smallest node. Pure
-    numpy, in rounds: every root is hooked to the smallest root it touches;
-    the roots just hooked follow their chains (each step halves them), and
-    then every node, which pointed at a root, takes that root's root; edges
-    inside one piece are dropped. A handful of rounds on a mesh.
+    Labels are 0, 1, 2, … in the order of each piece's smallest node (`_roots`).
     """
-    # node numbers in 4 bytes when they fit: half the memory, the same labels
+    root = _roots(n, a, b)
+    is_root = root == np.arange(n)
+    out: IntArray = (np.cumsum(is_root) - 1)[root].astype(np.intp)
+    return out
+
+
+def _roots(n: int, a: IntArray, b: IntArray) -> npt.NDArray[Any]:
+    """Return each node's root, the smallest node of its piece (int32 when n < 2**31).
+
+    Pure numpy, in rounds: every root is hooked to the smallest root it touches;
+    the roots just hooked follow their chains (each step halves them), and then
+    every node, which pointed at a root, takes that root's root; edges inside one
+    piece are dropped. A handful of rounds on a mesh.
+    """
+    # node numbers in 4 bytes when they fit: half the memory, the same roots
     node = np.int32 if n < 2**31 else np.intp
     parent = np.arange(n, dtype=node)
     # each edge as the roots of its two ends (at first every node is its own): an edge
@@ -91,10 +101,7 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
             parent[hooked] = top = up
         parent = parent[parent]
         ra, rb = parent[ra], parent[rb]
-    # every root is the smallest node of its piece: number the roots in order
-    is_root = parent == np.arange(n)
-    out: IntArray = (np.cumsum(is_root) - 1)[parent].astype(np.intp)
-    return out
+    return parent
 
 
 def _distinct_corners(f: IntArray) -> BoolArray:
@@ -105,8 +112,11 @@ def _distinct_corners(f: IntArray) -> BoolArray:
 
 def _next_corner(h: IntArray) -> IntArray:
     """Return the next corner of the same face: half-edge ``h`` arrives at its vertex."""
-    out: IntArray = h + 1
-    out[h % 3 == 2] -= 3
+    # h + 1, less 3 where h + 1 starts the next face: there (h + 1) // 3 is one more than
+    # h // 3 (division by a constant is fast in numpy, the remainder and a masked update
+    # are not)
+    up = h + 1
+    out: IntArray = up - 3 * (up // 3 - h // 3)
     return out
 
 
@@ -319,35 +329,26 @@ def _non_manifold_edges(he: _HalfEdges) -> IntArray:
     return he.edge_vertices(np.flatnonzero(he.counts >= 3))
 
 
-def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
-    """Every vertex used by a face with three distinct vertices, and its number of fans."""
+def _fans(he: _HalfEdges) -> IntArray:
+    """How many fans each vertex has, shape (V,) (0: no face with three distinct vertices)."""
     h1, h2 = he.shared_pairs
-    kept = np.repeat(he.clean, 3)
-    n_kept = int(np.count_nonzero(kept))
-    # numbered among the corners kept: as they are when no face uses a vertex twice
-    every = n_kept == he.faces.size
-    index = None if every else _renumber(np.flatnonzero(kept), he.faces.size)
     # the two faces meet at both ends a and b of the edge h1 walks: join their corners there.
     # h1's corner at a is its own, at b the next; h2's are the same if it walks a → b too,
     # swapped if it walks b → a
     along = he.start(h2) == he.start(h1)
     next1, next2 = _next_corner(h1), _next_corner(h2)
-    ends = [
+    root = _roots(
+        he.faces.size,
         np.concatenate([h1, next1]),
         np.concatenate([np.where(along, h2, next2), np.where(along, next2, h2)]),
-    ]
+    )
     del along, next1, next2
-    if index is not None:
-        ends = [index[c] for c in ends]
-    del index
-    fan = _components(n_kept, ends[0], ends[1])
-    del ends
-    vertex = he.faces.ravel() if every else he.faces.ravel()[kept]
-    # a fan lies around one vertex: count the fans of each vertex
-    fan_vertex = np.empty(int(fan.max()) + 1 if fan.size else 0, dtype=np.intp)
-    fan_vertex[fan] = vertex
-    verts, counts = np.unique(fan_vertex, return_counts=True)
-    return verts.astype(np.intp), counts
+    # a fan lies around one vertex and has one root, its smallest corner; the corners of
+    # a face that uses a vertex twice are in no fan
+    is_root = root == np.arange(root.size)
+    is_root &= np.repeat(he.clean, 3)
+    out: IntArray = np.bincount(he.faces.ravel()[is_root])
+    return out
 
 
 def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
@@ -380,9 +381,7 @@ def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
 
 
 def _non_manifold_vertices(he: _HalfEdges) -> IntArray:
-    verts, fans = _fans(he)
-    out: IntArray = verts[fans > 1]
-    return out
+    return np.flatnonzero(_fans(he) > 1).astype(np.intp)
 
 
 def connected_components(faces: npt.ArrayLike) -> IntArray:
@@ -443,7 +442,7 @@ def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
 
 def _duplicates(f: IntArray) -> tuple[IntArray, IntArray]:
     clean = np.flatnonzero(_distinct_corners(f))
-    fc = f[clean]
+    fc = np.take(f, clean, axis=0)
     a, b, c = fc[:, 0], fc[:, 1], fc[:, 2]
     even = ((a < b).astype(np.int8) + (b < c) + (c < a)) == 2
     # the three vertices in increasing order: s0 <= s1 <= s2

@@ -189,7 +189,7 @@ def _stl_records(m: MeshData, faces: IntArray, turned: IntArray) -> bytearray:
     raw["n"], raw["x"] = m.stl_records["normal"], m.stl_records["attr"]
     corners = m.vertices.astype(np.float32).view("V12").reshape(-1)  # a corner's 12 bytes
     raw["a"], raw["b"], raw["c"] = (corners[faces[:, k]] for k in range(3))
-    raw["n"][turned] = face_normals(m.vertices, faces[turned]).astype(np.float32)
+    raw["n"][turned] = face_normals(m.vertices, np.take(faces, turned, axis=0)).astype(np.float32)
     return buf
 
 
