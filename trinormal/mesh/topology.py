@@ -330,7 +330,7 @@ def _non_manifold_edges(he: _HalfEdges) -> IntArray:
 
 
 def _fans(he: _HalfEdges) -> IntArray:
-    """How many fans each vertex has, shape (V,) (0: no face with three distinct vertices)."""
+    """Return the vertex of each fan: a vertex with two fans or more is listed as often."""
     h1, h2 = he.shared_pairs
     # the two faces meet at both ends a and b of the edge h1 walks: join their corners there.
     # h1's corner at a is its own, at b the next; h2's are the same if it walks a → b too,
@@ -347,7 +347,7 @@ def _fans(he: _HalfEdges) -> IntArray:
     # a face that uses a vertex twice are in no fan
     is_root = root == np.arange(root.size)
     is_root &= np.repeat(he.clean, 3)
-    out: IntArray = np.bincount(he.faces.ravel()[is_root])
+    out: IntArray = he.faces.ravel()[is_root]
     return out
 
 
@@ -381,7 +381,10 @@ def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
 
 
 def _non_manifold_vertices(he: _HalfEdges) -> IntArray:
-    return np.flatnonzero(_fans(he) > 1).astype(np.intp)
+    # sorted, not counted in an array as long as the largest index: indices may be huge
+    fan_vertex = np.sort(_fans(he))
+    twice = fan_vertex[1:][fan_vertex[1:] == fan_vertex[:-1]]
+    return np.unique(twice).astype(np.intp)
 
 
 def connected_components(faces: npt.ArrayLike) -> IntArray:
