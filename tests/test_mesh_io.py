@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from trinormal import mesh
-from trinormal.mesh import MeshFileError
+from trinormal.mesh import MeshFileError, _arrays
 from trinormal.mesh.io import obj, stl
 
 DATA = Path(__file__).parent / "data" / "meshes"
@@ -161,11 +161,30 @@ def test_stl_corners_merge_the_same_when_every_sort_key_collides(monkeypatch):
     corners = v[f].reshape(-1, 3)
     data = pack_stl(corners.reshape(-1, 3, 3))
     want = mesh.parse_mesh(data, "stl")
-    monkeypatch.setattr(stl, "_MIX", (0, 0, 0))  # every corner gets the key 0
+    monkeypatch.setattr(_arrays, "_MIX", (0, 0, 0))  # every corner gets the key 0
     got = mesh.parse_mesh(data, "stl")
     assert got.faces.tolist() == want.faces.tolist()
     assert got.vertices.tobytes() == want.vertices.tobytes()
     assert len(got.vertices) == len(v)  # the sphere's vertices are float32 numbers apart
+
+
+@pytest.mark.parametrize("mix", [(1, 0, 0), (0, 0, 1)])
+def test_equal_rows_are_found_exactly_when_some_sort_keys_collide(monkeypatch, mix):
+    """Points that share x (or z) share a key: only their runs are sorted by value."""
+    v, f = mesh.icosphere(2)
+    corners = v[f].reshape(-1, 3)
+    data = pack_stl(corners.reshape(-1, 3, 3))
+    want = mesh.parse_mesh(data, "stl")
+    soup = np.vstack([v, v[::-1]])  # every position twice: the second copy is the first's
+    want_weld = mesh.welding._exact_representatives(soup)
+    monkeypatch.setattr(_arrays, "_MIX", mix)
+    got = mesh.parse_mesh(data, "stl")
+    assert got.faces.tolist() == want.faces.tolist()
+    assert got.vertices.tobytes() == want.vertices.tobytes()
+    got_weld = mesh.welding._exact_representatives(soup)
+    assert got_weld is not None and want_weld is not None
+    assert got_weld.tolist() == want_weld.tolist()
+    assert got_weld.tolist() == [*range(len(v)), *range(len(v))[::-1]]
 
 
 def test_stl_and_obj_of_one_model_have_the_same_report(tmp_path):

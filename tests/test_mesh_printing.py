@@ -30,6 +30,13 @@ def test_holes_are_rims_with_the_edges_around_each():
     c = next(i for i in range(1, len(f)) if len(set(f[0]) & set(f[i])) == 1)
     assert check(v, _without(f, [a, c])).printing.holes == (6,)
     assert check(v, f).printing.holes == ()
+    # so do the rims of two pieces that touch at one vertex: two triangles sharing a corner,
+    # and two strips of two triangles each, touching at both ends
+    v = np.random.default_rng(1).random((6, 3))
+    assert check(v[:5], [[0, 1, 2], [0, 3, 4]]).printing.holes == (6,)
+    strips = [[0, 1, 2], [1, 3, 2], [0, 4, 5], [4, 3, 5]]
+    r = check(v, strips)
+    assert len(r.components) == 2 and r.printing.holes == (8,)
 
 
 @pytest.mark.parametrize("scale", [1.0, 1e-150, 1e150, 3.7e-5, 1e300])

@@ -157,3 +157,76 @@ def _prepare(
     v, dtype, box = _checked_vertices(vertices)
     f = _check_faces(faces, v.shape[0], check_range=False)
     return v, f, dtype, box
+
+
+# --------------------------------------------------------------------------- sorting
+
+
+#: Odd 64-bit multipliers that mix a row's bit patterns into one number (`_grouped`).
+_MIX = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9)
+
+
+def _packed_sort(key: npt.NDArray[Any], top: int) -> tuple[IntArray, npt.NDArray[Any]] | None:
+    """Sort the keys ``0 <= key < top``, ties by index: the order and the sorted keys.
+
+    Each key and its index are packed in one 64-bit number, the key above the index,
+    and the numbers sorted: a plain sort of numbers is several times faster than
+    sorting indices by key (``argsort``). None when the two need more than 64 bits.
+    """
+    n = key.shape[0]
+    shift = max(1, (n - 1).bit_length())
+    if max(1, (top - 1).bit_length()) + shift > 64:
+        return None
+    packed = key.astype(np.uint64)
+    packed <<= np.uint64(shift)
+    packed |= np.arange(n, dtype=np.uint64)
+    packed.sort()
+    order = (packed & np.uint64((1 << shift) - 1)).astype(np.intp)
+    packed >>= np.uint64(shift)
+    return order, packed
+
+
+def _grouped(bits: npt.NDArray[np.unsignedinteger[Any]]) -> tuple[IntArray, BoolArray]:
+    """Order the rows of ``bits`` (n, 3) so that equal rows are together, each group by index.
+
+    Returns the order and, for rows 1 to n - 1 in that order, whether each equals the
+    row before it. The rows are sorted by a mix of their three bit patterns
+    (`_packed_sort`, in the bits the index leaves); rows of one mix that differ are
+    then sorted by their values, so equality is exact, never a hash match.
+    """
+    n = bits.shape[0]
+    shift = max(1, (n - 1).bit_length())
+    wide = bits.dtype.itemsize == 8
+    mix = np.zeros(n, dtype=np.uint64)
+    for k in range(3):
+        col = bits[:, k]
+        if wide:  # a product's high bits depend only on the factors' bits below them: the
+            # high half is folded onto the low one, or a float64's sign bit would flip only
+            # the top bit (and x, y and -x, -y would mix alike)
+            col = col ^ (col >> np.uint64(32))
+        mix ^= col * np.uint64(_MIX[k])
+    mix >>= np.uint64(shift)
+    done = _packed_sort(mix, 1 << (64 - shift))
+    assert done is not None  # the mix keeps 64 - shift bits
+    order, mix = done
+    same_mix = mix[1:] == mix[:-1]
+    del mix
+    same = _same_as_previous(np.take(bits, order, axis=0))
+    clash = same_mix & ~same
+    if clash.any():  # one mix, different rows: sort those runs by their values
+        run = np.cumsum(np.append(True, ~same_mix))
+        mixed = np.zeros(int(run[-1]) + 1, dtype=bool)
+        mixed[run[1:][clash]] = True
+        at = np.flatnonzero(mixed[run])
+        rows = order[at]  # by index within each run: the sort below is stable
+        order[at] = rows[np.lexsort((bits[rows, 2], bits[rows, 1], bits[rows, 0], run[at]))]
+        same = _same_as_previous(np.take(bits, order, axis=0))
+    return order, same
+
+
+def _same_as_previous(rows: npt.NDArray[Any]) -> BoolArray:
+    """Whether each row of a (n, 3) array equals the row before it, for rows 1 to n - 1."""
+    same: BoolArray = rows[1:, 0] == rows[:-1, 0]
+    same &= rows[1:, 1] == rows[:-1, 1]
+    same &= rows[1:, 2] == rows[:-1, 2]
+    return same

@@ -30,7 +30,7 @@ import numpy as np
 
 from trinormal.display import SCI_ABOVE_LOG10, format_number
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray
-from trinormal.mesh.topology import _components
+from trinormal.mesh.topology import _components, _Rims
 
 if TYPE_CHECKING:
     from trinormal.mesh.report import MeshReport
@@ -265,13 +265,14 @@ def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
     total = 0.0
     for start in range(0, faces.shape[0], _AREA_BLOCK):
         blk = faces[start : start + _AREA_BLOCK]
-        # corners over the scale (exact), edges q = B − A and s = C − A, in place
-        p = vertices[blk[:, 0]]
+        # corners over the scale (exact), edges q = B − A and s = C − A, in place (rows
+        # gathered by np.take: several times faster than vertices[i])
+        p = np.take(vertices, blk[:, 0], axis=0)
         p /= scale
-        q = vertices[blk[:, 1]]
+        q = np.take(vertices, blk[:, 1], axis=0)
         q /= scale
         q -= p
-        s = vertices[blk[:, 2]]
+        s = np.take(vertices, blk[:, 2], axis=0)
         s /= scale
         s -= p
         # |N|² = n0² + n1² + n2², each n_i a difference of two products, added in this order
@@ -295,18 +296,21 @@ def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
     return Measures(surface_area=total * 0.5 * scale * scale, size=size)
 
 
-def _holes(boundary_edges: IntArray) -> tuple[int, ...]:
+def _holes(rims: _Rims) -> tuple[int, ...]:
     """Count the edges around each hole; the counts largest first.
 
-    A hole is a set of boundary edges joined end to end; two rims that touch at one
-    vertex count as one hole.
+    A hole is a set of boundary edges joined end to end: the loops of `_Rims`, and
+    loops that touch at one vertex count as one hole, of one piece or of two.
     """
-    if boundary_edges.shape[0] == 0:
+    if rims.half_edges.size == 0:
         return ()
-    nodes, ends = np.unique(boundary_edges, return_inverse=True)
-    ends = ends.reshape(-1, 2)
-    label = _components(nodes.shape[0], ends[:, 0], ends[:, 1])
-    counts = np.bincount(label[ends[:, 0]])
+    # a piece's loops already meet at their shared vertices; join those of different pieces
+    by_vertex = np.argsort(rims.node_vertex, kind="stable")
+    vertex = rims.node_vertex[by_vertex]
+    shared = np.flatnonzero(vertex[1:] == vertex[:-1])
+    n_loops = int(rims.loop.max()) + 1
+    hole = _components(n_loops, rims.loop[by_vertex[shared]], rims.loop[by_vertex[shared + 1]])
+    counts = np.bincount(hole[rims.loop[rims.start]])
     return tuple(sorted((int(c) for c in counts if c), reverse=True))
 
 
@@ -460,7 +464,7 @@ def print_report(r: MeshReport) -> PrintReport:
     >>> print_report(check(v * 0.01, f[:-2, ::-1])).to_dict()["verdict"]
     'not watertight, 1 piece, inside out: not ready for a slicer (1 hole, 10 faces to turn over)'
     """
-    holes = _holes(r.boundary_edges)
+    holes = r.holes
     volumes = tuple(c.volume for c in r.components)
     return PrintReport(
         holes=holes,

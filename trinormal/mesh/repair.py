@@ -27,7 +27,7 @@ import numpy.typing as npt
 
 from trinormal.mesh import shells, welding
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray, _check_faces, _check_vertices
-from trinormal.mesh.topology import _components, _HalfEdges
+from trinormal.mesh.topology import _components, _HalfEdges, _Rims, _rims
 
 __all__ = ["fix_winding", "signed_volume", "turn_over"]
 
@@ -58,6 +58,7 @@ class _Winding:
     cavity: BoolArray  # (C,) a solid piece inside an odd number of solid pieces
     encloses: BoolArray  # (C,) an open piece judged by its volume closed over its holes
     capped_volume: FloatArray  # (C,) six times that volume as wound now, over scale**3
+    rims: _Rims  # the holes' rims, loop by loop
 
     @property
     def n_components(self) -> int:
@@ -99,12 +100,22 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     f1, f2 = h1 // 3, h2 // 3
     inconsistent = np.bincount(comp[f1[same]], minlength=nc)[:nc]
 
-    # two copies of every face, as it is (i) and turned over (i + F): agreeing
-    # neighbours join like with like, disagreeing ones join each to the other's copy
-    a = np.concatenate([f1, f1 + nf])
-    b = np.concatenate([np.where(same, f2 + nf, f2), np.where(same, f2, f2 + nf)])
-    label = _components(2 * nf, a, b)
-    as_is, turned = label[:nf], label[nf:]
+    # two copies of every face, as it is and turned over: agreeing neighbours join like
+    # with like, disagreeing ones join each to the other's copy. Faces that agree with a
+    # neighbour stay together in both copies, so the copies are made of the patches of
+    # agreeing faces (numbered by their first faces, as-is copies before turned ones:
+    # the pieces of the copies are numbered as the faces' copies would be)
+    patch = _components(nf, f1[~same], f2[~same])
+    n_patches = int(patch.max()) + 1 if nf else 0
+    p1, p2 = patch[f1[same]], patch[f2[same]]
+    label = _components(
+        2 * n_patches,
+        np.concatenate([p1, p1 + n_patches]),
+        np.concatenate([p2 + n_patches, p2]),
+    )
+    del p1, p2
+    as_is, turned = label[patch], label[patch + n_patches]
+    del patch, label
     orientable_face = as_is != turned
     orientable = np.ones(nc, dtype=bool)
     orientable[comp[kept & ~orientable_face]] = False
@@ -137,7 +148,8 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     solid = closed & orientable & (np.abs(fixed) > error)
     cavity = shells._cavities(v, f, comp, flip, solid, scale)
     open_piece = ~closed & (open_edges[:nc] == boundary_edges[:nc]) & orientable
-    cap = shells._capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING)
+    rims = _rims(he)
+    cap = shells._capped(v, he, comp, flip, open_piece, scale, ref, _VOLUME_ROUNDING, rims)
     inward = (solid & ((fixed < 0) != cavity)) | (cap.encloses & (cap.fixed < 0))
     flip[idx] ^= inward[comp[idx]]
     return _Winding(
@@ -154,6 +166,7 @@ def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
         cavity=cavity,
         encloses=cap.encloses,
         capped_volume=cap.volume,
+        rims=rims,
     )
 
 
@@ -171,7 +184,12 @@ def _piece_scales(v: FloatArray, f: IntArray, idx: IntArray, comp: IntArray, nc:
     """
     largest = np.zeros(nc)
     if idx.size:
-        corner = np.abs(v).max(axis=1)[f[idx]].max(axis=1)
+        a = np.abs(v)
+        at_vertex = np.maximum(np.maximum(a[:, 0], a[:, 1]), a[:, 2])
+        fi = f if idx.size == f.shape[0] else f[idx]
+        corner = np.maximum(
+            np.maximum(at_vertex[fi[:, 0]], at_vertex[fi[:, 1]]), at_vertex[fi[:, 2]]
+        )
         np.maximum.at(largest, comp[idx], corner)
     _, exponent = np.frexp(largest)
     scale: FloatArray = np.ldexp(1.0, exponent - 1)
@@ -202,20 +220,19 @@ def _volume_terms(
     size = np.empty(idx.size)
     for lo in range(0, idx.size, _VOLUME_BLOCK):
         blk = idx[lo : lo + _VOLUME_BLOCK]
-        c = scale[comp[blk]][:, None]
-        r = ref[comp[blk]] / c
-        p = v[f[blk, 0]] / c - r
-        q = v[f[blk, 1]] / c - r
-        s = v[f[blk, 2]] / c - r
+        piece = comp[blk]
+        c = scale[piece][:, None]
+        r = np.take(ref, piece, axis=0) / c  # rows by np.take: several times faster than v[i]
+        p = np.take(v, f[blk, 0], axis=0) / c - r
+        q = np.take(v, f[blk, 1], axis=0) / c - r
+        s = np.take(v, f[blk, 2], axis=0) / c - r
         det[lo : lo + blk.size] = (
             p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
             + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])
             + p[:, 2] * (q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0])
         )
         size[lo : lo + blk.size] = (
-            np.sqrt((p * p).sum(axis=1))
-            * np.sqrt((q * q).sum(axis=1))
-            * np.sqrt((s * s).sum(axis=1))
+            shells._norm_rows(p) * shells._norm_rows(q) * shells._norm_rows(s)
         )
     return det, size
 

@@ -17,10 +17,11 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import IntArray, _check_faces, _check_tol, _check_vertices
 from trinormal.mesh.normals import degenerate_faces
-from trinormal.mesh.printing import Measures, PrintReport, measure, print_report
+from trinormal.mesh.printing import Measures, PrintReport, _holes, measure, print_report
 from trinormal.mesh.repair import _Winding, _winding
 from trinormal.mesh.topology import (
     _boundary_edges,
+    _distinct_corners,
     _duplicates,
     _non_manifold_edges,
     _non_manifold_vertices,
@@ -149,6 +150,9 @@ class MeshReport:
         ``near_miss_distance`` were merged too (0: none).
     near_miss_distance : float or None
         That distance: ``weld=`` it to merge them.
+    holes : tuple of int
+        The number of edges around each hole, largest first (the rims of
+        ``boundary_edges`` joined end to end; `MeshReport.printing`).
 
     Examples
     --------
@@ -180,6 +184,7 @@ class MeshReport:
     welded_vertices: int = 0
     near_miss_edges: int = 0
     near_miss_distance: float | None = None
+    holes: tuple[int, ...] = field(default=(), repr=False)
 
     @property
     def printing(self) -> PrintReport:
@@ -568,9 +573,8 @@ def check(
     he = welded.half_edges
 
     deg = degenerate_faces(v, f, t)
-    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
-    coincident = (a == b).all(axis=1) | (b == c).all(axis=1) | (c == a).all(axis=1)
-    del a, b, c  # three (F, 3) arrays: not kept through the rest of the check
+    # two corners at exactly one point: one vertex, once vertices at one position are one
+    coincident = ~_distinct_corners(f if welded.exact is None else welded.exact[f])
     deg |= coincident
     collinear = deg & ~coincident
 
@@ -605,6 +609,7 @@ def check(
         welded_vertices=welded.welded,
         near_miss_edges=welded.near_edges,
         near_miss_distance=welded.near_distance,
+        holes=_holes(w.rims),
     )
 
 

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray
-from trinormal.mesh.topology import _components, _HalfEdges
+from trinormal.mesh.topology import _HalfEdges, _Rims
 
 __all__ = ["CAP_FRACTION"]
 
@@ -143,43 +143,40 @@ def _capped(
     scale: FloatArray,
     ref: FloatArray,
     rounding: int,
+    rims: _Rims,
 ) -> _Capped:
     """Close each ``candidate`` piece over its holes and measure it (see the module docstring).
 
     ``ref`` (C, 3) is each piece's reference point (unscaled), ``rounding`` the volume
-    rounding allowance of `trinormal.mesh.repair`.
+    rounding allowance of `trinormal.mesh.repair`, ``rims`` the loops of ``he``.
     """
     nc = candidate.size
     zero = np.zeros(nc)
     if not candidate.any():
         return _Capped(np.zeros(nc, dtype=bool), zero, zero)
     f = he.faces
-    nv = v.shape[0]
     faces = np.flatnonzero((comp >= 0) & candidate[np.maximum(comp, 0)])
     c = comp[faces]
     s = scale[c][:, None]
     r = ref[c] / s
-    p, q, t = (v[f[faces, k]] / s - r for k in range(3))
+    p, q, t = (np.take(v, f[faces, k], axis=0) / s - r for k in range(3))
     det = _det_rows(p, q, t)
     sign = np.where(flip[faces], -1.0, 1.0)
     size = _norm_rows(p) * _norm_rows(q) * _norm_rows(t)
     area = _norm_rows(_cross_rows(q - p, t - p))
 
-    # the rims: boundary half-edges of the candidate pieces, in half-edge order
-    h = np.sort(he.order[he.starts[he.counts == 1]].astype(np.intp))
-    h = h[candidate[comp[h // 3]]]
-    hc = comp[h // 3]
+    # each loop's centre: the mean of its corners (every loop's; the candidates' are used)
+    ns = scale[rims.node_piece][:, None]
+    coords = v[rims.node_vertex] / ns - ref[rims.node_piece] / ns
+    count = np.bincount(rims.loop)
+    centre = np.stack(
+        [np.bincount(rims.loop, weights=coords[:, k]) / count for k in range(3)], axis=1
+    )
+    # the rim edges of the candidate pieces, in half-edge order
+    on = candidate[rims.piece]
+    h, hc = rims.half_edges[on], rims.piece[on]
     a, b = he.start(h), he.end(h)
-    # a loop: rim edges of one piece joined end to end; its centre, the mean of its corners
-    ka, kb = hc.astype(np.int64) * nv + a, hc.astype(np.int64) * nv + b
-    nodes, inv = np.unique(np.concatenate([ka, kb]), return_inverse=True)
-    loop = _components(nodes.size, inv[: h.size], inv[h.size :])
-    node_piece = nodes // nv
-    ns = scale[node_piece][:, None]
-    coords = v[nodes % nv] / ns - ref[node_piece] / ns
-    count = np.bincount(loop)
-    centre = np.stack([np.bincount(loop, weights=coords[:, k]) / count for k in range(3)], axis=1)
-    m = centre[loop[inv[: h.size]]]
+    m = centre[rims.loop[rims.start[on]]]
     hs = scale[hc][:, None]
     pa = v[a] / hs - ref[hc] / hs
     pb = v[b] / hs - ref[hc] / hs

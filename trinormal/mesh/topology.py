@@ -42,7 +42,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from trinormal.mesh._arrays import BoolArray, IntArray, _check_faces
+from trinormal.mesh._arrays import BoolArray, IntArray, _check_faces, _packed_sort
 
 __all__ = [
     "boundary_edges",
@@ -58,25 +58,36 @@ __all__ = [
 def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
     """Label the connected pieces of the graph on nodes ``0..n-1`` with edges ``a[i]–b[i]``.
 
-    Labels are 0, 1, 2, … in the order of each piece's smallest node. Pure
-    numpy, in rounds: every root is hooked to the smallest root it touches;
-    the roots just hooked follow their chains (each step halves them), and
-    then every node, which pointed at a root, takes that root's root; edges
-    inside one piece are dropped. A handful of rounds on a mesh.
+    Labels are 0, 1, 2, … in the order of each piece's smallest node (`_roots`).
     """
-    # node numbers in 4 bytes when they fit: half the memory, the same labels
+    root = _roots(n, a, b)
+    is_root = root == np.arange(n)
+    out: IntArray = (np.cumsum(is_root) - 1)[root].astype(np.intp)
+    return out
+
+
+def _roots(n: int, a: IntArray, b: IntArray) -> npt.NDArray[Any]:
+    """Return each node's root, the smallest node of its piece (int32 when n < 2**31).
+
+    Pure numpy, in rounds: every root is hooked to the smallest root it touches;
+    the roots just hooked follow their chains (each step halves them), and then
+    every node, which pointed at a root, takes that root's root; edges inside one
+    piece are dropped. A handful of rounds on a mesh.
+    """
+    # node numbers in 4 bytes when they fit: half the memory, the same roots
     node = np.int32 if n < 2**31 else np.intp
     parent = np.arange(n, dtype=node)
-    a = np.asarray(a).astype(node, copy=False)
-    b = np.asarray(b).astype(node, copy=False)
-    ra, rb = a, b  # the roots of each edge's ends: at first every node is its own
+    # each edge as the roots of its two ends (at first every node is its own): an edge
+    # between two roots joins what the edge between their members joins
+    ra = np.asarray(a).astype(node, copy=False)
+    rb = np.asarray(b).astype(node, copy=False)
     hooked_mask = np.zeros(n, dtype=bool)
-    while a.size:
+    while ra.size:
         differ = ra != rb
         if not differ.all():
             if not differ.any():
                 break
-            a, b, ra, rb = a[differ], b[differ], ra[differ], rb[differ]
+            ra, rb = ra[differ], rb[differ]
         high = np.maximum(ra, rb)
         np.minimum.at(parent, high, np.minimum(ra, rb))  # labels only decrease: no cycles
         hooked_mask[high] = True
@@ -89,11 +100,8 @@ def _components(n: int, a: IntArray, b: IntArray) -> IntArray:
                 break
             parent[hooked] = top = up
         parent = parent[parent]
-        ra, rb = parent[a], parent[b]
-    # every root is the smallest node of its piece: number the roots in order
-    is_root = parent == np.arange(n)
-    out: IntArray = (np.cumsum(is_root) - 1)[parent].astype(np.intp)
-    return out
+        ra, rb = parent[ra], parent[rb]
+    return parent
 
 
 def _distinct_corners(f: IntArray) -> BoolArray:
@@ -104,8 +112,11 @@ def _distinct_corners(f: IntArray) -> BoolArray:
 
 def _next_corner(h: IntArray) -> IntArray:
     """Return the next corner of the same face: half-edge ``h`` arrives at its vertex."""
-    out: IntArray = h + 1
-    out[h % 3 == 2] -= 3
+    # h + 1, less 3 where h + 1 starts the next face: there (h + 1) // 3 is one more than
+    # h // 3 (division by a constant is fast in numpy, the remainder and a masked update
+    # are not)
+    up = h + 1
+    out: IntArray = up - 3 * (up // 3 - h // 3)
     return out
 
 
@@ -142,12 +153,18 @@ class _HalfEdges:
         del a, b
         nv = int(hi.max()) + 1 if hi.size else 0
         new = np.ones(h.size, dtype=bool)
-        # one packed key per edge, unless it would overflow: then sort on both columns
+        # one number per edge, unless it would overflow: then sort on both columns
         if nv < 2**31:
             key = lo * nv + hi
             del lo, hi
-            order = np.argsort(key)
-            key = key[order]
+            # the key and the index in one number when they fit (the order of an edge's
+            # walks does not matter: ties are by index there, in any order here)
+            done = _packed_sort(key, nv * nv)
+            if done is None:
+                order = np.argsort(key)
+                key = key[order]
+            else:
+                order, key = done
             if order.size:
                 np.not_equal(key[1:], key[:-1], out=new[1:])
             del key
@@ -213,10 +230,37 @@ class _HalfEdges:
         label[kept] = _components(kept.size, index[h1 // 3], index[h2 // 3])
         return label
 
-    def corner_at(self, h: IntArray, vertex: IntArray) -> IntArray:
-        """Return the corner (3 · face + position) of half-edge ``h``'s face at ``vertex``."""
-        out: IntArray = np.where(self.start(h) == vertex, h, _next_corner(h))
-        return out
+
+@dataclass(frozen=True)
+class _Rims:
+    """The rims of the holes: the boundary half-edges joined end to end, piece by piece.
+
+    ``half_edges`` (B,) are the boundary half-edges in increasing order, ``piece`` (B,)
+    their pieces. The rims' corners, one per piece and vertex, ordered by piece then
+    vertex, are ``node_piece`` and ``node_vertex`` (N,); ``start`` (B,) is the corner
+    each half-edge leaves from, and ``loop`` (N,) each corner's loop: the rim edges of
+    one piece that join end to end (`trinormal.mesh.shells` caps each loop,
+    `trinormal.mesh.printing` counts the holes).
+    """
+
+    half_edges: IntArray
+    piece: IntArray
+    start: IntArray
+    node_piece: IntArray
+    node_vertex: IntArray
+    loop: IntArray
+
+
+def _rims(he: _HalfEdges) -> _Rims:
+    """Join the boundary half-edges of ``he`` into loops, piece by piece (`_Rims`)."""
+    h = np.sort(he.order[he.starts[he.counts == 1]].astype(np.intp))
+    piece = he.face_components[h // 3]
+    a, b = he.start(h), he.end(h)
+    nv = int(max(a.max(), b.max())) + 1 if h.size else 1
+    key = piece.astype(np.int64) * nv
+    nodes, inv = np.unique(np.concatenate([key + a, key + b]), return_inverse=True)
+    loop = _components(nodes.size, inv[: h.size], inv[h.size :])
+    return _Rims(h, piece, inv[: h.size], nodes // nv, nodes % nv, loop)
 
 
 def _half_edges(faces: npt.ArrayLike) -> _HalfEdges:
@@ -285,29 +329,26 @@ def _non_manifold_edges(he: _HalfEdges) -> IntArray:
     return he.edge_vertices(np.flatnonzero(he.counts >= 3))
 
 
-def _fans(he: _HalfEdges) -> tuple[IntArray, IntArray]:
-    """Every vertex used by a face with three distinct vertices, and its number of fans."""
+def _fans(he: _HalfEdges) -> IntArray:
+    """Return the vertex of each fan: a vertex with two fans or more is listed as often."""
     h1, h2 = he.shared_pairs
-    a, b = he.start(h1), he.end(h1)
-    kept = np.repeat(he.clean, 3)
-    n_kept = int(np.count_nonzero(kept))
-    # numbered among the corners kept: as they are when no face uses a vertex twice
-    every = n_kept == he.faces.size
-    index = None if every else _renumber(np.flatnonzero(kept), he.faces.size)
-    # the two faces meet at both ends of the edge: join their corners there
-    ends = []
-    for h in (h1, h2):
-        c = np.concatenate([he.corner_at(h, a), he.corner_at(h, b)])
-        ends.append(c if index is None else index[c])
-    del a, b, index
-    fan = _components(n_kept, ends[0], ends[1])
-    del ends
-    vertex = he.faces.ravel() if every else he.faces.ravel()[kept]
-    # a fan lies around one vertex: count the fans of each vertex
-    fan_vertex = np.empty(int(fan.max()) + 1 if fan.size else 0, dtype=np.intp)
-    fan_vertex[fan] = vertex
-    verts, counts = np.unique(fan_vertex, return_counts=True)
-    return verts.astype(np.intp), counts
+    # the two faces meet at both ends a and b of the edge h1 walks: join their corners there.
+    # h1's corner at a is its own, at b the next; h2's are the same if it walks a → b too,
+    # swapped if it walks b → a
+    along = he.start(h2) == he.start(h1)
+    next1, next2 = _next_corner(h1), _next_corner(h2)
+    root = _roots(
+        he.faces.size,
+        np.concatenate([h1, next1]),
+        np.concatenate([np.where(along, h2, next2), np.where(along, next2, h2)]),
+    )
+    del along, next1, next2
+    # a fan lies around one vertex and has one root, its smallest corner; the corners of
+    # a face that uses a vertex twice are in no fan
+    is_root = root == np.arange(root.size)
+    is_root &= np.repeat(he.clean, 3)
+    out: IntArray = he.faces.ravel()[is_root]
+    return out
 
 
 def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
@@ -340,9 +381,10 @@ def non_manifold_vertices(faces: npt.ArrayLike) -> IntArray:
 
 
 def _non_manifold_vertices(he: _HalfEdges) -> IntArray:
-    verts, fans = _fans(he)
-    out: IntArray = verts[fans > 1]
-    return out
+    # sorted, not counted in an array as long as the largest index: indices may be huge
+    fan_vertex = np.sort(_fans(he))
+    twice = fan_vertex[1:][fan_vertex[1:] == fan_vertex[:-1]]
+    return np.unique(twice).astype(np.intp)
 
 
 def connected_components(faces: npt.ArrayLike) -> IntArray:
@@ -403,23 +445,32 @@ def duplicate_faces(faces: npt.ArrayLike) -> tuple[IntArray, IntArray]:
 
 def _duplicates(f: IntArray) -> tuple[IntArray, IntArray]:
     clean = np.flatnonzero(_distinct_corners(f))
-    s = np.sort(f[clean], axis=1)
-    fc = f[clean]
-    even = (
-        (fc[:, 0] < fc[:, 1]).astype(np.int8) + (fc[:, 1] < fc[:, 2]) + (fc[:, 2] < fc[:, 0])
-    ) == 2
-    top = int(s[:, 2].max()) + 1 if s.size else 0
+    fc = np.take(f, clean, axis=0)
+    a, b, c = fc[:, 0], fc[:, 1], fc[:, 2]
+    even = ((a < b).astype(np.int8) + (b < c) + (c < a)) == 2
+    # the three vertices in increasing order: s0 <= s1 <= s2
+    s0, s2 = np.minimum(a, b), np.maximum(a, b)
+    s1 = np.maximum(s0, np.minimum(s2, c))
+    np.minimum(s0, c, out=s0)
+    np.maximum(s2, c, out=s2)
+    del fc, a, b, c
+    top = int(s2.max()) + 1 if s2.size else 0
+    same_key = np.zeros(clean.size, dtype=bool)
+    same_side = np.zeros(clean.size, dtype=bool)
     if top <= 2**20:  # the three vertices and the winding packed in one 61-bit key
-        key = ((s[:, 0] * top + s[:, 1]) * top + s[:, 2]) * 2 + even
+        key = ((s0 * top + s1) * top + s2) * 2 + even
+        del s0, s1, s2
         order = np.argsort(key, kind="stable")  # stable: file order within a key
+        key = key[order]
+        np.equal(key[1:] >> 1, key[:-1] >> 1, out=same_key[1:])
+        np.equal(key[1:], key[:-1], out=same_side[1:])
+        del key
     else:
-        order = np.lexsort((clean, even, s[:, 2], s[:, 1], s[:, 0]))
-    s, even, idx = s[order], even[order], clean[order]
-    same_key = np.zeros(idx.size, dtype=bool)
-    if idx.size:
-        same_key[1:] = (s[1:] == s[:-1]).all(axis=1)
-    same_side = same_key.copy()
-    same_side[1:] &= even[1:] == even[:-1]
+        order = np.lexsort((clean, even, s2, s1, s0))
+        s0, s1, s2, even = s0[order], s1[order], s2[order], even[order]
+        same_key[1:] = (s0[1:] == s0[:-1]) & (s1[1:] == s1[:-1]) & (s2[1:] == s2[:-1])
+        same_side[1:] = same_key[1:] & (even[1:] == even[:-1])
+    idx = clean[order]
     same = np.sort(idx[same_side])
     # the first face of its winding is reversed when the group began earlier (other winding)
     key_start = np.flatnonzero(~same_key)

@@ -46,7 +46,7 @@ from typing import Any
 
 import numpy as np
 
-from trinormal.mesh._arrays import FloatArray, IntArray
+from trinormal.mesh._arrays import _MIX, FloatArray, IntArray, _grouped
 from trinormal.mesh.topology import _components, _HalfEdges
 
 __all__ = ["WELD_AUTO", "WELD_MAX", "WELD_NEAR", "Weld", "model_size", "weld"]
@@ -68,9 +68,6 @@ WELD_NEAR: float = 1e-4
 #: The largest weld distance that may be asked for, times the model's size: merging
 #: farther apart closes real holes and collapses small faces.
 WELD_MAX: float = 1e-2
-
-# multipliers of a 64-bit hash of a row's three coordinates (odd, well mixed)
-_HASH = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9)
 
 
 @dataclass(frozen=True)
@@ -97,6 +94,9 @@ class Weld:
         ``near_distance`` were merged (0: no near miss).
     near_distance : float or None
         The distance to weld at to close them: 1, 2 or 5 times a power of ten.
+    exact : ndarray of int, shape (V,), or None
+        Each vertex's smallest index at exactly its position; None when no two vertices
+        share a position.
     """
 
     faces: IntArray
@@ -107,6 +107,7 @@ class Weld:
     half_edges: _HalfEdges = field(repr=False)
     near_edges: int = 0
     near_distance: float | None = None
+    exact: IntArray | None = field(default=None, repr=False)
 
 
 def model_size(v: FloatArray, f: IntArray) -> float:
@@ -126,45 +127,23 @@ def model_size(v: FloatArray, f: IntArray) -> float:
     return float((p.max(axis=0) - p.min(axis=0)).max())
 
 
-def _row_hash(v: FloatArray) -> Any:
-    bits = np.ascontiguousarray(v + 0.0).view(np.uint64)  # + 0.0: -0.0 is 0.0
-    h = bits[:, 0] * np.uint64(_HASH[0])
-    h ^= bits[:, 1] * np.uint64(_HASH[1])
-    h ^= bits[:, 2] * np.uint64(_HASH[2])
-    return h
-
-
 def _exact_representatives(v: FloatArray) -> IntArray | None:
     """Each vertex's smallest index at exactly its position; None when every position is unique.
 
-    The rows are sorted by a hash of their coordinates; only rows that share a hash with
-    another are compared, coordinate by coordinate.
+    Equal rows are found by their bit patterns (`_grouped`), ``-0.0`` written ``0.0``.
     """
     n = v.shape[0]
     if n < 2:
         return None
-    h = _row_hash(v)
-    order = np.argsort(h)
-    hs = h[order]
-    del h
-    dup = hs[1:] == hs[:-1]
-    if not dup.any():
+    order, same = _grouped(np.ascontiguousarray(v + 0.0).view(np.uint64))
+    if not same.any():
         return None
-    in_run = np.zeros(n, dtype=bool)
-    in_run[1:] = dup
-    in_run[:-1] |= dup
-    cand = np.sort(order[in_run])
-    del order, hs, in_run
-    sub = v[cand] + 0.0
-    o = np.lexsort((sub[:, 2], sub[:, 1], sub[:, 0]))  # stable: equal rows by index
-    s = sub[o]
-    new = np.ones(cand.size, dtype=bool)
-    new[1:] = (s[1:] != s[:-1]).any(axis=1)
-    if new.all():
-        return None
-    ordered = cand[o]
-    rep = np.arange(n, dtype=np.intp)
-    rep[ordered] = ordered[new][np.cumsum(new) - 1]
+    # each group is sorted by index: its first row is its smallest index
+    start = np.arange(n)
+    start[1:][same] = 0
+    np.maximum.accumulate(start, out=start)
+    rep = np.empty(n, dtype=np.intp)
+    rep[order] = order[start]
     return rep
 
 
@@ -208,9 +187,9 @@ def _close_pairs(p: FloatArray, dist: float) -> tuple[IntArray, IntArray, FloatA
 
 def _cell_hash(cell: IntArray) -> Any:
     c = cell.astype(np.uint64)
-    out = c[:, 0] * np.uint64(_HASH[0])
-    out ^= c[:, 1] * np.uint64(_HASH[1])
-    out ^= c[:, 2] * np.uint64(_HASH[2])
+    out = c[:, 0] * np.uint64(_MIX[0])
+    out ^= c[:, 1] * np.uint64(_MIX[1])
+    out ^= c[:, 2] * np.uint64(_MIX[2])
     return out
 
 
@@ -344,4 +323,4 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
                     near_edges, near_dist = 0, None
     merged = 0 if exact is None else int(np.count_nonzero(exact != np.arange(v.shape[0])))
     welded = int(np.count_nonzero(rep != np.arange(v.shape[0]))) - merged
-    return Weld(wf, merged, welded, dist, size, he, near_edges, near_dist)
+    return Weld(wf, merged, welded, dist, size, he, near_edges, near_dist, exact)

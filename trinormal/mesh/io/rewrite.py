@@ -41,14 +41,19 @@ def _turned_polygons(m: MeshData, faces: IntArray) -> IntArray:
             f"write_mesh of a read model takes its {m.faces.shape[0]} triangles, "
             f"some turned over; got {faces.shape[0]}"
         )
-    f, g = faces, m.faces  # columns compared one at a time: a (F, 3) .any(axis=1) is slow
-    changed = np.flatnonzero((f[:, 0] != g[:, 0]) | (f[:, 1] != g[:, 1]) | (f[:, 2] != g[:, 2]))
-    old, new = g[changed], f[changed]
-    odd = np.zeros(changed.size, dtype=bool)
-    for i, j, c in ((0, 2, 1), (2, 1, 0), (1, 0, 2)):
-        odd |= (new[:, 0] == old[:, i]) & (new[:, 1] == old[:, j]) & (new[:, 2] == old[:, c])
-    if not odd.all():
-        row = int(changed[np.flatnonzero(~odd)[0]])
+    # columns compared one at a time, on every face: a (F, 3) .any(axis=1) is slow, and so
+    # are the rows of the changed faces gathered
+    f0, f1, f2 = faces[:, 0], faces[:, 1], faces[:, 2]
+    g0, g1, g2 = m.faces[:, 0], m.faces[:, 1], m.faces[:, 2]
+    first_same = f0 == g0
+    changed = np.flatnonzero(~first_same | (f1 != g1) | (f2 != g2))
+    # turned over: the corners in an odd order, (a, c, b), (c, b, a) or (b, a, c)
+    odd = first_same & (f1 == g2) & (f2 == g1)
+    odd |= (f0 == g2) & (f1 == g1) & (f2 == g0)
+    odd |= (f0 == g1) & (f1 == g0) & (f2 == g2)
+    wrong = changed[~odd[changed]]
+    if wrong.size:
+        row = int(wrong[0])
         raise ValueError(
             f"write_mesh of a read model only turns faces over: triangle {row} is "
             f"{faces[row].tolist()}, not {m.faces[row].tolist()} turned over"
@@ -180,14 +185,11 @@ def _stl_records(m: MeshData, faces: IntArray, turned: IntArray) -> bytearray:
     buf = bytearray(84 + 50 * nf + len(m.source) - 84)
     buf[:84] = m.source[:84]
     buf[84 + 50 * nf :] = m.source[84:]
-    rec = np.frombuffer(
-        buf, dtype=[("n", "<f4", (3,)), ("c", "<f4", (3, 3)), ("a", "V2")], count=nf, offset=84
-    )
-    rec["n"], rec["a"] = m.stl_records["normal"], m.stl_records["attr"]
-    for k in range(3):
-        rec["c"][:, k] = m.vertices[faces[:, k]]
     raw = np.frombuffer(buf, dtype=_STL_RAW, count=nf, offset=84)
-    raw["n"][turned] = face_normals(m.vertices, faces[turned]).astype(np.float32)
+    raw["n"], raw["x"] = m.stl_records["normal"], m.stl_records["attr"]
+    corners = m.vertices.astype(np.float32).view("V12").reshape(-1)  # a corner's 12 bytes
+    raw["a"], raw["b"], raw["c"] = (corners[faces[:, k]] for k in range(3))
+    raw["n"][turned] = face_normals(m.vertices, np.take(faces, turned, axis=0)).astype(np.float32)
     return buf
 
 

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from trinormal.mesh._arrays import FloatArray, IntArray
+from trinormal.mesh._arrays import FloatArray, IntArray, _grouped
 from trinormal.mesh.io.errors import READ_NOTES, MeshFileError, _number, _show, _text
 from trinormal.mesh.io.mesh_data import MeshData
 from trinormal.mesh.io.stored import _stl_dots
@@ -38,12 +38,11 @@ def _read_stl(data: bytes, name: str) -> MeshData:
             n, notes = _records_in(data, n, name)
         if len(data) == 84 + 50 * n or notes:  # binary, even when its header starts with "solid"
             rec = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)
-            finite = np.isfinite(rec["corners"]).all(axis=(1, 2))
-            if not finite.all():
-                bad = int(np.flatnonzero(~finite)[0])
-                raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
             # float32, as stored: merged before widening
             corners = rec["corners"].reshape(-1, 3)
+            if not np.isfinite(corners).all():
+                bad = int(np.flatnonzero(~np.isfinite(corners).all(axis=1))[0]) // 3
+                raise MeshFileError.of(name, "stl_not_finite", triangle=bad + 1)
             merged = _merge_corners(corners, name, "binary")
             return replace(merged, notes=notes, **_kept(data, rec, corners))
     if not _looks_like_text(data):
@@ -146,10 +145,6 @@ def _read_stl_ascii(data: bytes, name: str) -> MeshData:
     return replace(_merge_corners(arr, name, "ascii"), source=data)
 
 
-#: Odd 64-bit multipliers that mix a corner's three bit patterns into one sort key.
-_MIX = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9)
-
-
 def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
     """Corners with exactly equal coordinates become one vertex, numbered by first use.
 
@@ -166,43 +161,24 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
     bits: npt.NDArray[np.unsignedinteger[Any]] = corners.view(
         np.uint32 if corners.dtype == np.float32 else np.uint64
     )
-    # sort by a mix of the three bit patterns; equal rows get equal keys, and the rows
-    # themselves are compared after the sort, so equality is exact, never a hash match
-    mx, my, mz = (np.uint64(m) for m in _MIX)
-    with np.errstate(over="ignore"):
-        key = bits[:, 0] * mx
-        key ^= bits[:, 1] * my
-        key ^= bits[:, 2] * mz
-    order = np.argsort(key)
-    key = key[order]
-    same_row = _same_as_previous(np.take(bits, order, axis=0))
-    if ((key[1:] == key[:-1]) & ~same_row).any():  # two different points share a key: sort rows
-        order = np.lexsort((bits[:, 2], bits[:, 1], bits[:, 0]))
-        same_row = _same_as_previous(np.take(bits, order, axis=0))
-    del key
-    new = np.empty(n, dtype=bool)
+    order, same = _grouped(bits)
+    new = np.empty(n, dtype=bool)  # the first corner of each point, in sorted order
     new[0] = True
-    np.logical_not(same_row, out=new[1:])
-    group = np.cumsum(new) - 1  # group of each sorted corner
-    first = np.minimum.reduceat(order, np.flatnonzero(new))  # each group's first in file order
-    rank = np.empty(first.size, dtype=np.intp)
-    rank[np.argsort(first)] = np.arange(first.size)
+    np.logical_not(same, out=new[1:])
+    del same
+    starts = np.flatnonzero(new)
+    first = order[starts]  # each point's first corner in the file (the groups are by index)
+    del new
+    is_first = np.zeros(n, dtype=bool)
+    is_first[first] = True
+    number = np.cumsum(is_first) - 1  # vertices numbered in the order of their first use
     index = np.empty(n, dtype=np.intp)
-    index[order] = rank[group]
-    vertices = np.empty((first.size, 3))
-    vertices[rank] = corners[first]
+    index[order] = np.repeat(number[first], np.diff(np.append(starts, n)))
+    vertices = corners[is_first].astype(np.float64)
     faces = index.reshape(-1, 3)
     nf = faces.shape[0]
     source = np.arange(nf, dtype=np.intp)
     return MeshData(vertices, faces, "stl", encoding, source, nf, name)
-
-
-def _same_as_previous(rows: npt.NDArray[np.unsignedinteger[Any]]) -> npt.NDArray[np.bool_]:
-    """Whether each row of a (n, 3) array equals the row before it, for rows 1 to n - 1."""
-    same: npt.NDArray[np.bool_] = rows[1:, 0] == rows[:-1, 0]
-    same &= rows[1:, 1] == rows[:-1, 1]
-    same &= rows[1:, 2] == rows[:-1, 2]
-    return same
 
 
 def _encode_stl(v: FloatArray, f: IntArray, enc: str) -> bytes | bytearray:
