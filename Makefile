@@ -36,7 +36,7 @@ SYNC := sh scripts/sync-env.sh $(UV)
 PY := $(if $(PYTHON_EXE),$(PYTHON_EXE),$(PYTHON))
 TIMED = $(PY) scripts/stages.py run $@ --
 
-.PHONY: env lab lab-env test test-stages lint types unit notebooks nbval docs docs-build browser bench js clean
+.PHONY: env lab lab-env test test-stages types-and-site lint types unit notebooks nbval docs docs-build browser bench js clean
 
 .tools/bin/uv:
 	$(PYTHON) -m venv .tools
@@ -74,7 +74,12 @@ test:
 	@$(PY) scripts/stages.py reset
 	@$(MAKE) --no-print-directory test-stages; status=$$?; $(PY) scripts/stages.py report; exit $$status
 
-test-stages: env lint types unit docs-build browser
+# mypy and the site's build each use one core: on two cores they run side by side
+test-stages: env lint types-and-site unit
+	$(BROWSER_TESTS)
+
+types-and-site: env
+	@$(MAKE) --no-print-directory -j2 types docs-build
 
 lint: env
 	$(TIMED) $(RUN) ruff check trinormal tests benchmarks docs scripts
@@ -104,8 +109,10 @@ docs-build: env
 
 # The site docs-build made, never a second build. Two workers; the tests that use the one
 # JupyterLab server (tests/browser/test_*lab*.py) all run on one of them (see its conftest.py).
+BROWSER_TESTS = TRINORMAL_SITE_DIR="$(CURDIR)/site" $(PY) scripts/stages.py run browser -- $(RUN) pytest tests/browser -q -n 2 --dist loadgroup --durations=15
+
 browser: env docs-build
-	TRINORMAL_SITE_DIR="$(CURDIR)/site" $(TIMED) $(RUN) pytest tests/browser -q -n 2 --dist loadgroup --durations=15
+	$(BROWSER_TESTS)
 
 ## bench: the performance figures, each against a peer measured in the same run
 bench: env

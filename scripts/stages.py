@@ -2,8 +2,9 @@
 
 ``python scripts/stages.py run NAME -- COMMAND...`` runs COMMAND, adds its wall time to
 NAME in ``.cache/stage-times.tsv`` (``TRINORMAL_STAGE_TIMES`` names another file) and exits
-with COMMAND's status; ``reset`` empties that file; ``report`` prints one line per stage and
-the total. Standard library only: it runs before ``.venv`` exists.
+with COMMAND's status; ``reset`` empties that file and notes the time; ``report`` prints one
+line per stage and the wall-clock time since ``reset`` (stages may run side by side, so it
+can be less than their sum). Standard library only: it runs before ``.venv`` exists.
 """
 
 from __future__ import annotations
@@ -18,6 +19,10 @@ TIMES = Path(
     os.environ.get("TRINORMAL_STAGE_TIMES")
     or Path(__file__).resolve().parents[1] / ".cache" / "stage-times.tsv"
 )
+
+
+#: The line ``reset`` writes: when the run started (seconds since the epoch), for the total.
+_START = "started"
 
 
 def run(name: str, command: list[str]) -> int:
@@ -40,12 +45,16 @@ def report() -> None:
         print("stage times: none recorded")
         return
     stages: dict[str, list[float]] = {}
+    started = None
     for line in TIMES.read_text(encoding="utf-8").splitlines():
         name, seconds, status = line.split("\t")
+        if name == _START:
+            started = float(seconds)
+            continue
         entry = stages.setdefault(name, [0.0, 0.0])
         entry[0] += float(seconds)
         entry[1] = max(entry[1], float(status != "0"))
-    total = sum(s for s, _ in stages.values())
+    total = sum(s for s, _ in stages.values()) if started is None else time.time() - started
     print("\nmake test: time per stage")
     for stage, (spent, failed) in stages.items():
         print(f"  {stage:<12} {spent:7.1f} s{'  FAILED' if failed else ''}")
@@ -57,7 +66,8 @@ def main(argv: list[str]) -> int:
     if argv[:1] == ["run"] and len(argv) >= 4 and argv[2] == "--":
         return run(argv[1], argv[3:])
     if argv == ["reset"]:
-        TIMES.unlink(missing_ok=True)
+        TIMES.parent.mkdir(parents=True, exist_ok=True)
+        TIMES.write_text(f"{_START}\t{time.time()}\t0\n", encoding="utf-8")
         return 0
     if argv == ["report"]:
         report()

@@ -34,4 +34,5 @@ def test_stage_times_are_recorded_and_reported_with_the_failures(tmp_path: Path)
     browser = lines[2].split()
     assert float(browser[1]) >= 0.3 and browser[-1] == "FAILED"
     assert "FAILED" not in lines[1]
+    assert float(lines[3].split()[1]) >= 0.3  # the wall clock since reset
     assert stages("bogus").returncode == 2

@@ -94,18 +94,22 @@ def _cavities(
         none: BoolArray = np.zeros(nc, dtype=bool)
         return none
     kept = np.flatnonzero(comp >= 0)
-    lo = np.full((nc, 3), np.inf)
-    hi = np.full((nc, 3), -np.inf)
-    for k in range(3):
-        np.minimum.at(lo, comp[kept], v[f[kept, k]])
-        np.maximum.at(hi, comp[kept], v[f[kept, k]])
-    first = np.full(nc, f.shape[0], dtype=np.intp)
-    np.minimum.at(first, comp[kept], kept)
     by_piece = np.argsort(comp[kept], kind="stable")
     bounds = np.searchsorted(comp[kept][by_piece], np.arange(nc + 1))
+    # every piece has a face: its faces are one run of the sorted order, lowest index first
+    order = kept[by_piece]
+    first = order[bounds[:-1]]
+    lo = np.full((nc, 3), np.inf)
+    hi = np.full((nc, 3), -np.inf)
+    for k in range(3):  # each piece's box, corner by corner, over its run of faces
+        corners = np.take(v, f[order, k], axis=0)
+        lo = np.minimum(lo, np.minimum.reduceat(corners, bounds[:-1], axis=0))
+        hi = np.maximum(hi, np.maximum.reduceat(corners, bounds[:-1], axis=0))
     for a in which.tolist():
-        for b in which.tolist():
-            if a == b or not ((lo[b] <= lo[a]).all() and (hi[a] <= hi[b]).all()):
+        # the pieces whose boxes hold a's box: the only ones a can lie inside
+        holds = (lo[which] <= lo[a]).all(axis=1) & (hi[a] <= hi[which]).all(axis=1)
+        for b in which[holds].tolist():
+            if a == b:
                 continue
             s = max(float(scale[a]), float(scale[b]))
             corner = v[f[first[a]]] / s
