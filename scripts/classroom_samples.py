@@ -11,7 +11,6 @@ change (tests/test_classroom.py fails when the committed sample report is stale)
 
 from __future__ import annotations
 
-import io
 import sys
 import tempfile
 from pathlib import Path
@@ -20,6 +19,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests" / "browser"))
 
 from browser_support import CHROMIUM, CHROMIUM_ARGS  # type: ignore[import-not-found]  # noqa: E402
+from explorer_screenshot import save_in_64_colours  # noqa: E402  (scripts/, this script's folder)
 
 from trinormal.notebooks import main  # noqa: E402
 from trinormal.notebooks.sample import SAMPLE_ROSTER, SAMPLE_TIMEOUT, write_sample_class  # noqa: E402
@@ -30,7 +30,6 @@ IMAGES = ROOT / "docs" / "assets" / "images"
 
 def _photograph(page_file: Path, png: Path, height: int) -> None:
     """Save the top ``height`` CSS pixels of a page, 800 wide, drawn at 1.5x, in 64 colours."""
-    from PIL import Image
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
@@ -43,9 +42,7 @@ def _photograph(page_file: Path, png: Path, height: int) -> None:
             shot = page.screenshot()
         finally:
             browser.close()
-    image = Image.open(io.BytesIO(shot)).convert("RGB")
-    image.quantize(colors=64, method=Image.Quantize.MEDIANCUT).save(png, optimize=True)
-    print(f"{png.relative_to(ROOT)}: {image.width} x {image.height} pixels")
+    save_in_64_colours(shot, png)
 
 
 def main_samples() -> None:

@@ -26,9 +26,17 @@ OUT = ROOT / "docs" / "assets" / "images" / "explorer-3d.png"
 QUERY = "?a=0,0,0&b=2,0,0&c=0,1,1&w=ABC&p=4"
 
 
+def save_in_64_colours(shot: bytes, path: Path) -> None:
+    """Save a browser's screenshot (PNG bytes) in 64 colours, as the docs' pictures are kept."""
+    from PIL import Image
+
+    image = Image.open(io.BytesIO(shot)).convert("RGB")
+    image.quantize(colors=64, method=Image.Quantize.MEDIANCUT).save(path, optimize=True)
+    print(f"{path.relative_to(ROOT)}: {image.width} x {image.height} pixels")
+
+
 def main() -> None:
     """Render the calculator's live 3D view in Chromium and save it as the home page picture."""
-    from PIL import Image
     from playwright.sync_api import sync_playwright
 
     with serve_site(ROOT / "site") as url, sync_playwright() as p:
@@ -44,9 +52,7 @@ def main() -> None:
             png = view.screenshot()
         finally:
             browser.close()
-    image = Image.open(io.BytesIO(png)).convert("RGB")
-    image.quantize(colors=64, method=Image.Quantize.MEDIANCUT).save(OUT, optimize=True)
-    print(f"{OUT.relative_to(ROOT)}: {image.width} x {image.height} pixels")
+    save_in_64_colours(png, OUT)
 
 
 if __name__ == "__main__":
