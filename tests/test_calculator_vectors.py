@@ -10,11 +10,11 @@ drift apart.
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
+from node_runs import node_path
 from reference import DATA, vector_generator
 
 from trinormal import triangle_normal
@@ -113,8 +113,7 @@ console.log(JSON.stringify(out));
 
 
 def test_the_site_core_in_node_agrees_with_every_vector(tmp_path):
-    node = shutil.which("node")
-    assert node, "`node` is not on PATH: install Node.js to test the site's JavaScript"
+    node = node_path()
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps(trinormal_site.site_constants()), encoding="utf-8")
     core = ROOT / "docs" / "assets" / "javascripts" / "trinormal-core.js"

@@ -11,11 +11,11 @@ from __future__ import annotations
 import json
 import math
 import random
-import shutil
 import subprocess
 from pathlib import Path
 
 import pytest
+from node_runs import node_path
 
 from trinormal import triangle_normal
 from trinormal.explorer import Explorer, view_state
@@ -23,12 +23,6 @@ from trinormal.explorer import describe as rule
 from trinormal.explorer.describe import describe, direction_words, viewer_words
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def _node() -> str:
-    path = shutil.which("node")
-    assert path, "`node` is not on PATH: install Node.js to test the view's JavaScript"
-    return path
 
 
 def _triangles() -> list:
@@ -99,7 +93,7 @@ def test_the_views_words_are_pythons_for_every_triangle_viewer_and_normal(tmp_pa
     corpus = tmp_path / "corpus.json"
     corpus.write_text(json.dumps({"states": states, "normals": normals}), encoding="utf-8")
     run = subprocess.run(
-        [_node(), str(ROOT / "tests" / "describe_parity_check.mjs"), str(corpus)],
+        [node_path(), str(ROOT / "tests" / "describe_parity_check.mjs"), str(corpus)],
         capture_output=True,
         text=True,
         timeout=120,
@@ -160,7 +154,7 @@ def test_listen_pans_by_x_pitches_by_y_and_brightens_by_z(tmp_path):
         "flat: names({ u: [1, 1, 1], v: [2, 2, 2], unit_normal: null }) }));\n",
         encoding="utf-8",
     )
-    run = subprocess.run([_node(), str(script)], capture_output=True, text=True, timeout=60)
+    run = subprocess.run([node_path(), str(script)], capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     out = json.loads(run.stdout)
     right, low, up, down, diagonal, huge, zero = out["tones"]

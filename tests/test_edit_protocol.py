@@ -11,13 +11,13 @@ from code goes through `Explorer.set` or raises.
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 from fractions import Fraction
 from pathlib import Path
 
 import pytest
 import traitlets
+from node_runs import node_path
 from test_explorer import edit
 
 from trinormal import triangle_normal
@@ -120,8 +120,7 @@ def test_a_view_trait_set_from_code_goes_through_set_or_raises():
 
 def test_the_views_edits_follow_the_same_rule():
     # js/explorer/src/edits.js under Node, with a fake model playing a busy kernel
-    node = shutil.which("node")
-    assert node, "`node` is not on PATH: install Node.js to test the view's JavaScript"
+    node = node_path()
     root = Path(__file__).resolve().parents[1]
     run = subprocess.run(
         [node, str(root / "tests" / "edits_check.mjs")], capture_output=True, text=True, check=True

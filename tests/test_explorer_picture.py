@@ -9,11 +9,11 @@ from __future__ import annotations
 
 import io
 import json
-import shutil
 import subprocess
 from pathlib import Path
 from typing import Any
 
+from node_runs import node_path
 from PIL import Image
 
 from trinormal.explorer import Explorer, ExplorerView
@@ -85,8 +85,7 @@ def test_a_message_without_a_png_changes_nothing():
 
 def test_the_view_sends_one_picture_per_settled_change():
     # js/explorer/src/topng.js under Node, with a fake stage and model
-    node = shutil.which("node")
-    assert node, "`node` is not on PATH: install Node.js to test the view's JavaScript"
+    node = node_path()
     check = Path(__file__).with_name("topng_check.mjs")
     out = json.loads(
         subprocess.run([node, str(check)], capture_output=True, text=True, check=True).stdout

@@ -12,13 +12,13 @@ anything differs, down to one byte of the repaired file.
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 from mesh_corpus import corpus, outcome
+from node_runs import assert_port_agrees, node_path
 
 from trinormal.mesh import degenerate_faces, face_normals
 from trinormal.mesh.io import READ_ERRORS
@@ -28,12 +28,6 @@ from trinormal.tolerances import DEFAULT_TOL
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "docs" / "hooks"))
 import trinormal_site  # noqa: E402  (the mkdocs hook, imported as the build imports it)
-
-
-def _node() -> str:
-    path = shutil.which("node")
-    assert path, "`node` is not on PATH: install Node.js to test the site's JavaScript"
-    return path
 
 
 def write_corpus(folder: Path) -> list[dict]:
@@ -92,17 +86,8 @@ def test_the_page_gives_pythons_answer_and_file_for_every_corpus_file(tmp_path):
     assert_every_kind_of_file(manifest)
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps(trinormal_site.site_constants()), encoding="utf-8")
-    run = subprocess.run(
-        [_node(), str(ROOT / "tests" / "mesh_parity_check.js"), str(folder), str(constants)],
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert run.stdout, run.stderr
-    result = json.loads(run.stdout)
-    assert result["checked"] == len(manifest)
-    assert result["mismatches"] == []
-    assert run.returncode == 0, run.stderr
+    checker = ROOT / "tests" / "mesh_parity_check.js"
+    assert_port_agrees(checker, folder, constants, len(manifest), timeout=300)
 
 
 def _faces_near_the_threshold(rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
@@ -156,7 +141,7 @@ def test_the_pages_normals_and_verdicts_are_pythons_bit_for_bit_near_the_thresho
     """
     run = subprocess.run(
         [
-            _node(),
+            node_path(),
             "-e",
             script,
             str(ROOT / "tests" / "mesh_parity_check.js"),

@@ -7,7 +7,6 @@ compared with the arrays and the report, the clicked face's normal with Fraction
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 import sys
 from fractions import Fraction
@@ -15,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from node_runs import node_path
 
 from trinormal import mesh
 from trinormal.display import format_number, format_vector
@@ -180,8 +180,7 @@ def test_set_mesh_shows_the_repair(ball: mesh.MeshData) -> None:
 
 def view_words(*views: MeshView) -> list[str]:
     """The words under each view, as the mesh view's describe.js writes them from its traits."""
-    node = shutil.which("node")
-    assert node, "`node` is not on PATH: install Node.js to test the view's JavaScript"
+    node = node_path()
     facts = [
         {
             "about": v.about,

@@ -12,10 +12,10 @@ every refusal's sentence.
 from __future__ import annotations
 
 import json
-import shutil
-import subprocess
 import sys
 from pathlib import Path
+
+from node_runs import assert_port_agrees
 
 from trinormal.core import triangle_normal
 from trinormal.printmodel import PrintModelError, build
@@ -97,16 +97,5 @@ def test_the_site_makes_pythons_model_byte_for_byte(tmp_path):
     (tmp_path / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps({"print": print_constants()}), encoding="utf-8")
-    node = shutil.which("node")
-    assert node, "`node` is not on PATH: install Node.js to test the site's JavaScript"
-    run = subprocess.run(
-        [node, str(ROOT / "tests" / "printmodel_parity_check.js"), str(tmp_path), str(constants)],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
-    assert run.stdout, run.stderr
-    result = json.loads(run.stdout)
-    assert result["checked"] == len(manifest)
-    assert result["mismatches"] == []
-    assert run.returncode == 0, run.stderr
+    checker = ROOT / "tests" / "printmodel_parity_check.js"
+    assert_port_agrees(checker, tmp_path, constants, len(manifest), timeout=120)

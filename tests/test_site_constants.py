@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
 import string
 import subprocess
 import sys
@@ -21,6 +20,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from node_runs import node_path
 
 from trinormal import tolerances, triangle_normal, validation
 from trinormal.core import VERDICTS
@@ -60,12 +60,6 @@ console.log(JSON.stringify(out));
 """
 
 
-def _node() -> str:
-    path = shutil.which("node")
-    assert path, "`node` is not on PATH: install Node.js to test the site's JavaScript"
-    return path
-
-
 def _on_the_site(tmp_path: Path, calls: list[tuple[str, list[object]]]) -> list[dict]:
     """Build the constants file now, and run ``calls`` in the site's core as a page would."""
     constants = tmp_path / "trinormal-constants.js"
@@ -73,7 +67,7 @@ def _on_the_site(tmp_path: Path, calls: list[tuple[str, list[object]]]) -> list[
     calls_file = tmp_path / "calls.json"
     calls_file.write_text(json.dumps(calls), encoding="utf-8")
     run = subprocess.run(
-        [_node(), "-e", _PAGE_SCRIPT, str(constants), str(CORE_JS), str(calls_file)],
+        [node_path(), "-e", _PAGE_SCRIPT, str(constants), str(CORE_JS), str(calls_file)],
         check=True,
         capture_output=True,
         text=True,
@@ -147,7 +141,7 @@ def test_the_node_core_agrees_with_every_parser_vector(tmp_path):
     constants = tmp_path / "constants.json"
     constants.write_text(json.dumps(trinormal_site.site_constants()), encoding="utf-8")
     run = subprocess.run(
-        [_node(), str(ROOT / "tests" / "parser_vectors_check.js"), str(constants)],
+        [node_path(), str(ROOT / "tests" / "parser_vectors_check.js"), str(constants)],
         capture_output=True,
         text=True,
     )

@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import json
 import math
-import shutil
 import subprocess
 from pathlib import Path
 
 import pytest
+from node_runs import node_path
 
 from trinormal import colors
 from trinormal.plotting.scale import drawn_factor, scaled_label
@@ -58,8 +58,7 @@ def test_notebooks_01_and_03_state_the_one_colour_code() -> None:
 
 
 def _node(script: str, data: object) -> object:
-    node = shutil.which("node")
-    assert node, "`node` is not on PATH: install Node.js to check the 3D view's rules"
+    node = node_path()
     result = subprocess.run(
         [node, "--input-type=module", "-e", script],
         cwd=JS,
