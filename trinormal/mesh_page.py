@@ -123,7 +123,7 @@ MESSAGES: dict[str, str] = {
     # in the tables: a value with no answer, the size, and no enclosed volume
     "no_answer": "—",
     "size_cell": "{x} × {y} × {z}",
-    "no_volume_cell": "none: no piece is closed and wound consistently",
+    "no_volume_cell": "none: only a closed, consistently wound piece has an inside to measure",
     # under the table of pieces
     "pieces_dash": (
         "— : no answer for that piece. Only a piece wound consistently that encloses a "
