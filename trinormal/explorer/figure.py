@@ -10,8 +10,7 @@ components of N and of the unit normal, in the package's one colour code
 view has sent its own picture of the current state.
 
 Only the moving artists are redrawn on an update; the axes, ticks and panes come
-from a cached bitmap of the same figure, so a new PNG costs a fraction of a
-full redraw.
+from a cached bitmap of the same figure.
 """
 
 from __future__ import annotations
@@ -38,7 +37,7 @@ __all__ = ["DPI", "FIGSIZE", "Snapshot"]
 FIGSIZE: tuple[float, float] = (9.0, 4.0)
 DPI = 72
 
-#: zlib level for the PNG: 1 is several times faster than the default and barely larger.
+#: zlib level for the PNG: the fastest, as the picture is made again after every change.
 PNG_COMPRESS_LEVEL = 1
 
 #: How many background bitmaps (one per 3D zoom level and scale of N) to keep.
@@ -163,7 +162,7 @@ class Snapshot:
         figure is drawn in full without its moving artists and each band's
         pixels are kept. After that an update restores the bands and draws only
         the triangle, the arrows, the labels and the bars on top: the same
-        picture as a full redraw, several times faster.
+        picture as a full redraw.
         """
         canvas = self._canvas
         renderer = canvas.get_renderer()
@@ -360,9 +359,8 @@ class Snapshot:
         art["edges"].set_data_3d(*zip(A, B, C, A, strict=True))
 
         # vertex labels pushed a little away from the centre of the triangle
-        centre = _scaled(_add(_add(A, B), C), 1.0 / 3.0)
         for name, point in zip("ABC", (A, B, C), strict=True):
-            away = _sub(point, centre)
+            away = _sub(point, centroid)
             length = _norm(away)
             shift = _scaled(away, 0.06 * span / length) if length > 0 else (0.0, 0.0, 0.05 * span)
             x, y, z = _add(point, shift)
@@ -377,7 +375,7 @@ class Snapshot:
                 spot = _add(start, vec, 1.0 + 0.07 * span / max(_norm(vec), 1e-300))
             else:  # U's and V's beside the middle of the edge, outside the triangle
                 middle = _add(A, vec, 0.5)
-                away = _sub(middle, centre)
+                away = _sub(middle, centroid)
                 length = _norm(away)
                 spot = _add(middle, away, 0.09 * span / length) if length > 0 else middle
             art["tip_" + name].set_data_3d([spot[0]], [spot[1]], [spot[2]])
@@ -421,11 +419,6 @@ class Snapshot:
         angle = math.atan2(lw, vu)
         r = min(radius, 0.45 * lu, 0.45 * lv)
         steps = 16
-        xs, ys, zs = [], [], []
-        for i in range(steps + 1):
-            t = angle * i / steps
-            point = _add(_add(origin, e1, r * math.cos(t)), e2, r * math.sin(t))
-            xs.append(point[0])
-            ys.append(point[1])
-            zs.append(point[2])
-        return xs, ys, zs
+        turns = (angle * i / steps for i in range(steps + 1))
+        points = [_add(_add(origin, e1, r * math.cos(t)), e2, r * math.sin(t)) for t in turns]
+        return [p[0] for p in points], [p[1] for p in points], [p[2] for p in points]

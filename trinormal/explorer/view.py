@@ -191,20 +191,17 @@ class ExplorerView(anywidget.AnyWidget):
             name = change["name"]
             self.mark_set([name + q for q in "xyz"] if name in "abc" else [name])
 
-    @traitlets.validate(*OWNED)
+    @traitlets.validate(*OWNED, *FIXED)
     def _set_from_code(self, proposal: Any) -> Any:
         name = proposal["trait"].name
         if self._own or self.code_setter is None:
             return proposal["value"]
+        if name in FIXED:
+            raise traitlets.TraitError(
+                f"ExplorerView.{name} cannot be set from code: {FIXED[name]}"
+            )
         self.code_setter(name, proposal["value"])  # checks and sets it, or raises
         return getattr(self, name)
-
-    @traitlets.validate(*FIXED)
-    def _refuse_from_code(self, proposal: Any) -> Any:
-        name = proposal["trait"].name
-        if self._own or self.code_setter is None:
-            return proposal["value"]
-        raise traitlets.TraitError(f"ExplorerView.{name} cannot be set from code: {FIXED[name]}")
 
     @contextmanager
     def own_changes(self) -> Iterator[None]:

@@ -74,16 +74,19 @@ def _name(key: str) -> str:
     return f"{key[0].upper()}.{key[1]}"
 
 
+def _outside(name: str, shown: str, low: float, high: float) -> ValueError:
+    return ValueError(
+        f"{name} = {shown} is outside the slider range {_num(low)} to {_num(high)}; {_RANGE_HINT}"
+    )
+
+
 def _check_in_range(name: str, value: float, low: float, high: float) -> float:
     if value != value:
         raise ValueError(f"{name} is NaN")
     if math.isinf(value):
         raise ValueError(f"{name} is infinite; the slider range is {_num(low)} to {_num(high)}")
     if not low <= value <= high:
-        raise ValueError(
-            f"{name} = {_num(value)} is outside the slider range "
-            f"{_num(low)} to {_num(high)}; {_RANGE_HINT}"
-        )
+        raise _outside(name, _num(value), low, high)
     return value
 
 
@@ -269,7 +272,8 @@ class Explorer:
         )
         self.view.add_class("trinormal-explorer")
         self.view.edit_handler = self._edit
-        self.view.code_setter = self._code_set
+        # a vertex, the winding or the decimals code set on the view (``ex.view.a = ...``)
+        self.view.code_setter = lambda name, value: self.set(**{name: value})
         #: Where a 3D view of this explorer last looked from (its camera), for `describe`.
         self._viewer: tuple[float, float, float] | None = None
         #: The last picture a 3D view sent (`to_png`): the values it shows, and the PNG.
@@ -316,10 +320,6 @@ class Explorer:
 
         return write
 
-    def _code_set(self, name: str, value: Any) -> None:
-        """Apply a vertex, winding or decimals that code set on the view (``ex.view.a = ...``)."""
-        self.set(**{name: value})
-
     # ------------------------------------------------------------------ reading values
 
     def _read_points(self, points: dict[str, Any]) -> dict[str, str]:
@@ -336,10 +336,7 @@ class Explorer:
     def _check_text(self, key: str, text: str) -> str:
         value = exact_value(text, _name(key))
         if not Fraction(self.min) <= value <= Fraction(self.max):
-            raise ValueError(
-                f"{_name(key)} = {text} is outside the slider range "
-                f"{_num(self.min)} to {_num(self.max)}; {_RANGE_HINT}"
-            )
+            raise _outside(_name(key), text, self.min, self.max)
         return text
 
     def _compute(self, texts: dict[str, str], winding: str) -> TriangleNormal:

@@ -7,14 +7,12 @@
  * shown as set and is never rounded back to the grid.
  */
 import { gridIndex, gridText, parseCoordinate, readStep } from "./numbers.js";
-import { setAttr, setHidden, setStyle } from "./dom.js";
+import { element, setAttr, setHidden, setStyle } from "./dom.js";
 
-function make(tag, className, text) {
-  const e = document.createElement(tag);
-  // typing here is not a JupyterLab shortcut (see index.js)
-  if (tag === "input" || tag === "select") e.dataset.lmSuppressShortcuts = "true";
-  if (className) e.className = className;
-  if (text !== undefined) e.textContent = text;
+/** An input or a select: typing in it is not a JupyterLab shortcut (see layout.js). */
+function field(tag, className) {
+  const e = element(tag, className);
+  e.dataset.lmSuppressShortcuts = "true";
   return e;
 }
 
@@ -22,29 +20,29 @@ function make(tag, className, text) {
  * view: { get(key), edit(changes), color(role) } -> { el, update(), dispose() }
  */
 export function createControls(parent, view) {
-  const panel = make("div", "tnx-controls");
+  const panel = element("div", "tnx-controls");
   panel.setAttribute("role", "group");
   panel.setAttribute("aria-label", "Coordinates");
   const rows = {};
   for (const p of "abc") {
-    const row = make("div", "tnx-vertex-row");
-    const name = make("span", "tnx-vertex-name", p.toUpperCase());
+    const row = element("div", "tnx-vertex-row");
+    const name = element("span", "tnx-vertex-name", p.toUpperCase());
     // the three coordinates wrap inside their own box, so on a narrow screen y and z line up under x
-    const coords = make("span", "tnx-coords");
+    const coords = element("span", "tnx-coords");
     row.append(name, coords);
     rows[p] = { name, cells: [] };
     ["x", "y", "z"].forEach((q, i) => {
-      const cell = make("span", "tnx-coord");
-      const slider = make("input", "tnx-slider");
+      const cell = element("span", "tnx-coord");
+      const slider = field("input", "tnx-slider");
       slider.type = "range";
       slider.setAttribute("aria-label", `${p.toUpperCase()}.${q} slider`);
-      const box = make("input", "tnx-exact");
+      const box = field("input", "tnx-exact");
       box.type = "text";
       box.spellcheck = false;
       box.autocomplete = "off";
       box.setAttribute("aria-label", `${p.toUpperCase()}.${q}, exact value: type a number such as 0.1, -2 or 1/3 and press Enter`);
       box.title = `${p.toUpperCase()}.${q}: type a number such as 0.1, -2 or 1/3 and press Enter`;
-      cell.append(make("span", "tnx-axis-name", q), slider, box);
+      cell.append(element("span", "tnx-axis-name", q), slider, box);
       coords.appendChild(cell);
       rows[p].cells.push({ slider, box });
 
@@ -83,9 +81,9 @@ export function createControls(parent, view) {
     });
     panel.appendChild(row);
   }
-  const settings = make("div", "tnx-settings");
-  const decimalsLabel = make("label", "tnx-decimals", "decimals ");
-  const decimals = make("select");
+  const settings = element("div", "tnx-settings");
+  const decimalsLabel = element("label", "tnx-decimals", "decimals ");
+  const decimals = field("select");
   decimalsLabel.appendChild(decimals);
   decimals.addEventListener("change", () => view.edit({ precision: Number(decimals.value) }));
   settings.appendChild(decimalsLabel);
@@ -120,7 +118,6 @@ export function createControls(parent, view) {
   }
 
   return {
-    el: panel,
     update,
     /** Forget what was typed but not sent in the boxes of `keys` ("bx"): the host set them. */
     reset(keys) {

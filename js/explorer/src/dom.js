@@ -13,12 +13,12 @@ export function element(tag, className, text) {
   return e;
 }
 
-/** Add listeners ({ type: handler }) to a target; returns the function that removes them. */
-export function listen(target, handlers) {
+/** Add listeners ({ type: handler }, with `options`) to a target; returns the function that removes them. */
+export function listen(target, handlers, options) {
   const pairs = Object.entries(handlers);
-  for (const [type, handler] of pairs) target.addEventListener(type, handler);
+  for (const [type, handler] of pairs) target.addEventListener(type, handler, options);
   return () => {
-    for (const [type, handler] of pairs) target.removeEventListener(type, handler);
+    for (const [type, handler] of pairs) target.removeEventListener(type, handler, options);
   };
 }
 

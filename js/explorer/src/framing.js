@@ -61,17 +61,45 @@ function startDirection(normal, line) {
   return best;
 }
 
-/** The direction of the line through collinear points (display units), or null when they coincide. */
-function lineOf(disp) {
-  let best = null;
+/** The two of `points` (Vector3s) farthest apart and their distance: { ends: [p, q], far } (ends null when they coincide). */
+export function farthestPair(points) {
+  let ends = null;
   let far = 0;
-  for (let i = 0; i < 3; i++) {
-    for (let j = i + 1; j < 3; j++) {
-      const d = disp[j].clone().sub(disp[i]);
-      if (d.length() > far) [far, best] = [d.length(), d];
+  for (let i = 0; i < points.length; i++) {
+    for (let j = i + 1; j < points.length; j++) {
+      const d = points[i].distanceTo(points[j]);
+      if (d > far) [far, ends] = [d, [points[i], points[j]]];
     }
   }
-  return best && far > 0 ? best.normalize() : null;
+  return { ends, far };
+}
+
+/** The direction of the line through collinear points (display units), or null when they coincide. */
+function lineOf(disp) {
+  const { ends } = farthestPair(disp);
+  return ends ? ends[1].clone().sub(ends[0]).normalize() : null;
+}
+
+/**
+ * N and the unit normal as drawn from the centroid, for n = U x V in display units (N / S^2,
+ * so N's true length in display units is |n| * S): their vectors and scale factors.
+ */
+export function drawnArrows(n, S, lMax, degenerate, showUnit) {
+  let nDraw = new Vector3();
+  let nFactor = 1;
+  if (!degenerate) {
+    const d = drawnAt(n.length() * S, lMax);
+    nFactor = d.factor;
+    nDraw = n.clone().setLength(d.length);
+  }
+  let unitDraw = null;
+  let unitFactor = 1;
+  if (!degenerate && showUnit) {
+    const d = drawnAt(1 / S, lMax);
+    unitFactor = d.factor;
+    unitDraw = n.clone().setLength(d.length);
+  }
+  return { nDraw, nFactor, unitDraw, unitFactor };
 }
 
 /** A data point ([x, y, z]) in the display units of `frame` ({ S, offset }). */
@@ -115,9 +143,9 @@ export function computeFrame(pts, winding, showUnit, degenerate = false) {
   const centroid = a.clone().add(b).add(c).divideScalar(3);
   const plane = !degenerate && n.length() > 0 && Number.isFinite(n.length());
   if (plane) {
-    // n = U x V in display units is N / S^2: N's true length in display units is |n| * S
-    box.push(centroid.clone().add(n.clone().setLength(drawnAt(n.length() * S, lMax).length)));
-    if (showUnit) box.push(centroid.clone().add(n.clone().setLength(drawnAt(1 / S, lMax).length)));
+    const { nDraw, unitDraw } = drawnArrows(n, S, lMax, false, showUnit);
+    box.push(centroid.clone().add(nDraw));
+    if (unitDraw) box.push(centroid.clone().add(unitDraw));
   }
   if (lMax === 0) {
     // one point: frame a tick's width around it, so the view does not zoom into a dot

@@ -21,6 +21,7 @@ import {
   TorusGeometry,
   Vector3,
 } from "three";
+import { farthestPair } from "./framing.js";
 
 const Y = new Vector3(0, 1, 0);
 const tmp = new Vector3();
@@ -61,7 +62,6 @@ export class Drawing {
     this.cueHead = new Mesh(this.cone, this.material("N"));
     this.cueHead.rotation.z = -Math.PI / 2; // cone along +x: the arc's tangent at its end
     this.cue.add(this.cueArc, this.cueHead);
-    this.cueArcAngle = null;
     this.arcs = new Map();
     this.line = this.stick("line");
     this.axes = {};
@@ -244,8 +244,7 @@ export class Drawing {
     const key = Math.round(angle / step);
     if (!this.arcs.has(key)) this.arcs.set(key, new TorusGeometry(1, 0.055, 8, 48, key * step));
     this.cueArc.geometry = this.arcs.get(key);
-    this.cueArcAngle = key * step;
-    const a = this.cueArcAngle;
+    const a = key * step;
     this.cueHead.position.set(Math.cos(a), Math.sin(a), 0);
     this.cueHead.rotation.set(0, 0, a); // cone (+y) turned to the tangent (-sin a, cos a)
     this.cueHead.position.addScaledVector(new Vector3(-Math.sin(a), Math.cos(a), 0), -0.12);
@@ -271,33 +270,19 @@ export class Drawing {
     this.paraGeometry.computeBoundingSphere();
     Drawing.placeStick(this.paraEdges[0], g.P, D, g.r * 0.45);
     Drawing.placeStick(this.paraEdges[1], g.Q, D, g.r * 0.45);
-    g.D = D;
   }
 
   /** For a degenerate triangle: the line through its points (none when they coincide). */
   updateLine(g) {
     this.line.visible = false;
     if (!g.degenerate) return;
-    const pts = [g.A, g.B, g.C];
-    let best = null;
-    let far = 0;
-    for (let i = 0; i < 3; i++) {
-      for (let j = i + 1; j < 3; j++) {
-        const d = pts[i].distanceTo(pts[j]);
-        if (d > far) [far, best] = [d, [pts[i], pts[j]]];
-      }
-    }
-    if (!best || far < g.r) return;
-    const dir = new Vector3().subVectors(best[1], best[0]).normalize();
+    const { ends, far } = farthestPair([g.A, g.B, g.C]);
+    if (!ends || far < g.r) return;
+    const dir = new Vector3().subVectors(ends[1], ends[0]).normalize();
     const ext = Math.max(0.35 * far, 6 * g.r);
-    const p = best[0].clone().addScaledVector(dir, -ext);
-    const q = best[1].clone().addScaledVector(dir, ext);
+    const p = ends[0].clone().addScaledVector(dir, -ext);
+    const q = ends[1].clone().addScaledVector(dir, ext);
     Drawing.placeStick(this.line, p, q, g.r * 0.9);
-  }
-
-  /** The vertex meshes (for picking). */
-  pickables() {
-    return Object.entries(this.vertices).map(([name, mesh]) => ({ name, mesh }));
   }
 
   dispose() {

@@ -8,7 +8,9 @@
  * Dragging anywhere else is left to the orbit controls.
  */
 import { Plane, Raycaster, Vector2, Vector3 } from "three";
+import { listen } from "./dom.js";
 import { gridIndex, gridText, onGridAt, parseCoordinate } from "./numbers.js";
+import { toScreen } from "./scene.js";
 
 const PICK_PX = 22;
 
@@ -31,10 +33,8 @@ function pick(view, clientX, clientY) {
   for (const name of "ABC") {
     const p = view.position(name);
     if (!p) continue;
-    const q = p.clone().project(view.camera);
-    const x = rect.left + ((q.x + 1) / 2) * rect.width;
-    const y = rect.top + ((1 - q.y) / 2) * rect.height;
-    const d = Math.hypot(x - clientX, y - clientY);
+    const q = toScreen(p, view.camera, rect.width, rect.height);
+    const d = Math.hypot(rect.left + q.x - clientX, rect.top + q.y - clientY);
     if (d < bestD) [best, bestD] = [name, d];
   }
   return best;
@@ -199,18 +199,12 @@ export function setupInteraction(view) {
   }
 
   const c = view.container;
-  c.addEventListener("pointerdown", onPointerDown, { capture: true });
-  c.addEventListener("pointermove", onPointerMove);
-  c.addEventListener("pointerup", onPointerUp);
-  c.addEventListener("pointercancel", onPointerUp);
-  c.addEventListener("keydown", onKeyDown);
+  const stopCapture = listen(c, { pointerdown: onPointerDown }, { capture: true });
+  const stop = listen(c, { pointermove: onPointerMove, pointerup: onPointerUp, pointercancel: onPointerUp, keydown: onKeyDown });
   const dispose = () => {
     if (frame) cancelAnimationFrame(frame);
-    c.removeEventListener("pointerdown", onPointerDown, { capture: true });
-    c.removeEventListener("pointermove", onPointerMove);
-    c.removeEventListener("pointerup", onPointerUp);
-    c.removeEventListener("pointercancel", onPointerUp);
-    c.removeEventListener("keydown", onKeyDown);
+    stopCapture();
+    stop();
   };
   dispose.cancel = cancel;
   return dispose;

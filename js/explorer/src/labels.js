@@ -4,11 +4,9 @@
  * Each frame they are placed by projecting their 3D anchor to the screen; vertex
  * labels are pushed away from the triangle's centre so they sit beyond the arrow heads.
  */
-import { Vector3 } from "three";
 import { setHidden } from "./dom.js";
 import { CORNER } from "./present.js";
-
-const v = new Vector3();
+import { toScreen } from "./scene.js";
 
 /**
  * The y of a label centred at (x, y), `w` x `h` half-size, moved down below the buttons in
@@ -17,15 +15,6 @@ const v = new Vector3();
 function clearOfCorner(x, y, w, h, size) {
   const under = x + w > size.width - CORNER.width && y - h < CORNER.height;
   return under && size.height > CORNER.height + 2 * h + 4 ? CORNER.height + h + 2 : y;
-}
-
-function project(point, camera, size) {
-  v.copy(point).project(camera);
-  return {
-    x: ((v.x + 1) / 2) * size.width,
-    y: ((1 - v.y) / 2) * size.height,
-    behind: v.z > 1 || v.z < -1,
-  };
 }
 
 export class LabelLayer {
@@ -80,8 +69,8 @@ export class LabelLayer {
         setHidden(item.el, true);
         continue;
       }
-      const p = project(item.anchor, camera, size);
-      if (p.behind) {
+      const p = toScreen(item.anchor, camera, size.width, size.height);
+      if (p.z > 1 || p.z < -1) {
         setHidden(item.el, true);
         continue;
       }
@@ -91,7 +80,7 @@ export class LabelLayer {
         let ux = 0;
         let uy = 0;
         if (item.away) {
-          const q = project(item.away, camera, size);
+          const q = toScreen(item.away, camera, size.width, size.height);
           ux = p.x - q.x;
           uy = p.y - q.y;
         }

@@ -8,10 +8,11 @@
 import { Vector3 } from "three";
 import { Drawing } from "./geometry.js";
 import { setStyle } from "./dom.js";
-import { computeFrame, sameUnits, showsTriangle, toDisplay } from "./framing.js";
+import { computeFrame, drawnArrows, sameUnits, showsTriangle, toDisplay } from "./framing.js";
 import { LabelLayer } from "./labels.js";
 import { parsePoint, tickText } from "./numbers.js";
-import { drawnAt, scaledLabel } from "./scaling.js";
+import { scaledLabel } from "./scaling.js";
+import { toScreen } from "./scene.js";
 import { surface } from "./theme.js";
 
 const VERTEX_ANGLE = { A: (225 * Math.PI) / 180, B: (-30 * Math.PI) / 180, C: (90 * Math.PI) / 180 };
@@ -110,8 +111,7 @@ function sizeAxes(view) {
     const shown = hi > lo;
     const r = AXIS_PX * stage.pixelAt(e.clone().multiplyScalar(k > 0 ? lo : hi));
     Drawing.placeArrow(arrow, e.clone().multiplyScalar(lo), e.clone().multiplyScalar(hi), r, shown);
-    if (shown && hi < frame.L) arrow.head.visible = false;
-    else arrow.head.visible = true;
+    arrow.head.visible = !(shown && hi < frame.L);
     for (const tick of ticks) {
       if (!tick.visible) continue;
       tick.scale.setScalar(depthOf(tick.position) < least ? 0 : TICK_PX * stage.pixelAt(tick.position));
@@ -174,26 +174,6 @@ export function reframe(view, pts, winding) {
   view.hostMoved = false;
 }
 
-/** N and the unit normal as drawn from the centroid: their vectors and scale factors. */
-function arrows(n, S, lMax, degenerate, showUnit) {
-  // n = U x V in display units is N / S^2: N's true length in display units is |n| * S
-  let nDraw = new Vector3();
-  let nFactor = 1;
-  if (!degenerate) {
-    const d = drawnAt(n.length() * S, lMax);
-    nFactor = d.factor;
-    nDraw = n.clone().setLength(d.length);
-  }
-  let unitDraw = null;
-  let unitFactor = 1;
-  if (!degenerate && showUnit) {
-    const d = drawnAt(1 / S, lMax);
-    unitFactor = d.factor;
-    unitDraw = n.clone().setLength(d.length);
-  }
-  return { nDraw, nFactor, unitDraw, unitFactor };
-}
-
 /** Place the vertex and arrow labels: vertices beyond their points, arrows beside their shafts. */
 function placeLabels(view, g, U, V) {
   const { labels, vertexEls, colors } = view;
@@ -230,7 +210,7 @@ export function drawTriangle(view, pts, st, winding) {
   const nLen = n.length();
   const degenerate = !!st.degenerate || !(nLen > 0) || !Number.isFinite(nLen);
   const lMax = Math.max(U.length(), V.length(), P.distanceTo(Q), 1e-9); // the longest edge
-  const { nDraw, nFactor, unitDraw, unitFactor } = arrows(n, S, lMax, degenerate, get("show_unit_normal"));
+  const { nDraw, nFactor, unitDraw, unitFactor } = drawnArrows(n, S, lMax, degenerate, get("show_unit_normal"));
   labels.label("arrow:N", "arrow", scaledLabel(nFactor));
   labels.label("arrow:unit", "arrow", scaledLabel(unitFactor, true));
   view.scales = { N: nFactor, unit: unitDraw ? unitFactor : null };
@@ -253,8 +233,8 @@ export function projection(view) {
   const out = {};
   for (const [key, p] of Object.entries({ ...display, ...heads })) {
     if (!p) continue;
-    const q = p.clone().project(stage.camera);
-    out[key] = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
+    const q = toScreen(p, stage.camera, width, height);
+    out[key] = [q.x, q.y];
   }
   const distance = stage.camera.position.distanceTo(stage.controls.target);
   // the arrows as drawn, in data units (display units times S), and their drawing scales

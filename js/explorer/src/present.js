@@ -163,11 +163,6 @@ export function pictureOf(stage) {
   return new Promise((resolve) => out.toBlob(resolve, "image/png"));
 }
 
-/** Download pictureOf(stage) as `filename`. */
-async function savePicture(stage, filename) {
-  saveBlob(await pictureOf(stage), filename);
-}
-
 /**
  * The two buttons in the top right corner of the view's stage: Full screen (of `root`) and
  * Save picture (as `filename`). onFullscreen(on) runs after the view enters or leaves full
@@ -178,7 +173,7 @@ export function addPresentButtons({ root, stage, filename, onFullscreen = () => 
   group.setAttribute("role", "group");
   group.setAttribute("aria-label", "Picture");
   const fullscreen = createFullscreen(root, onFullscreen);
-  group.append(fullscreen.button, button("save", "Save picture", () => savePicture(stage, filename)));
+  group.append(fullscreen.button, button("save", "Save picture", async () => saveBlob(await pictureOf(stage), filename)));
   stage.canvas.parentElement.appendChild(group);
   return () => {
     fullscreen.dispose();

@@ -5,7 +5,7 @@
  * view's edits wait for a busy kernel, the status says so (the host's `waiting` text) and the
  * rows, which are the host's last numbers, are marked as not current.
  */
-import { setAttr, setHidden, setText } from "./dom.js";
+import { element, setAttr, setHidden, setText } from "./dom.js";
 
 /**
  * A value as spans (a vector's components; a plane's terms), so a line can break only
@@ -17,30 +17,22 @@ function setValue(cell, text) {
   cell.textContent = "";
   // a vector stays on one line (on a narrow screen it may break between components)
   const vector = String(text).startsWith("(");
-  const home = vector ? cell.appendChild(document.createElement("span")) : cell;
-  if (vector) home.className = "tnx-vector";
+  const home = vector ? cell.appendChild(element("span", "tnx-vector")) : cell;
   const parts = String(text).split(/(?<=,) | (?=[+=−-] )/);
   parts.forEach((part, i) => {
-    const span = document.createElement("span");
-    span.className = "tnx-part";
-    span.textContent = part;
-    home.appendChild(span);
+    home.appendChild(element("span", "tnx-part", part));
     if (i < parts.length - 1) home.appendChild(document.createTextNode(" "));
   });
 }
 
 export function createReadout(parent) {
-  const panel = document.createElement("section");
-  panel.className = "tnx-readout";
+  const panel = element("section", "tnx-readout");
   panel.setAttribute("aria-label", "Readout");
-  const table = document.createElement("table");
-  table.className = "tnx-table"; // a class, so a page's styles for plain tables leave it alone
-  const body = document.createElement("tbody");
+  const table = element("table", "tnx-table"); // a class, so a page's styles for plain tables leave it alone
+  const body = element("tbody");
   table.appendChild(body);
-  const status = document.createElement("p");
-  status.className = "tnx-status";
-  const live = document.createElement("p");
-  live.className = "tnx-summary";
+  const status = element("p", "tnx-status");
+  const live = element("p", "tnx-summary");
   live.setAttribute("aria-live", "polite");
   live.setAttribute("role", "status");
   panel.append(table, status, live);
@@ -53,10 +45,9 @@ export function createReadout(parent) {
     rows.forEach((row, i) => {
       const tr = body.rows[i] || body.insertRow();
       if (tr.cells.length === 0) {
-        const th = document.createElement("th");
+        const th = element("th");
         th.scope = "row";
-        tr.append(th, document.createElement("td"));
-        tr.cells[1].className = "tnx-value";
+        tr.append(th, element("td", "tnx-value"));
       }
       setAttr(tr, "data-key", row.key);
       setText(tr.cells[0], row.label);
@@ -84,7 +75,6 @@ export function createReadout(parent) {
   }
 
   return {
-    el: panel,
     update,
     waiting,
     show(on) {

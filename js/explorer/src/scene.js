@@ -96,18 +96,10 @@ export function pixelAt(depth, height) {
   return (2 * Math.tan(((FOV / 2) * Math.PI) / 180) * depth) / Math.max(height, 1);
 }
 
-/** Make `points` (display units) home's framing: what it keeps in view, their box's centre and radius. */
-function setHomePoints(home, points) {
-  home.points = points.map((p) => p.clone());
-  const lo = points[0].clone();
-  const hi = points[0].clone();
-  for (const p of points) {
-    lo.min(p);
-    hi.max(p);
-  }
-  home.center.copy(lo).add(hi).multiplyScalar(0.5);
-  home.target.copy(home.center);
-  home.radius = Math.max(hi.distanceTo(lo) / 2, 1e-3);
+/** Where `point` (display units) is in the camera's picture of `width` x `height` px: { x, y, z } (z beyond ±1: not in front). */
+export function toScreen(point, camera, width, height) {
+  const q = point.clone().project(camera);
+  return { x: ((q.x + 1) / 2) * width, y: ((1 - q.y) / 2) * height, z: q.z };
 }
 
 /**
@@ -143,9 +135,9 @@ function spreadInView(camera, points, width, height) {
   const lo = [Infinity, Infinity];
   const hi = [-Infinity, -Infinity];
   for (const p of points) {
-    const q = p.clone().project(camera);
-    if (!(q.z < 1)) inside = false;
-    const xy = [((q.x + 1) / 2) * width, ((1 - q.y) / 2) * height];
+    const { x, y, z } = toScreen(p, camera, width, height);
+    if (!(z < 1)) inside = false;
+    const xy = [x, y];
     for (const k of [0, 1]) {
       lo[k] = Math.min(lo[k], xy[k]);
       hi[k] = Math.max(hi[k], xy[k]);
@@ -175,19 +167,6 @@ function createParts(container) {
   return { renderer, canvas, scene, camera, controls };
 }
 
-/** Where a stage's camera goes home to: what it keeps in view and where it looks from. */
-function newHome() {
-  return {
-    target: new Vector3(),
-    distance: 6,
-    radius: 1,
-    points: [new Vector3()], // what home keeps in view (display units)
-    center: new Vector3(), // the middle of their box
-    direction: DEFAULT_DIRECTION.clone(), // where the camera looks from now
-    start: DEFAULT_DIRECTION.clone(), // where "Reset view" looks from
-  };
-}
-
 /**
  * The camera's projection for the view's size: with an inset (`free` px covered at the right,
  * by the readout in full screen) the picture's centre moves into the part left free, at the
@@ -211,7 +190,9 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
   let width = 1;
   let height = 1;
   let inset = 0; // px at the right of the view that the picture keeps free (setInset)
-  const home = newHome();
+  // where the camera goes home to: the points it keeps in view (display units), the direction
+  // it looks from now and the one "Reset view" looks from
+  const home = { points: [new Vector3()], direction: DEFAULT_DIRECTION.clone(), start: DEFAULT_DIRECTION.clone() };
   let atHome = true; // the camera is where reset or a view button put it (the user has not moved it)
 
   function draw() {
@@ -244,6 +225,11 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
     const next = Math.max(0, Math.round(px));
     if (next === inset) return;
     inset = next;
+    refit();
+  }
+
+  /** After a new size or inset: project again, and frame home again while the camera is there. */
+  function refit() {
     project();
     if (atHome) look(home.direction);
     requestRender();
@@ -256,9 +242,7 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
     width = w;
     height = h;
     renderer.setSize(w, h, false);
-    project();
-    if (atHome) look(home.direction);
-    requestRender();
+    refit();
   }
 
   const observer = new ResizeObserver(resize);
@@ -274,7 +258,7 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
    */
   function framePoints(points, go = true, start = null) {
     if (start) home.start.copy(start);
-    setHomePoints(home, points);
+    home.points = points.map((p) => p.clone());
     if (go === "keep") look(camera.position.clone().sub(controls.target));
     else if (go) look(home.start);
   }
@@ -283,16 +267,13 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
   function look(direction) {
     home.direction.copy(direction);
     atHome = true;
-    const fit = fitCamera(home.points, direction, { width: width - freeInset(), height }, margin);
-    const d = fit.direction;
-    home.target.copy(fit.target);
-    home.distance = fit.distance;
-    camera.near = home.distance / 200;
-    camera.far = home.distance * 50;
+    const { target, distance, direction: d } = fitCamera(home.points, direction, { width: width - freeInset(), height }, margin);
+    camera.near = distance / 200;
+    camera.far = distance * 50;
     camera.updateProjectionMatrix();
-    controls.target.copy(home.target);
-    camera.position.copy(home.target).addScaledVector(d, home.distance);
-    camera.lookAt(home.target);
+    controls.target.copy(target);
+    camera.position.copy(target).addScaledVector(d, distance);
+    camera.lookAt(target);
     controls.update();
     requestRender();
   }

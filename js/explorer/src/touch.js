@@ -4,6 +4,7 @@
  * always zoom and turn it. Used by the explorer and the mesh view alike.
  */
 import { TOUCH } from "three";
+import { listen } from "./dom.js";
 
 /** A tap: the finger lifted within this many px of where it went down, and this many ms. */
 const TAP_PX = 10;
@@ -39,15 +40,15 @@ export function touchGate({ root, stageEl, controls, canvas, activeClass }) {
     if (on && !root.contains(event.target)) set(false);
   };
   const doc = root.ownerDocument || document;
-  stageEl.addEventListener("pointerdown", onStart, { capture: true });
-  stageEl.addEventListener("pointerup", onEnd);
-  doc.addEventListener("pointerdown", onOutside, { capture: true });
+  const stops = [
+    listen(stageEl, { pointerdown: onStart }, { capture: true }),
+    listen(stageEl, { pointerup: onEnd }),
+    listen(doc, { pointerdown: onOutside }, { capture: true }),
+  ];
   return {
     active: () => on,
     dispose() {
-      stageEl.removeEventListener("pointerdown", onStart, { capture: true });
-      stageEl.removeEventListener("pointerup", onEnd);
-      doc.removeEventListener("pointerdown", onOutside, { capture: true });
+      for (const stop of stops) stop();
     },
   };
 }
