@@ -42,9 +42,17 @@ const cssAsText = {
   },
 };
 
-const three = JSON.parse(readFileSync(join(here, "node_modules/three/package.json"), "utf8"));
-const bvh = JSON.parse(readFileSync(join(here, "node_modules/three-mesh-bvh/package.json"), "utf8"));
-const meshopt = JSON.parse(readFileSync(join(here, "node_modules/meshoptimizer/package.json"), "utf8"));
+const packageOf = (pkg) => JSON.parse(readFileSync(join(here, "node_modules", pkg, "package.json"), "utf8"));
+const three = packageOf("three");
+const bvh = packageOf("three-mesh-bvh");
+const meshopt = packageOf("meshoptimizer");
+// what THIRD_PARTY_LICENSES.txt says of each bundled package: its npm name and version, its
+// name and what it is for, and its licence file
+const BUNDLED = [
+  ["three", three.version, "three.js", "https://threejs.org", "LICENSE"],
+  ["three-mesh-bvh", bvh.version, "three-mesh-bvh", "the mesh view's picking", "LICENSE"],
+  ["meshoptimizer", meshopt.version, "meshoptimizer", "the mesh view's coarser copy of a big model while it turns", "LICENSE.md"],
+];
 
 // One three.js per page. Two builds of the bundle can meet on one page (a notebook saved with an
 // older version's output), and three.js warns "Multiple instances of Three.js being imported"
@@ -112,7 +120,6 @@ const sharedThree = {
   },
 };
 
-
 const VERSIONS = `three.js ${three.version}, three-mesh-bvh ${bvh.version} and meshoptimizer ${meshopt.version}`;
 const COMMON = {
   absWorkingDir: here,
@@ -172,23 +179,12 @@ async function buildSite() {
   );
 }
 
-const licenceOf = (pkg, file = "LICENSE") => readFileSync(join(here, "node_modules", pkg, file), "utf8").replace(/\r\n/g, "\n").trimEnd();
-
 function writeLicences(dir, first) {
-  writeFileSync(
-    join(dir, "THIRD_PARTY_LICENSES.txt"),
-    first +
-      "\n\n" +
-      `three.js ${three.version} (npm package "three", https://threejs.org), MIT licence:\n\n` +
-      licenceOf("three") +
-      "\n\n" +
-      `three-mesh-bvh ${bvh.version} (npm package "three-mesh-bvh", the mesh view's picking), MIT licence:\n\n` +
-      licenceOf("three-mesh-bvh") +
-      "\n\n" +
-      `meshoptimizer ${meshopt.version} (npm package "meshoptimizer", the mesh view's coarser copy of a big model while it turns), MIT licence:\n\n` +
-      licenceOf("meshoptimizer", "LICENSE.md") +
-      "\n",
-  );
+  const parts = BUNDLED.map(([pkg, version, name, what, file]) => {
+    const licence = readFileSync(join(here, "node_modules", pkg, file), "utf8").replace(/\r\n/g, "\n").trimEnd();
+    return `${name} ${version} (npm package "${pkg}", ${what}), MIT licence:\n\n${licence}`;
+  });
+  writeFileSync(join(dir, "THIRD_PARTY_LICENSES.txt"), [first, ...parts].join("\n\n") + "\n");
 }
 
 await buildWidget();

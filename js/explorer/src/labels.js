@@ -27,7 +27,7 @@ export class LabelLayer {
     this.items = new Map();
   }
 
-  /** Create (or return) a label. kind: "vertex", "arrow", "axis", "tick", "note". */
+  /** Create (or return) a label. kind: "vertex", "arrow", "axis", "tick". */
   label(id, kind, text) {
     let item = this.items.get(id);
     if (!item) {
