@@ -26,6 +26,7 @@ import html
 import math
 from collections.abc import Callable, Iterable
 from fractions import Fraction
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -247,7 +248,6 @@ class Explorer:
         if "/" in step_text or not 0 < step_value <= Fraction(high) - Fraction(low):
             raise ValueError(f"step must be positive and at most max - min, got {step!r}")
         self.min, self.max, self.step = low, high, float(step_value)
-        self._step_text = step_text
         precision = check_precision(precision)
         w = _check_winding(winding)
         texts = self._read_points({"a": a, "b": b, "c": c})
@@ -283,9 +283,13 @@ class Explorer:
         self.inputs: dict[str, Control] = {}
         for key in COORDINATES:
             self.controls[key] = Control(
-                self._reader(key), self._slider_writer(key), min=low, max=high, step=self.step
+                partial(self._number, key),
+                partial(self._slide, key),
+                min=low,
+                max=high,
+                step=self.step,
             )
-            self.inputs[key] = Control(self._text_reader(key), self._typist(key))
+            self.inputs[key] = Control(partial(self._text_of, key), partial(self._type, key))
         self.controls["winding"] = Control(
             lambda: self.result.winding.value,
             lambda value: self.set(winding=value),
@@ -299,26 +303,21 @@ class Explorer:
         )
         self._refresh()
 
-    def _reader(self, key: str) -> Callable[[], float]:
-        return lambda: float(exact_value(self._texts[key]))
+    def _number(self, key: str) -> float:
+        return float(exact_value(self._texts[key]))
 
-    def _text_reader(self, key: str) -> Callable[[], str]:
-        return lambda: self._texts[key]
+    def _text_of(self, key: str) -> str:
+        return self._texts[key]
 
-    def _slider_writer(self, key: str) -> Callable[[Any], None]:
-        def write(value: Any) -> None:
-            number = _check_in_range(_name(key), float(value), self.min, self.max)
-            text = coordinate_text(number, _name(key))
-            texts = {**self._texts, key: text}
-            self._apply(texts, self.result.winding.value, self._precision, [key])
+    def _slide(self, key: str, value: Any) -> None:
+        """Move a coordinate's slider to ``value`` (a number in the range) from code."""
+        number = _check_in_range(_name(key), float(value), self.min, self.max)
+        texts = {**self._texts, key: coordinate_text(number, _name(key))}
+        self._apply(texts, self.result.winding.value, self._precision, [key])
 
-        return write
-
-    def _typist(self, key: str) -> Callable[[Any], None]:
-        def write(value: Any) -> None:
-            self._edit({key: value}, marked=[key])
-
-        return write
+    def _type(self, key: str, value: Any) -> None:
+        """Type ``value`` in a coordinate's box from code (a bad value is a message)."""
+        self._edit({key: value}, marked=[key])
 
     # ------------------------------------------------------------------ reading values
 
@@ -474,10 +473,8 @@ class Explorer:
     def _edit(self, edit: dict[str, Any], marked: Iterable[str] = ()) -> str | None:
         """Apply one edit from the browser (or a value typed from code); return why it was refused.
 
-        An edit names only what changed (``{"ay": "2/7"}``, the winding, a toggle), so
-        edits to other coordinates of the same vertex, made at the same time in another
-        view, are kept. All of it is checked before anything moves. ``marked``: the
-        fields code set this way (``ex.inputs["bx"].value = ...``), as in `_apply`.
+        All of the edit is checked before anything moves. ``marked``: the fields code set
+        this way (``ex.inputs["bx"].value = ...``), as in `_apply`.
         """
         texts = dict(self._texts)
         winding, precision = self.result.winding.value, self._precision

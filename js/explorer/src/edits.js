@@ -1,19 +1,15 @@
 /*
- * The explorer's edit protocol, on the view's side.
+ * The explorer's edit protocol, on the view's side (the rule and the host's side:
+ * trinormal/explorer/view.py and state.merge_edit).
  *
  * The view never writes the host's values. A learner's move (drag, arrow key, slider, typed
  * value, toolbar toggle) is sent as an identified edit naming only what the learner changed,
  *   model.send({ edit: { cx: "0.4", cy: "1.1" }, seq, view, base: version }),
- * made against the host's `version` (which counts the host's own changes). A coordinate is
- * named by its key ("ax" … "cz"), so two views of one explorer editing different coordinates
- * of one vertex at once do not undo each other. The host records, per field, the version at
- * which it last set it (`set_at`); it keeps every field of an edit that it did not set since
- * the edit's base, and keeps its own value of a field it set after (a drag of B survives a
- * cell that sets C; a cell that sets B wins over a drag of B begun before it). It answers
- * with its values and `last_edit` ({ view, seq, ok, overwritten }). Until that answer the
- * view draws its own edit, per coordinate (so a drag follows the pointer); a new `version`
- * drops only the edits of fields the host set after them (index.js). While an edit waits
- * for its answer longer than a busy kernel's moment, the readout says so.
+ * made against the host's `version`; the host answers with its values and `last_edit`
+ * ({ view, seq, ok, overwritten }). Until that answer the view draws its own edit, per
+ * coordinate (so a drag follows the pointer); a new `version` drops only the edits of fields
+ * the host set after them (index.js). While an edit waits for its answer longer than a busy
+ * kernel's moment, the readout says so.
  */
 import { parseCoordinate } from "./numbers.js";
 

@@ -89,15 +89,12 @@ export function setupInteraction(view) {
   let pending = null;
   let frame = 0;
 
-  function rayAt(clientX, clientY) {
+  /** Where the ray through a point of the screen meets the drag's plane (null: it does not). */
+  function hitPlane(clientX, clientY) {
     const rect = view.canvas.getBoundingClientRect();
     ndc.set(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
     raycaster.setFromCamera(ndc, view.camera);
-    return raycaster.ray;
-  }
-
-  function hitPlane(clientX, clientY) {
-    return rayAt(clientX, clientY).intersectPlane(plane, new Vector3());
+    return raycaster.ray.intersectPlane(plane, new Vector3());
   }
 
   function start(name, event) {

@@ -189,9 +189,7 @@ function placeLabels(view, g, U, V) {
   labels.place("arrow:unit", unitDraw ? centroid.clone().add(unitDraw) : null, {
     away: centroid, offset: 20, angle: Math.PI, visible: !!unitDraw,
   });
-  for (const [id, role] of [["U", "U"], ["V", "V"], ["N", "N"], ["unit", "unit"]]) {
-    setStyle(labels.items.get("arrow:" + id).el, "color", colors(role));
-  }
+  for (const id of ["U", "V", "N", "unit"]) setStyle(labels.items.get("arrow:" + id).el, "color", colors(id));
 }
 
 /**

@@ -211,10 +211,6 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
     draw();
   }
 
-  function project() {
-    projectCamera(camera, width, height, freeInset());
-  }
-
   /** The inset as the view's size allows it (at most half the view). */
   function freeInset() {
     return Math.min(inset, Math.floor(width / 2));
@@ -230,7 +226,7 @@ export function createStage(container, { onRender, margin = LABEL_MARGIN }) {
 
   /** After a new size or inset: project again, and frame home again while the camera is there. */
   function refit() {
-    project();
+    projectCamera(camera, width, height, freeInset());
     if (atHome) look(home.direction);
     requestRender();
   }
