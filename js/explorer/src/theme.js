@@ -7,9 +7,7 @@ export function isDark(doc = document) {
   const body = doc.body;
   if (!body) return false;
   if (body.dataset.jpThemeLight !== undefined) return body.dataset.jpThemeLight === "false";
-  if (body.dataset.mdColorScheme !== undefined) return body.dataset.mdColorScheme === "slate";
-  const root = doc.documentElement;
-  return root.dataset.mdColorScheme === "slate";
+  return (body.dataset.mdColorScheme ?? doc.documentElement.dataset.mdColorScheme) === "slate";
 }
 
 /** Call onChange(dark) whenever the host switches between light and dark; returns a stop function. */
