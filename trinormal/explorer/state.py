@@ -60,15 +60,10 @@ def _exact_text(value: Fraction) -> str:
     if value.denominator == 1:
         return str(value.numerator)
     d = value.denominator
-    twos = (d & -d).bit_length() - 1
-    rest = d >> twos
-    fives = 0
-    while rest % 5 == 0:
-        rest //= 5
-        fives += 1
-    if rest != 1 or max(twos, fives) > 40:
+    # the fewest decimal places that write it exactly (10**places is a multiple of d), at most 40
+    places = next((k for k in range(1, 41) if 10**k % d == 0), None)
+    if places is None:
         return f"{value.numerator}/{value.denominator}"
-    places = max(twos, fives)
     digits = value.numerator * 10**places // d
     sign = "-" if digits < 0 else ""
     text = str(abs(digits)).rjust(places + 1, "0")

@@ -327,8 +327,7 @@ class Explorer:
         for p, point in points.items():
             vertex = p.upper()
             check_vertex(point, vertex)  # three numbers in an ordered sequence, each readable
-            coords = list(point)
-            for q, value in zip("xyz", coords, strict=True):
+            for q, value in zip("xyz", point, strict=True):
                 texts[p + q] = self._check_text(p + q, coordinate_text(value, f"{vertex}.{q}"))
         return texts
 

@@ -65,15 +65,12 @@ function sync(view) {
   view.toolbar.update();
   updatePanels(view, st);
   view.readout.waiting(view.waiting ? view.model.get("waiting") || "" : "");
-  if (!pts) {
-    view.drawing.root.visible = false;
-    view.stage.requestRender();
-    return;
+  view.drawing.root.visible = !!pts;
+  if (pts) {
+    view.lastGood = pts;
+    reframe(view, pts, winding);
+    updateLegend(view, drawTriangle(view, pts, st, winding));
   }
-  view.drawing.root.visible = true;
-  view.lastGood = pts;
-  reframe(view, pts, winding);
-  updateLegend(view, drawTriangle(view, pts, st, winding));
   view.stage.requestRender();
 }
 

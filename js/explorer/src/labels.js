@@ -65,17 +65,13 @@ export class LabelLayer {
     if (this.beforeLayout) this.beforeLayout();
     const placed = [];
     for (const item of this.items.values()) {
-      if (!item.visible || !item.anchor) {
-        setHidden(item.el, true);
+      const p = item.visible && item.anchor ? toScreen(item.anchor, camera, size.width, size.height) : null;
+      if (!p || p.z > 1 || p.z < -1) {
+        setHidden(item.el, true); // not shown, or behind the camera
         continue;
       }
-      const p = toScreen(item.anchor, camera, size.width, size.height);
-      if (p.z > 1 || p.z < -1) {
-        setHidden(item.el, true);
-        continue;
-      }
-      let dx = 0;
-      let dy = 0;
+      let x = p.x;
+      let y = p.y;
       if (item.offset) {
         let ux = 0;
         let uy = 0;
@@ -95,11 +91,9 @@ export class LabelLayer {
           ux /= len;
           uy /= len;
         }
-        dx = ux * item.offset;
-        dy = uy * item.offset;
+        x += ux * item.offset;
+        y += uy * item.offset;
       }
-      let x = p.x + dx;
-      let y = p.y + dy;
       // vertex labels that would sit on top of each other (points close on screen) fan out
       if (item.kind === "vertex") {
         for (const other of placed) {

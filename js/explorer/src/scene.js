@@ -131,21 +131,13 @@ function zoomCamera(camera, controls, factor) {
 function spreadInView(camera, points, width, height) {
   camera.updateMatrixWorld();
   const m = LABEL_MARGIN / 2;
-  let inside = true;
-  const lo = [Infinity, Infinity];
-  const hi = [-Infinity, -Infinity];
-  for (const p of points) {
-    const { x, y, z } = toScreen(p, camera, width, height);
-    if (!(z < 1)) inside = false;
-    const xy = [x, y];
-    for (const k of [0, 1]) {
-      lo[k] = Math.min(lo[k], xy[k]);
-      hi[k] = Math.max(hi[k], xy[k]);
-    }
-  }
-  inside = inside && lo[0] >= m && lo[1] >= m && hi[0] <= width - m && hi[1] <= height - m;
+  const q = points.map((p) => toScreen(p, camera, width, height));
+  const xs = q.map((s) => s.x);
+  const ys = q.map((s) => s.y);
+  const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  const inside = q.every((s) => s.z < 1) && x0 >= m && y0 >= m && x1 <= width - m && y1 <= height - m;
   const room = [Math.max(width - 2 * LABEL_MARGIN, 1), Math.max(height - 2 * LABEL_MARGIN, 1)];
-  return { inside, fill: Math.max((hi[0] - lo[0]) / room[0], (hi[1] - lo[1]) / room[1]) };
+  return { inside, fill: Math.max((x1 - x0) / room[0], (y1 - y0) / room[1]) };
 }
 
 /** The renderer, its canvas in `container`, the scene, the camera (z up) and the orbit controls. */
