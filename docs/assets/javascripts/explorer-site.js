@@ -19,17 +19,18 @@ function constants() {
 
 /** The `state` the view draws and prints, from the exact core (see the view contract). */
 export function computeState(a, b, c, winding, precision, maxPrecision) {
+  const failed = (error, field) =>
+    ({ ok: false, error, status: error, field, readout: readoutRows(null, winding), summary: error });
   let p;
   try {
     // the package's rule and message (trinormal.validation), at most maxPrecision when given
     p = window.TrinormalCore.checkPrecision(precision, "precision", maxPrecision);
   } catch (err) {
     if (!(err instanceof window.TrinormalCore.InputError)) throw err;
-    const error = err.message;
-    return { ok: false, error, status: error, field: "precision", readout: readoutRows(null, winding), summary: error };
+    return failed(err.message, "precision");
   }
   const r = window.TrinormalCore.compute(a, b, c, winding, p);
-  if (!r.ok) return { ok: false, error: r.status, status: r.status, field: r.field, readout: readoutRows(null, winding), summary: r.status };
+  if (!r.ok) return failed(r.status, r.field);
   const f = r.floats;
   return {
     ok: true,
@@ -256,8 +257,7 @@ function boundsFor(values) {
 async function mountCalculator(host) {
   const calc = document.getElementById("tn-calculator");
   const values = readCalculator();
-  let model = null;
-  model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
+  const model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
     // the view moved a vertex or flipped the order: write the form, let the calculator update
     // (its input event comes back to sync() below while the edit is being answered)
     let last = null;
@@ -303,7 +303,7 @@ async function mountStandalone(host) {
   try {
     initial = JSON.parse(host.dataset.explorer || "{}");
   } catch (err) {
-    initial = {};
+    // not JSON: the explorer's defaults
   }
   const model = createModel(initial, null);
   const view = await loadView();
