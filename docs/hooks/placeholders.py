@@ -71,15 +71,14 @@ def _notebook_list(args: list[str], page: Page, config: MkDocsConfig) -> str:
     for path in notebook_paths():
         title = notebook_title(path)
         summary = notebook_summary(path)
-        link = f"notebooks/{path.name}"
-        href = f"{path.stem}/{path.name}"
-        download = f'<a href="{href}" download>download <code>{path.name}</code></a>'
-        rows.append(
-            f"- **[{title}]({link})** ({download})" + (f"  \n  {summary}" if summary else "")
+        download = (
+            f'<a href="{path.stem}/{path.name}" download>download <code>{path.name}</code></a>'
         )
-    if not rows:
-        return "*No notebooks yet.*"
-    return "\n".join(rows)
+        rows.append(
+            f"- **[{title}](notebooks/{path.name})** ({download})"
+            + (f"  \n  {summary}" if summary else "")
+        )
+    return "\n".join(rows) or "*No notebooks yet.*"
 
 
 def _config_url(args: list[str], page: Page, config: MkDocsConfig) -> str:
