@@ -14,7 +14,7 @@ const BUNDLE = new URL("../explorer/explorer.js", import.meta.url).href;
 const KEYS = ["a", "b", "c", "winding", "precision"];
 
 function constants() {
-  return window.TRINORMAL_CONSTANTS || { fields: [], palette: {}, view: {} };
+  return window.TRINORMAL_CONSTANTS;
 }
 
 /** The `state` the view draws and prints, from the exact core (see the view contract). */
@@ -69,20 +69,19 @@ function readoutRows(out, winding) {
  */
 export function createModel(initial, onEdit, maxPrecision) {
   const C = constants();
-  const view = C.view || {};
   const data = {
     a: ["0", "0", "0"],
     b: ["1", "0", "0"],
     c: ["0", "1", "0"],
     winding: "ABC",
     precision: 4,
-    step: view.step || "0.1",
-    bounds: view.bounds || [-5, 5],
+    step: C.view.step,
+    bounds: C.view.bounds,
     show_parallelogram: false,
     show_unit_normal: false,
     show_readout: true,
     show_controls: false,
-    palette: C.palette || {},
+    palette: C.palette,
     message: "",
     version: 0,
     set_at: {},
@@ -243,8 +242,7 @@ function readCalculator() {
 
 /** The bounds a drag may use: the view's default range, widened to hold the typed values. */
 function boundsFor(values) {
-  const base = (constants().view || {}).bounds || [-5, 5];
-  let [lo, hi] = base;
+  let [lo, hi] = constants().view.bounds;
   for (const key of ["a", "b", "c"]) {
     for (const s of values[key]) {
       const x = Number(s);
