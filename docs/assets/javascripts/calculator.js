@@ -9,7 +9,7 @@
 var FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"];
 /* Each output field's <output> id, from the package's field spec (trinormal.fields). */
 var OUTPUTS = {};
-((window.TRINORMAL_CONSTANTS || {}).fields || []).forEach(function (field) {
+window.TRINORMAL_CONSTANTS.fields.forEach(function (field) {
   OUTPUTS[field.key] = field.output_id;
 });
 var DEFAULTS = { a: ["0", "0", "0"], b: ["1", "0", "0"], c: ["0", "1", "0"], w: "ABC", p: 4 };
@@ -18,11 +18,10 @@ var SVG_NS = "http://www.w3.org/2000/svg";
 
 /* The x, y, z colours of the package's colour code (trinormal.colors), for the page's scheme. */
 function axisColors() {
-  var palette = (window.TRINORMAL_CONSTANTS || {}).palette || {};
+  var palette = window.TRINORMAL_CONSTANTS.palette;
   var dark = document.body.getAttribute("data-md-color-scheme") === "slate";
   return ["x", "y", "z"].map(function (axis) {
-    var entry = palette[axis];
-    return entry ? (dark ? entry.dark : entry.light) : "currentColor";
+    return dark ? palette[axis].dark : palette[axis].light;
   });
 }
 
