@@ -1,17 +1,11 @@
 """The API reference shows public names only, and links every mention of one.
 
-Two parts, each at its stage of the build:
-
 * :class:`PublicOnly`, a griffe extension (mkdocs.yml, mkdocstrings' ``extensions``): a
-  default or a value written with a private name (``expected=_MISSING``,
-  ``result = self._compute(...)``) would show that name in a signature or an attribute.
-  A default is shown as Python shows it (its ``repr``, what ``help()`` prints), a value
-  not at all.
-* :func:`link_public_names` (the hook's ``on_env``, once every page is rendered and before
-  autorefs resolves the links): a docstring that names a public function, class or
-  constant in code (```FIELDS```, ```TriangleNormal.format(4)```) gets a link to where
-  it is documented, without a cross-reference written in the docstring. The target is
-  whatever autorefs knows for the name, so a name is linked only where it is documented.
+  default written with a private name (``expected=_MISSING``) is shown as its ``repr``,
+  as ``help()`` shows it; such a value is not shown at all.
+* :func:`link_public_names` (the hook's ``on_env``, before autorefs resolves the links):
+  inline code naming a public name (```FIELDS```, ```TriangleNormal.format(4)```) links to
+  where autorefs knows it is documented, without a cross-reference in the docstring.
 
 This module imports no module beside it: griffe loads it by its path, on its own.
 """

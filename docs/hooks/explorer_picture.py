@@ -6,7 +6,10 @@ is the package's own description of the same triangle.
 
 from __future__ import annotations
 
+import html
 from typing import Any
+
+from site_paths import EXPLORER_PNG
 
 #: The triangle the picture shows: tilted, so that the normal leans out of every axis plane.
 PICTURE: dict[str, Any] = {"a": (0, 0, 0), "b": (2, 0, 0), "c": (0, 1, 1), "precision": 4}
@@ -29,3 +32,11 @@ def explorer_alt() -> str:
 
     result = triangle_normal(PICTURE["a"], PICTURE["b"], PICTURE["c"])
     return str(alt_text(result, PICTURE["precision"]))
+
+
+def explorer_img() -> str:
+    """The picture as HTML on a notebook's page, in the place of a widget."""
+    return (
+        f'<p><img src="../../{EXPLORER_PNG}" alt="{html.escape(explorer_alt())}" '
+        'width="720" loading="lazy"></p>'
+    )

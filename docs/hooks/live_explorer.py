@@ -14,9 +14,8 @@ import json
 from pathlib import Path
 from typing import Any, TypeGuard
 
-from explorer_picture import explorer_alt
+from explorer_picture import explorer_img
 from site_constants import view_defaults
-from site_paths import EXPLORER_PNG
 
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
@@ -86,12 +85,10 @@ def _is_explorer_call(node: object) -> TypeGuard[ast.Call]:
 
 
 def _explorer_shown(source: str, known: dict[str, dict[str, Any]]) -> dict[str, Any] | None:
-    """What a cell shows of an explorer, from its source: the literal arguments, or None.
+    """The literal arguments of the explorer a cell shows (its last line, or any call), or None.
 
-    ``known`` maps variable names to the explorers made so far (``ex = Explorer(...)``,
-    updated by ``ex.set(...)``); the cell's assignments and calls update it. The cell shows
-    an explorer when its last line is ``Explorer(...)``, a known name or an attribute of one
-    (``ex``, ``ex.view``), or when it calls ``Explorer(...)`` anywhere (``display(...)``).
+    ``known`` (variable name -> arguments so far, from ``ex = Explorer(...)`` and
+    ``ex.set(...)``) is updated by the cell's statements.
     """
     try:
         tree = ast.parse(source)
@@ -134,7 +131,7 @@ def _view_init(values: dict[str, Any]) -> dict[str, Any]:
     """Initial values for the site's view: the explorer's own defaults, then ``values``."""
     from trinormal.explorer.state import coordinate_text
 
-    init: dict[str, Any] = {k: v for k, v in view_defaults().items()}
+    init = dict(view_defaults())
     for key in EXPLORER_KEYS:
         if key not in values:
             continue
@@ -157,13 +154,10 @@ def _view_init(values: dict[str, Any]) -> dict[str, Any]:
 def explorer_outputs(nb: dict[str, Any], path: Path) -> dict[int, dict[str, Any]]:
     """The outputs of a notebook that show an explorer, by ``id()``, with the view's initial values.
 
-    An output shows an explorer when the widget it displays is, or contains, an
-    ``ExplorerView`` in the notebook's stored widget state; its stored values
-    start the live view. On the explorer notebook (``*explorer*.ipynb``) with no
-    ExplorerView in its stored widget state (``make notebooks`` stores none), the first
-    widget output of each cell that shows an explorer (see :func:`_explorer_shown`) is
-    used, started from the literal arguments in the notebook's code (or the explorer's
-    defaults).
+    An output whose widget is, or contains, a stored ``ExplorerView`` starts from its stored
+    values. On the explorer notebook (``*explorer*.ipynb``) with no stored ExplorerView
+    (``make notebooks`` stores none), the first widget output of each cell that shows an
+    explorer starts from the literal arguments in the code (see :func:`_explorer_shown`).
     """
     models = _widget_models(nb)
     found: dict[int, dict[str, Any]] = {}
@@ -203,7 +197,5 @@ def live_explorer_html(init: dict[str, Any]) -> str:
         '<noscript><div class="admonition note tn-widget-note tn-explorer-fallback">'
         '<p class="admonition-title">Interactive widget</p>'
         "<p>With JavaScript on, this page shows the explorer live. Here is a picture of it.</p>"
-        f'<p><img src="../../{EXPLORER_PNG}" alt="{html.escape(explorer_alt())}" '
-        'width="720" loading="lazy"></p>'
-        "</div></noscript></div>"
+        f"{explorer_img()}</div></noscript></div>"
     )

@@ -15,9 +15,9 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
-from explorer_picture import explorer_alt
+from explorer_picture import explorer_img
 from live_explorer import WIDGET_STATE, WIDGET_VIEW, explorer_outputs, live_explorer_html
-from site_paths import EXPLORER_PNG, NOTEBOOKS
+from site_paths import NOTEBOOKS
 
 
 def notebook_paths() -> list[Path]:
@@ -90,9 +90,7 @@ def widget_note(text_plain: str) -> str:
         "no Python kernel to compute with, so here you see a picture of the explorer instead. "
         'For a live version in this browser, open the <a href="../../calculator/">Calculator</a>.'
         "</p>"
-        f'<p><img src="../../{EXPLORER_PNG}" alt="{html.escape(explorer_alt())}" '
-        'width="720" loading="lazy"></p>'
-        f"{readout}</div>"
+        f"{explorer_img()}{readout}</div>"
     )
 
 
@@ -133,6 +131,29 @@ def picture_output(out: dict[str, Any]) -> dict[str, Any]:
     return {"output_type": "display_data", "metadata": {}, "data": {"text/html": img}}
 
 
+def html_output(text: str) -> dict[str, Any]:
+    """A notebook output that shows ``text`` as HTML."""
+    return {"output_type": "display_data", "metadata": {}, "data": {"text/html": text}}
+
+
+def static_output(out: dict[str, Any], live: dict[int, dict[str, Any]]) -> dict[str, Any]:
+    """One output as the static page shows it: ``live`` holds the explorers (by ``id()``)."""
+    data = out.get("data") or {}
+    if id(out) in live:
+        return html_output(live_explorer_html(live[id(out)]))
+    if "image/png" in data and isinstance(out.get("metadata"), dict):
+        return picture_output(out)
+    if WIDGET_VIEW not in data and WIDGET_STATE not in data:
+        return out
+    plain = data.get("text/plain", "")
+    if isinstance(plain, list):
+        plain = "".join(plain)
+    if re.fullmatch(r"\s*(?:[A-Z]\w*\(.*\))?\s*", plain, flags=re.S):
+        plain = ""  # a widget's repr, IntSlider(value=0), is noise, not a readout
+    note = mesh_view_note if plain.startswith("Mesh view:") else widget_note
+    return html_output(note(plain))
+
+
 def static_notebook(path: Path) -> dict[str, Any]:
     """A copy of a notebook with every widget output replaced by a static note.
 
@@ -143,40 +164,8 @@ def static_notebook(path: Path) -> dict[str, Any]:
     live = explorer_outputs(nb, path)
     nb.get("metadata", {}).pop("widgets", None)
     for cell in nb.get("cells", []):
-        outputs = cell.get("outputs")
-        if not outputs:
-            continue
-        new = []
-        for out in outputs:
-            data = out.get("data") or {}
-            if id(out) in live:
-                new.append(
-                    {
-                        "output_type": "display_data",
-                        "metadata": {},
-                        "data": {"text/html": live_explorer_html(live[id(out)])},
-                    }
-                )
-            elif "image/png" in data and isinstance(out.get("metadata"), dict):
-                new.append(picture_output(out))
-            elif WIDGET_VIEW in data or WIDGET_STATE in data:
-                plain = data.get("text/plain", "")
-                if isinstance(plain, list):
-                    plain = "".join(plain)
-                if re.fullmatch(r"\s*(?:[A-Z]\w*\(.*\))?\s*", plain, flags=re.S):
-                    plain = ""  # a widget's repr, IntSlider(value=0), is noise, not a readout
-                mesh_view = plain.startswith("Mesh view:")
-                note = mesh_view_note(plain) if mesh_view else widget_note(plain)
-                new.append(
-                    {
-                        "output_type": "display_data",
-                        "metadata": {},
-                        "data": {"text/html": note},
-                    }
-                )
-            else:
-                new.append(out)
-        cell["outputs"] = new
+        if cell.get("outputs"):
+            cell["outputs"] = [static_output(out, live) for out in cell["outputs"]]
     return nb
 
 
@@ -184,17 +173,15 @@ _CDN_SCRIPT = re.compile(
     r"<script[^>]*\bsrc=\"(?:https?:)?//[^\"]*\"[^>]*>\s*</script>"  # any external script
     r"|<script[^>]*\bsrc=\"\"[^>]*>\s*</script>"  # the empty MathJax URL
     r"|<script type=\"text/x-mathjax-config\">.*?</script>"  # MathJax 2 configuration
-    r"|<script type=\"module\">(?:(?!</script>).)*?mermaid(?:(?!</script>).)*?</script>",
+    r"|<script type=\"module\">(?:(?!</script>).)*?mermaid(?:(?!</script>).)*?</script>"
+    r"|<!-- (?:Load mathjax|MathJax configuration|End of mathjax configuration) -->",
     flags=re.S,
 )
 
 
 def clean_notebook_html(body: str) -> str:
-    """Remove loaders that would fetch scripts from another origin."""
-    body = _CDN_SCRIPT.sub("", body)
-    body = re.sub(r"<!-- Load mathjax -->|<!-- MathJax configuration -->", "", body)
-    body = body.replace("<!-- End of mathjax configuration -->", "")
-    return body
+    """Remove loaders that would fetch scripts from another origin, and their comments."""
+    return _CDN_SCRIPT.sub("", body)
 
 
 def install_notebook_filter() -> None:
@@ -209,8 +196,6 @@ def install_notebook_filter() -> None:
     def nb2html(nb_path: str, *args: Any, **kwargs: Any) -> str:
         path = Path(nb_path)
         kwargs["custom_mathjax_url"] = ""
-        if path.suffix != ".ipynb":
-            return clean_notebook_html(original(nb_path, *args, **kwargs))
         nb = static_notebook(path)
         with tempfile.TemporaryDirectory() as tmp:
             copy_path = Path(tmp) / path.name

@@ -14,45 +14,21 @@ import os
 import re
 import shlex
 from collections.abc import Callable
+from unittest import mock
 
 from api_reference import mesh_api_markdown
-from explorer_picture import explorer_alt
 from mkdocs.config.defaults import MkDocsConfig
 from mkdocs.structure.pages import Page
 from notebook_pages import notebook_paths, notebook_summary, notebook_title
 from site_paths import MESH_EXAMPLES, relative_root
 
+from trinormal import guide
+
 PLACEHOLDER = re.compile(r"\{\{\s*trinormal:(\w+)((?:\s+[^}]*?)?)\s*\}\}")
 
 
-def _comparison_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    from trinormal.guide import comparison_table_markdown
-
-    return str(comparison_table_markdown(escape_pipes=True))
-
-
-def _precision_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    from trinormal.guide import precision_table_markdown
-
-    return str(precision_table_markdown())
-
-
-def _worked_example(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    from trinormal.guide import worked_example_markdown
-
-    return str(worked_example_markdown())
-
-
 def _mistakes(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    from trinormal.guide import MISTAKES
-
-    return "\n".join(f"- **{name[:1].upper()}{name[1:]}.** {text}" for name, text in MISTAKES)
-
-
-def _normalising_table(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    from trinormal.guide import normalising_table_markdown
-
-    return str(normalising_table_markdown())
+    return "\n".join(f"- **{name[:1].upper()}{name[1:]}.** {text}" for name, text in guide.MISTAKES)
 
 
 def _value(args: list[str], page: Page, config: MkDocsConfig) -> str:
@@ -72,18 +48,16 @@ def _cli(args: list[str], page: Page, config: MkDocsConfig) -> str:
     from trinormal.cli import main
 
     out, err = io.StringIO(), io.StringIO()
-    columns = os.environ.get("COLUMNS")
-    os.environ["COLUMNS"] = "88"  # argparse wraps --help to the terminal: keep builds reproducible
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+    with (
+        # argparse wraps --help to the terminal: keep builds reproducible
+        mock.patch.dict(os.environ, {"COLUMNS": "88"}),
+        contextlib.redirect_stdout(out),
+        contextlib.redirect_stderr(err),
+    ):
         try:
             status = main(args)
         except SystemExit as exc:  # argparse's --help exits
             status = exc.code if isinstance(exc.code, int) else 0
-        finally:
-            if columns is None:
-                os.environ.pop("COLUMNS", None)
-            else:
-                os.environ["COLUMNS"] = columns
     text = out.getvalue() + err.getvalue()
     lines = ["```console", "$ trinormal " + shlex.join(args), text.rstrip("\n")]
     if status:
@@ -97,19 +71,14 @@ def _notebook_list(args: list[str], page: Page, config: MkDocsConfig) -> str:
     for path in notebook_paths():
         title = notebook_title(path)
         summary = notebook_summary(path)
-        link = f"notebooks/{path.name}"
-        href = f"{path.stem}/{path.name}"
-        download = f'<a href="{href}" download>download <code>{path.name}</code></a>'
-        rows.append(
-            f"- **[{title}]({link})** ({download})" + (f"  \n  {summary}" if summary else "")
+        download = (
+            f'<a href="{path.stem}/{path.name}" download>download <code>{path.name}</code></a>'
         )
-    if not rows:
-        return "*No notebooks yet.*"
-    return "\n".join(rows)
-
-
-def _explorer_alt(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    return explorer_alt().replace("[", "(").replace("]", ")")
+        rows.append(
+            f"- **[{title}](notebooks/{path.name})** ({download})"
+            + (f"  \n  {summary}" if summary else "")
+        )
+    return "\n".join(rows) or "*No notebooks yet.*"
 
 
 def _config_url(args: list[str], page: Page, config: MkDocsConfig) -> str:
@@ -122,12 +91,7 @@ def _config_url(args: list[str], page: Page, config: MkDocsConfig) -> str:
 
 
 def _result_rows(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    """``result_rows``: the calculator's results, one row per output field of the package.
-
-    Each row's heading and ``<output>`` id come from ``trinormal.fields.FIELDS``; the
-    values are the package's own for the page's starting triangle, so the table is
-    right before any script runs.
-    """
+    """``result_rows``: one row per field of ``FIELDS``, filled for the starting triangle."""
     from trinormal import triangle_normal
     from trinormal.fields import FIELDS
 
@@ -153,11 +117,7 @@ def _limit(args: list[str], page: Page, config: MkDocsConfig) -> str:
 
 
 def _mesh_examples(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    """``mesh_examples``: one button per example model of the mesh page (list items).
-
-    The damaged models of `trinormal.mesh_page.EXAMPLES`, then the printable
-    triangle of `trinormal.printmodel.SAMPLE` (a model with nothing to fix).
-    """
+    """``mesh_examples``: a button (list item) per example model of the mesh page."""
     from trinormal.mesh_page import EXAMPLES
     from trinormal.printmodel import SAMPLE
 
@@ -195,18 +155,12 @@ def _mesh_weld(args: list[str], page: Page, config: MkDocsConfig) -> str:
     return repr(site_constants()["weld"][name])
 
 
-def _mesh_api(args: list[str], page: Page, config: MkDocsConfig) -> str:
-    """``mesh_api PART...``: the trinormal.mesh names those modules define, documented."""
-    return mesh_api_markdown(args)
-
-
 HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
-    "explorer_alt": _explorer_alt,
-    "comparison_table": _comparison_table,
-    "precision_table": _precision_table,
-    "worked_example": _worked_example,
+    "comparison_table": lambda *_: guide.comparison_table_markdown(escape_pipes=True),
+    "precision_table": lambda *_: guide.precision_table_markdown(),
+    "worked_example": lambda *_: guide.worked_example_markdown(),
     "mistakes": _mistakes,
-    "normalising_table": _normalising_table,
+    "normalising_table": lambda *_: guide.normalising_table_markdown(),
     "value": _value,
     "cli": _cli,
     "notebook_list": _notebook_list,
@@ -216,7 +170,7 @@ HANDLERS: dict[str, Callable[[list[str], Page, MkDocsConfig], str]] = {
     "mesh_examples": _mesh_examples,
     "mesh_limit": _mesh_limit,
     "mesh_units": _mesh_units,
-    "mesh_api": _mesh_api,
+    "mesh_api": lambda args, *_: mesh_api_markdown(args),
     "mesh_weld": _mesh_weld,
 }
 

@@ -32,6 +32,7 @@ def site_constants() -> dict[str, Any]:
     from trinormal.core import VERDICTS
     from trinormal.display import SCI_ABOVE_LOG10
     from trinormal.fields import fields_spec
+    from trinormal.mesh_page import site_constants as mesh_page_constants
     from trinormal.tolerances import DEFAULT_TOL
     from trinormal.validation import MESSAGES, limits
 
@@ -57,13 +58,6 @@ def print_constants() -> dict[str, Any]:
     from trinormal.printmodel import site_constants as print_site_constants
 
     return print_site_constants()
-
-
-def mesh_page_constants() -> dict[str, Any]:
-    """The mesh page's messages, limits, report rows and tolerance, from the package."""
-    from trinormal.mesh_page import site_constants as mesh_constants
-
-    return mesh_constants()
 
 
 def constants_js() -> str:

@@ -3,15 +3,12 @@
 mkdocs loads this file (``hooks:`` in mkdocs.yml) with docs/hooks/ on ``sys.path``, so the
 modules beside it import by their names; each is named for what it answers:
 
-* ``placeholders`` — ``{{ trinormal:NAME ARGS }}`` in a page becomes text generated from the
-  package (the guide's tables, the worked example, CLI sessions, values and limits);
-* ``notebook_pages`` — the Notebooks section lists every ``notebooks/*.ipynb``; each page has
-  its widget outputs replaced by a note, the explorer's picture and its readout, and no
-  loader of scripts from a CDN;
-* ``live_explorer`` — on the explorer notebook's page the explorer's output is the live view;
-* ``explorer_picture`` — ``assets/images/explorer.png``, drawn by the package, and its alt text;
-* ``site_constants`` — ``assets/javascripts/trinormal-constants.js``, written from the
-  package (the tests import ``site_constants`` and ``constants_js`` from this module);
+* ``placeholders`` — ``{{ trinormal:NAME ARGS }}`` in a page, written by the package;
+* ``notebook_pages`` — the Notebooks section, each page without widgets or a CDN;
+* ``live_explorer`` — the live view on the explorer notebook's page;
+* ``explorer_picture`` — ``assets/images/explorer.png`` and its alt text;
+* ``site_constants`` — ``assets/javascripts/trinormal-constants.js`` (the tests import
+  ``site_constants`` and ``constants_js`` from this module);
 * ``math_pages`` — KaTeX on the pages that have math, and only there;
 * ``search_text`` — the search index with its math as plain text;
 * ``api_reference`` — the API pages link every mention of a public name;

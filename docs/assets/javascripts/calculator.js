@@ -2,28 +2,26 @@
  * The Calculator page: reads the nine coordinates, the winding and the precision,
  * computes with TrinormalCore (exact, the same strings as the Python package) on
  * every keystroke, draws the bar charts of N and of the unit normal and keeps the state
- * in the URL. The bars' colours come from window.TRINORMAL_CONSTANTS (written at build
- * time from trinormal.colors). The 3D view (explorer-site.js) follows the form through
- * its input events and writes into it when a vertex is dragged. An ES module (mkdocs.yml), so
- * its names stay its own.
+ * in the URL. The 3D view (explorer-site.js) follows the form through its input events
+ * and writes into it when a vertex is dragged. An ES module (mkdocs.yml), so its names
+ * stay its own.
  */
 var FIELDS = ["ax", "ay", "az", "bx", "by", "bz", "cx", "cy", "cz"];
 /* Each output field's <output> id, from the package's field spec (trinormal.fields). */
 var OUTPUTS = {};
-((window.TRINORMAL_CONSTANTS || {}).fields || []).forEach(function (field) {
+window.TRINORMAL_CONSTANTS.fields.forEach(function (field) {
   OUTPUTS[field.key] = field.output_id;
 });
 var DEFAULTS = { a: ["0", "0", "0"], b: ["1", "0", "0"], c: ["0", "1", "0"], w: "ABC", p: 4 };
 var DASH = "\u2014";
 var SVG_NS = "http://www.w3.org/2000/svg";
 
-/* The x, y, z colours of the package's colour code, for the page's current scheme. */
+/* The x, y, z colours of the package's colour code (trinormal.colors), for the page's scheme. */
 function axisColors() {
-  var palette = (window.TRINORMAL_CONSTANTS || {}).palette || {};
+  var palette = window.TRINORMAL_CONSTANTS.palette;
   var dark = document.body.getAttribute("data-md-color-scheme") === "slate";
   return ["x", "y", "z"].map(function (axis) {
-    var entry = palette[axis];
-    return entry ? (dark ? entry.dark : entry.light) : "currentColor";
+    return dark ? palette[axis].dark : palette[axis].light;
   });
 }
 
@@ -127,15 +125,19 @@ function fieldId(name) {
   return name && name.length === 3 ? name.replace(".", "").toLowerCase() : name;
 }
 
+/* A new SVG element in `svg`, with its attributes and its text. */
+function addSvg(svg, tag, attributes, text) {
+  var el = document.createElementNS(SVG_NS, tag);
+  Object.keys(attributes).forEach(function (name) {
+    el.setAttribute(name, attributes[name]);
+  });
+  if (text !== undefined) el.textContent = text;
+  svg.appendChild(el);
+}
+
 function clearChart(svg, message) {
-  while (svg.firstChild) svg.removeChild(svg.firstChild);
-  var t = document.createElementNS(SVG_NS, "text");
-  t.setAttribute("x", "50%");
-  t.setAttribute("y", "50%");
-  t.setAttribute("text-anchor", "middle");
-  t.setAttribute("class", "tn-chart-note");
-  t.textContent = message;
-  svg.appendChild(t);
+  svg.replaceChildren();
+  addSvg(svg, "text", { x: "50%", y: "50%", "text-anchor": "middle", class: "tn-chart-note" }, message);
 }
 
 /*
@@ -143,44 +145,22 @@ function clearChart(svg, message) {
  * names: the row labels; texts: the printed values.
  */
 function drawBars(svg, values, names, texts) {
-  while (svg.firstChild) svg.removeChild(svg.firstChild);
+  svg.replaceChildren();
   var colors = axisColors();
   var width = 480;
   var rowH = 44;
   var left = 48;
   var mid = left + (width - left - 16) / 2;
   var half = (width - left - 16) / 2;
-  var axis = document.createElementNS(SVG_NS, "line");
-  axis.setAttribute("x1", mid);
-  axis.setAttribute("x2", mid);
-  axis.setAttribute("y1", 4);
-  axis.setAttribute("y2", 3 * rowH + 4);
-  axis.setAttribute("class", "tn-chart-axis");
-  svg.appendChild(axis);
+  addSvg(svg, "line", { x1: mid, x2: mid, y1: 4, y2: 3 * rowH + 4, class: "tn-chart-axis" });
   values.forEach(function (value, i) {
     var y = i * rowH + 10;
-    var name = document.createElementNS(SVG_NS, "text");
-    name.setAttribute("x", 8);
-    name.setAttribute("y", y + 20);
-    name.setAttribute("class", "tn-chart-label");
-    name.textContent = names[i];
-    svg.appendChild(name);
+    addSvg(svg, "text", { x: 8, y: y + 20, class: "tn-chart-label" }, names[i]);
     var len = Math.min(Math.abs(value), 1) * half;
-    var bar = document.createElementNS(SVG_NS, "rect");
-    bar.setAttribute("x", value < 0 ? mid - len : mid);
-    bar.setAttribute("y", y);
-    bar.setAttribute("width", Math.max(len, 0));
-    bar.setAttribute("height", 28);
-    bar.setAttribute("fill", colors[i]);
-    svg.appendChild(bar);
-    var text = document.createElementNS(SVG_NS, "text");
+    addSvg(svg, "rect", { x: value < 0 ? mid - len : mid, y: y, width: Math.max(len, 0), height: 28, fill: colors[i] });
     var right = value >= 0;
-    text.setAttribute("x", right ? mid - 6 : mid + 6);
-    text.setAttribute("y", y + 20);
-    text.setAttribute("text-anchor", right ? "end" : "start");
-    text.setAttribute("class", "tn-chart-value");
-    text.textContent = texts[i];
-    svg.appendChild(text);
+    var anchor = right ? "end" : "start";
+    addSvg(svg, "text", { x: right ? mid - 6 : mid + 6, y: y + 20, "text-anchor": anchor, class: "tn-chart-value" }, texts[i]);
   });
 }
 
@@ -192,38 +172,28 @@ function labelled(names, parts) {
     .join(", ");
 }
 
-function drawChart(result) {
-  var svg = $("chart");
-  if (!result.ok) {
-    svg.setAttribute("aria-label", "Bar chart of the normal components: no chart, the input is not readable.");
-    clearChart(svg, "No chart: fix the input first.");
-    return;
-  }
-  var parts = result.out.normal.slice(1, -1).split(", ");
-  var names = ["Nx", "Ny", "Nz"];
-  svg.setAttribute("aria-label", "Bar chart of the normal components: " + labelled(names, parts) + ".");
-  drawBars(svg, result.chart, names, parts);
-}
-
-/* The unit normal on a fixed scale from -1 to 1 (no chart when it is undefined). */
-function drawUnitChart(result) {
-  var svg = $("chart-unit");
-  if (!svg) return;
-  var title = "Bar chart of the unit normal components: ";
+/* One chart of the printed vector out[key], its bars drawn from `values` (none: undefined). */
+function drawChart(svg, title, names, result, key, values) {
   if (!result.ok) {
     svg.setAttribute("aria-label", title + "no chart, the input is not readable.");
     clearChart(svg, "No chart: fix the input first.");
     return;
   }
-  if (result.degenerate || !result.floats || !result.floats.unit_normal) {
+  if (!values) {
     svg.setAttribute("aria-label", title + "none, the unit normal is undefined.");
     clearChart(svg, "No unit normal: the triangle is degenerate.");
     return;
   }
-  var parts = result.out.unit_normal.slice(1, -1).split(", ");
-  var names = ["x", "y", "z"];
+  var parts = result.out[key].slice(1, -1).split(", ");
   svg.setAttribute("aria-label", title + labelled(names, parts) + ".");
-  drawBars(svg, result.floats.unit_normal, names, parts);
+  drawBars(svg, values, names, parts);
+}
+
+/* N's chart, and the unit normal's on a fixed scale from -1 to 1 (none when it is undefined). */
+function drawCharts(result) {
+  var unit = result.ok && !result.degenerate && result.floats && result.floats.unit_normal;
+  drawChart($("chart"), "Bar chart of the normal components: ", ["Nx", "Ny", "Nz"], result, "normal", result.chart);
+  drawChart($("chart-unit"), "Bar chart of the unit normal components: ", ["x", "y", "z"], result, "unit_normal", unit);
 }
 
 /*
@@ -255,8 +225,7 @@ function update(pushUrl, fromView) {
   status.textContent = result.status;
   status.setAttribute("data-state", !result.ok ? "error" : result.degenerate ? "degenerate" : "ok");
   setInvalid(result.ok ? null : fieldId(result.field));
-  drawChart(result);
-  drawUnitChart(result);
+  drawCharts(result);
   lastResult = result;
 }
 
@@ -267,10 +236,7 @@ var themeObserver = null;
 function followTheme() {
   if (themeObserver) themeObserver.disconnect();
   themeObserver = new MutationObserver(function () {
-    if (lastResult) {
-      drawChart(lastResult);
-      drawUnitChart(lastResult);
-    }
+    if (lastResult) drawCharts(lastResult);
   });
   themeObserver.observe(document.body, { attributes: true, attributeFilter: ["data-md-color-scheme"] });
 }

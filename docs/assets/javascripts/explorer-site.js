@@ -14,22 +14,23 @@ const BUNDLE = new URL("../explorer/explorer.js", import.meta.url).href;
 const KEYS = ["a", "b", "c", "winding", "precision"];
 
 function constants() {
-  return window.TRINORMAL_CONSTANTS || { fields: [], palette: {}, view: {} };
+  return window.TRINORMAL_CONSTANTS;
 }
 
 /** The `state` the view draws and prints, from the exact core (see the view contract). */
 export function computeState(a, b, c, winding, precision, maxPrecision) {
+  const failed = (error, field) =>
+    ({ ok: false, error, status: error, field, readout: readoutRows(null, winding), summary: error });
   let p;
   try {
     // the package's rule and message (trinormal.validation), at most maxPrecision when given
     p = window.TrinormalCore.checkPrecision(precision, "precision", maxPrecision);
   } catch (err) {
     if (!(err instanceof window.TrinormalCore.InputError)) throw err;
-    const error = err.message;
-    return { ok: false, error, status: error, field: "precision", readout: readoutRows(null, winding), summary: error };
+    return failed(err.message, "precision");
   }
   const r = window.TrinormalCore.compute(a, b, c, winding, p);
-  if (!r.ok) return { ok: false, error: r.status, status: r.status, field: r.field, readout: readoutRows(null, winding), summary: r.status };
+  if (!r.ok) return failed(r.status, r.field);
   const f = r.floats;
   return {
     ok: true,
@@ -68,20 +69,19 @@ function readoutRows(out, winding) {
  */
 export function createModel(initial, onEdit, maxPrecision) {
   const C = constants();
-  const view = C.view || {};
   const data = {
     a: ["0", "0", "0"],
     b: ["1", "0", "0"],
     c: ["0", "1", "0"],
     winding: "ABC",
     precision: 4,
-    step: view.step || "0.1",
-    bounds: view.bounds || [-5, 5],
+    step: C.view.step,
+    bounds: C.view.bounds,
     show_parallelogram: false,
     show_unit_normal: false,
     show_readout: true,
     show_controls: false,
-    palette: C.palette || {},
+    palette: C.palette,
     message: "",
     version: 0,
     set_at: {},
@@ -242,8 +242,7 @@ function readCalculator() {
 
 /** The bounds a drag may use: the view's default range, widened to hold the typed values. */
 function boundsFor(values) {
-  const base = (constants().view || {}).bounds || [-5, 5];
-  let [lo, hi] = base;
+  let [lo, hi] = constants().view.bounds;
   for (const key of ["a", "b", "c"]) {
     for (const s of values[key]) {
       const x = Number(s);
@@ -256,8 +255,7 @@ function boundsFor(values) {
 async function mountCalculator(host) {
   const calc = document.getElementById("tn-calculator");
   const values = readCalculator();
-  let model = null;
-  model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
+  const model = createModel({ ...values, bounds: boundsFor(values), show_readout: false }, (changes) => {
     // the view moved a vertex or flipped the order: write the form, let the calculator update
     // (its input event comes back to sync() below while the edit is being answered)
     let last = null;
@@ -303,7 +301,7 @@ async function mountStandalone(host) {
   try {
     initial = JSON.parse(host.dataset.explorer || "{}");
   } catch (err) {
-    initial = {};
+    // not JSON: the explorer's defaults
   }
   const model = createModel(initial, null);
   const view = await loadView();
