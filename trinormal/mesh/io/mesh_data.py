@@ -16,9 +16,13 @@ from typing import Any
 import numpy as np
 
 from trinormal.mesh._arrays import FloatArray, IntArray
-from trinormal.mesh.polygons import Split, split_polygons
+from trinormal.mesh.polygons import split_polygons
 
 __all__ = ["MeshData"]
+
+
+def _none() -> IntArray:
+    return np.empty(0, dtype=np.intp)
 
 
 @dataclass(frozen=True)
@@ -77,8 +81,8 @@ class MeshData:
     path: str
     notes: tuple[str, ...] = ()
     source: bytes = field(default=b"", repr=False)
-    nonplanar: IntArray = field(default_factory=lambda: _none(), repr=False)
-    crossing: IntArray = field(default_factory=lambda: _none(), repr=False)
+    nonplanar: IntArray = field(default_factory=_none, repr=False)
+    crossing: IntArray = field(default_factory=_none, repr=False)
     stl_records: Any = field(default=None, repr=False)
     stl_against: IntArray | None = field(default=None, repr=False)
     vertex_normals: FloatArray | None = field(default=None, repr=False)
@@ -179,26 +183,25 @@ def _plural(n: int, noun: str) -> str:
     return "vertices" if noun == "vertex" else noun + "s"
 
 
-def _none() -> IntArray:
-    return np.empty(0, dtype=np.intp)
-
-
-def _split(vertices: FloatArray, polys: list[list[int]] | IntArray) -> tuple[Split, IntArray]:
-    """Split the polygons (a list of corner lists, or a (P, n) table) in their planes.
-
-    Returns the split and each polygon's number of corners.
-    """
+def _polygon_mesh(
+    vertices: FloatArray, polys: list[list[int]] | IntArray, fmt: str, encoding: str, **fields: Any
+) -> MeshData:
+    """Return the `MeshData` of a file's polygons (corner lists, or a (P, n) table), split."""
     if isinstance(polys, np.ndarray):
         sizes = np.full(polys.shape[0], polys.shape[1], dtype=np.intp)
-        return split_polygons(vertices, polys.astype(np.intp).ravel(), sizes), sizes
-    sizes = np.fromiter((len(p) for p in polys), dtype=np.intp, count=len(polys))
-    flat = np.fromiter((i for p in polys for i in p), dtype=np.intp, count=int(sizes.sum()))
-    return split_polygons(vertices, flat, sizes), sizes
-
-
-def _polygon_fields(split: Split, sizes: IntArray) -> dict[str, Any]:
-    """Return the `MeshData` fields that say what the split found."""
-    return {
-        "nonplanar": np.flatnonzero(split.nonplanar).astype(np.intp),
-        "crossing": np.flatnonzero(split.crossing).astype(np.intp),
-    }
+        flat = polys.astype(np.intp).ravel()
+    else:
+        sizes = np.fromiter((len(p) for p in polys), dtype=np.intp, count=len(polys))
+        flat = np.fromiter((i for p in polys for i in p), dtype=np.intp, count=int(sizes.sum()))
+    split = split_polygons(vertices, flat, sizes)
+    return MeshData(
+        vertices,
+        split.faces,
+        fmt,
+        encoding,
+        split.source,
+        len(sizes),
+        nonplanar=np.flatnonzero(split.nonplanar).astype(np.intp),
+        crossing=np.flatnonzero(split.crossing).astype(np.intp),
+        **fields,
+    )

@@ -15,7 +15,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import MeshFileError, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
+from trinormal.mesh.io.mesh_data import MeshData, _plural, _polygon_mesh
 
 # OBJ statements that carry no triangle (texture, normals, grouping, materials, curves)
 _OBJ_IGNORED = frozenset(
@@ -185,7 +185,12 @@ def _read_lines(data: bytes, name: str) -> MeshData:
                 elif i < 0:  # counted back from the last vertex so far
                     if -i > nv:
                         raise MeshFileError.of(
-                            name, "obj_back", lineno, index=i, count=nv, vertices=_vertices(nv)
+                            name,
+                            "obj_back",
+                            lineno,
+                            index=i,
+                            count=nv,
+                            vertices=_plural(nv, "vertex"),
                         )
                     poly.append(nv + i)
                 else:
@@ -206,14 +211,10 @@ def _read_lines(data: bytes, name: str) -> MeshData:
                 face=k + 1,
                 index=over[0] + 1,
                 count=nv,
-                vertices=_vertices(nv),
+                vertices=_plural(nv, "vertex"),
             )
     vertices = np.array(coords, dtype=np.float64).reshape(-1, 3)
-    split, sizes = _split(vertices, polys)
-    fields = _polygon_fields(split, sizes)
-    return MeshData(
-        vertices, split.faces, "obj", "ascii", split.source, len(polys), name, source=data, **fields
-    )
+    return _polygon_mesh(vertices, polys, "obj", "ascii", path=name, source=data)
 
 
 def _is_float(tok: str) -> bool:
@@ -222,10 +223,6 @@ def _is_float(tok: str) -> bool:
     except ValueError:
         return False
     return True
-
-
-def _vertices(n: int) -> str:
-    return "vertex" if n == 1 else "vertices"
 
 
 def _encode_obj(v: FloatArray, f: IntArray) -> bytes:

@@ -11,7 +11,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_ERRORS, MeshFileError, _number, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
+from trinormal.mesh.io.mesh_data import MeshData, _polygon_mesh
 
 #: The PLY property types, by both their names, as numpy type codes.
 _PLY_TYPES = {
@@ -58,19 +58,8 @@ def _read_ply(data: bytes, name: str) -> MeshData:
     if all(k in vdata for k in ("nx", "ny", "nz")):
         normals = np.stack([np.asarray(vdata[k], dtype=np.float64) for k in ("nx", "ny", "nz")], 1)
     polys = _ply_faces(polys, vertices.shape[0], name)
-    split, sizes = _split(vertices, polys)
-    fields = _polygon_fields(split, sizes)
-    return MeshData(
-        vertices,
-        split.faces,
-        "ply",
-        encoding,
-        split.source,
-        len(sizes),
-        name,
-        source=data,
-        vertex_normals=normals,
-        **fields,
+    return _polygon_mesh(
+        vertices, polys, "ply", encoding, path=name, source=data, vertex_normals=normals
     )
 
 
