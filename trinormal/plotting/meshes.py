@@ -126,11 +126,10 @@ def _subdivide(tri: Any, k: int) -> tuple[Any, Any]:
     """
     import numpy as np
 
-    bary, centres = [], []
+    bary = []
     for i in range(k):
         for j in range(k - i):
-            corners = [(i, j), (i + 1, j), (i, j + 1)]
-            bary.append(corners)
+            bary.append([(i, j), (i + 1, j), (i, j + 1)])
             if j < k - i - 1:
                 bary.append([(i + 1, j), (i + 1, j + 1), (i, j + 1)])
     w = np.array([[[1 - (a + b) / k, a / k, b / k] for a, b in t] for t in bary])  # (k², 3, 3)

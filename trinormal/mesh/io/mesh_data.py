@@ -96,10 +96,7 @@ class MeshData:
     @property
     def split_polygons(self) -> int:
         """How many faces of the file had more than three corners."""
-        if self.source_faces.size == 0:
-            return 0
-        counts = np.bincount(self.source_faces, minlength=self.n_polygons)
-        return int((counts > 1).sum())
+        return int((self.corners > 3).sum())
 
     def normals_against(self, faces: IntArray | None = None) -> IntArray | None:
         r"""Return the faces whose stored normals point against the winding (None: none stored).
@@ -149,21 +146,16 @@ class MeshData:
         noun = "quad" if corners.size and (corners == 4).all() else "polygon"
         text += f", {np_:,} {_plural(np_, noun)}, {nf:,} {_plural(nf, 'triangle')}"
         odd = []
-        if self.nonplanar.size:
-            k = self.nonplanar.size
-            odd.append(f"{k:,} {_plural(k, noun)} {'is' if k == 1 else 'are'} not planar")
-        if self.crossing.size:
-            k = self.crossing.size
-            odd.append(
-                f"{k:,} {_plural(k, noun)} {'crosses itself' if k == 1 else 'cross themselves'}"
-            )
+        for k, one, many in (
+            (self.nonplanar.size, "is not planar", "are not planar"),
+            (self.crossing.size, "crosses itself", "cross themselves"),
+        ):
+            if k:
+                odd.append(f"{k:,} {_plural(k, noun)} {one if k == 1 else many}")
         if odd:
-            k = self.nonplanar.size + self.crossing.size
-            text += (
-                f"; {' and '.join(odd)}: {'its' if k == 1 else 'their'} triangles are one of "
-                "several surfaces through "
-                f"{'its' if k == 1 else 'their'} corners"
-            )
+            its = "its" if self.nonplanar.size + self.crossing.size == 1 else "their"
+            text += f"; {' and '.join(odd)}: {its} triangles are one of several surfaces"
+            text += f" through {its} corners"
         return text + "." + self._normals_sentence()
 
     def _normals_sentence(self) -> str:

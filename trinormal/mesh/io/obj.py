@@ -8,6 +8,7 @@ materials, curves) are skipped; anything else is an error on its line.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -140,22 +141,7 @@ def _read_lines(data: bytes, name: str) -> MeshData:
     polys: list[list[int]] = []
     poly_lines: list[int] = []
     nv = 0
-    lines = text.splitlines()
-    lineno = 0
-    pending = ""
-    for raw in lines:
-        lineno += 1
-        if raw.endswith("\\"):  # a continued line
-            pending += raw[:-1] + " "
-            continue
-        line = pending + raw
-        pending = ""
-        hash_at = line.find("#")
-        if hash_at >= 0:
-            line = line[:hash_at]
-        toks = line.split()
-        if not toks:
-            continue
+    for lineno, toks in _statements(text.splitlines()):
         kw = toks[0]
         if kw == "v":
             if len(toks) < 4:
@@ -215,6 +201,19 @@ def _read_lines(data: bytes, name: str) -> MeshData:
             )
     vertices = np.array(coords, dtype=np.float64).reshape(-1, 3)
     return _polygon_mesh(vertices, polys, "obj", "ascii", path=name, source=data)
+
+
+def _statements(lines: list[str]) -> Iterator[tuple[int, list[str]]]:
+    """Each statement's tokens and line (its last, from 1): continued lines joined, no comments."""
+    pending = ""
+    for lineno, raw in enumerate(lines, start=1):
+        if raw.endswith("\\"):  # a continued line
+            pending += raw[:-1] + " "
+            continue
+        toks = (pending + raw).split("#", 1)[0].split()
+        pending = ""
+        if toks:
+            yield lineno, toks
 
 
 def _is_float(tok: str) -> bool:

@@ -24,6 +24,7 @@ import numpy as np
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import _decode
+from trinormal.mesh.io.obj import _statements
 
 if TYPE_CHECKING:
     from trinormal.mesh.io.mesh_data import MeshData
@@ -148,15 +149,7 @@ def _obj(data: bytes, n_polygons: int) -> FloatArray | None:
     vn: list[tuple[float, float, float]] = []
     out = np.zeros((n_polygons, 3))
     face = -1
-    pending = ""
-    for raw in _lines(data):
-        if raw.endswith("\\"):
-            pending += raw[:-1] + " "
-            continue
-        line, pending = (pending + raw).split("#", 1)[0], ""
-        toks = line.split()
-        if not toks:
-            continue
+    for _, toks in _statements(_lines(data)):
         if toks[0] == "vn" and len(toks) >= 4:
             try:
                 vn.append((float(toks[1]), float(toks[2]), float(toks[3])))
