@@ -16,11 +16,7 @@ __all__ = ["culling_figure", "shaded_mesh_figure", "shading_figure", "winding_fi
 
 
 def _seen(vertices: Any, faces: Any, elev: float, azim: float) -> tuple[Any, Any, Any, Any]:
-    """Return the mesh as arrays (float vertices, faces), its face normals and the camera.
-
-    The camera is `camera_direction` of ``elev``, ``azim``: a face whose normal has a
-    positive dot product with it faces the camera.
-    """
+    """Return the vertices (float), faces, face normals and `camera_direction` as arrays."""
     import numpy as np
 
     from trinormal import mesh

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.polygons import split_polygons
@@ -176,9 +177,16 @@ def _plural(n: int, noun: str) -> str:
 
 
 def _polygon_mesh(
-    vertices: FloatArray, polys: list[list[int]] | IntArray, fmt: str, encoding: str, **fields: Any
+    vertices: FloatArray,
+    polys: list[list[Any]] | npt.NDArray[Any],
+    fmt: str,
+    encoding: str,
+    **fields: Any,
 ) -> MeshData:
-    """Return the `MeshData` of a file's polygons (corner lists, or a (P, n) table), split."""
+    """Return the `MeshData` of a file's polygons (corner lists, or a (P, n) table), split.
+
+    The corners are vertex numbers, checked: integers, or whole numbers of a float type.
+    """
     if isinstance(polys, np.ndarray):
         sizes = np.full(polys.shape[0], polys.shape[1], dtype=np.intp)
         flat = polys.astype(np.intp).ravel()

@@ -28,11 +28,9 @@ _OBJ_IGNORED = frozenset(
 
 
 def _read_obj(data: bytes, name: str) -> MeshData:
-    """Read OBJ text; polygons are split in their planes (`_split`).
+    """Read OBJ text: plain lines in one go (`_read_plain`), else line by line (`_read_lines`).
 
-    A file of plain lines only is read in one go by `_read_plain`; any other
-    file, and every file with an error, line by line by `_read_lines`, which
-    names the line.
+    Every file with an error is read line by line, which names the line.
     """
     plain = _read_plain(data)
     if plain is None:

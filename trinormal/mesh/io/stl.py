@@ -182,11 +182,7 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
 
 
 def _encode_stl(v: FloatArray, f: IntArray, enc: str) -> bytes | bytearray:
-    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face).
-
-    A binary file is filled in place: its records are a numpy view of the
-    zeroed bytes, written a corner at a time.
-    """
+    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face)."""
     normals = face_normals(v, f) if f.shape[0] else np.empty((0, 3))
     if enc == "binary":
         nf = f.shape[0]
