@@ -1,11 +1,7 @@
 """What a reader returns: `MeshData`, with polygons split into triangles in their planes.
 
-A polygon with n corners becomes n − 2 triangles, wound as stored, by ear
-clipping in the polygon's plane (`trinormal.mesh.polygons`): a convex polygon
-``(a, b, c, d)`` gives the fan ``(a, b, c)``, ``(a, c, d)``; a concave one is
-covered exactly. `MeshData.source_faces` says which polygon each triangle came
-from. `MeshData.source` keeps the file's bytes, so that `write_mesh` can write
-the file back as it was, with only the faces the fix turns over changed.
+How polygons are split: `trinormal.mesh.io`. `MeshData.source` keeps the file's bytes, so
+that `write_mesh` can write the file back with only the faces a fix turns over changed.
 """
 
 from __future__ import annotations

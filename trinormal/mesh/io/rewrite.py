@@ -137,7 +137,7 @@ def _obj(lines: list[str], turned: IntArray) -> None:
     first: int | None = None
     logical = ""
     for i, line in enumerate(lines):
-        content, _ = _content(line)
+        content, end = _content(line)
         if content.endswith("\\"):  # continued on the next line, as the reader joins it
             first = i if first is None else first
             logical += content[:-1] + " "
@@ -152,12 +152,10 @@ def _obj(lines: list[str], turned: IntArray) -> None:
         face += 1
         if face not in todo:
             continue
-        spans = _spans(code)
-        corners = [code[s:e] for s, e in spans[1:]]
-        turned_line = _replaced(whole, spans, [toks[0], *_reversed_corners(corners, 1)])
+        turned_line = _replaced(whole, _spans(code), [toks[0], *_reversed_corners(toks[1:], 1)])
         for k in range(start, i):  # a continued statement becomes one line
             lines[k] = ""
-        lines[i] = turned_line + _content(line)[1]
+        lines[i] = turned_line + end
 
 
 # --------------------------------------------------------------------------- STL

@@ -1,9 +1,6 @@
 """STL files, text and binary: corners with exactly equal coordinates become one vertex.
 
-STL stores each triangle's three corners as coordinates, not as shared
-vertices. Corners are merged by exact equality, never a tolerance (``-0.0``
-equals ``0.0``), and numbered in order of first appearance, so an STL model has
-the same edges, holes and pieces as the same model saved as OBJ.
+Why, and in which order they are numbered: `trinormal.mesh.io`.
 """
 
 from __future__ import annotations
