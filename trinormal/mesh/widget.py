@@ -11,8 +11,8 @@ its three vertices, its exact normal and its area from
 [`trinormal.triangle_normal`][trinormal.core.triangle_normal], printed by the package's
 formatter.
 
-Geometry travels as binary buffers (float64 positions, uint32 faces), not JSON lists, so a
-model of 200 000 faces reaches the browser in a few megabytes. The view centres and scales
+Geometry travels as binary buffers (float64 positions, uint32 faces), not JSON lists: a big
+model reaches the browser as its arrays' bytes, not as text. The view centres and scales
 the coordinates in float64 before drawing in float32 (tiny and huge models draw); what the
 readout prints comes from the kernel, from the vertices the view was given.
 

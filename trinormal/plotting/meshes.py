@@ -16,11 +16,7 @@ __all__ = ["culling_figure", "shaded_mesh_figure", "shading_figure", "winding_fi
 
 
 def _seen(vertices: Any, faces: Any, elev: float, azim: float) -> tuple[Any, Any, Any, Any]:
-    """Return the mesh as arrays (float vertices, faces), its face normals and the camera.
-
-    The camera is `camera_direction` of ``elev``, ``azim``: a face whose normal has a
-    positive dot product with it faces the camera.
-    """
+    """Return the vertices (float), faces, face normals and `camera_direction` as arrays."""
     import numpy as np
 
     from trinormal import mesh
@@ -126,11 +122,10 @@ def _subdivide(tri: Any, k: int) -> tuple[Any, Any]:
     """
     import numpy as np
 
-    bary, centres = [], []
+    bary = []
     for i in range(k):
         for j in range(k - i):
-            corners = [(i, j), (i + 1, j), (i, j + 1)]
-            bary.append(corners)
+            bary.append([(i, j), (i + 1, j), (i, j + 1)])
             if j < k - i - 1:
                 bary.append([(i + 1, j), (i + 1, j + 1), (i, j + 1)])
     w = np.array([[[1 - (a + b) / k, a / k, b / k] for a, b in t] for t in bary])  # (k², 3, 3)

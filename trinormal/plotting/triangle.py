@@ -152,12 +152,7 @@ def _draw_edges(
 def _drawn_normal(
     r: TriangleNormal, unit: Point, longest_edge: float
 ) -> tuple[list[float], str, str]:
-    """Return N as drawn, its label and the alt text's words on its length.
-
-    N is drawn at its true length when that fits beside the triangle; otherwise
-    scaled by a power of two, and the label says by how much (``N × ¼``), by the
-    rule of `trinormal.plotting.scale`, as in the explorer.
-    """
+    """Return N as drawn (`trinormal.plotting.scale`), its label and the alt text's words on it."""
     length_n = math.sqrt(float(r.exact.magnitude_squared))
     factor = drawn_factor(length_n, longest_edge)
     n = [x * length_n * factor for x in unit]

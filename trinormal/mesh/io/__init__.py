@@ -243,7 +243,6 @@ def write_mesh(
     With nothing turned over the file is written back byte for byte. In another
     format, only the vertices and triangles are written, as below.
 
-
     Text formats write every coordinate with the shortest decimal that reads
     back as the same float64, so reading the file gives the same numbers. A
     binary STL holds float32 coordinates (the format has nothing else); a

@@ -144,10 +144,15 @@ def _text(data: bytes, name: str, what: str) -> str:
     if nul >= 0:
         line = data.count(b"\n", 0, nul) + 1
         raise MeshFileError.of(name, "binary_data", line, what=what)
+    return _decode(data)[0].removeprefix("\ufeff")  # without a byte-order mark
+
+
+def _decode(data: bytes) -> tuple[str, str]:
+    """Return a file's text and its codec: UTF-8, or Latin-1 for 8-bit comments."""
     try:
-        return data.decode("utf-8").removeprefix("\ufeff")  # without a byte-order mark
+        return data.decode("utf-8"), "utf-8"
     except UnicodeDecodeError:
-        return data.decode("latin-1")
+        return data.decode("latin-1"), "latin-1"
 
 
 def _number(tok: str, name: str, line: int) -> float:

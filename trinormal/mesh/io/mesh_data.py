@@ -1,11 +1,7 @@
 """What a reader returns: `MeshData`, with polygons split into triangles in their planes.
 
-A polygon with n corners becomes n − 2 triangles, wound as stored, by ear
-clipping in the polygon's plane (`trinormal.mesh.polygons`): a convex polygon
-``(a, b, c, d)`` gives the fan ``(a, b, c)``, ``(a, c, d)``; a concave one is
-covered exactly. `MeshData.source_faces` says which polygon each triangle came
-from. `MeshData.source` keeps the file's bytes, so that `write_mesh` can write
-the file back as it was, with only the faces the fix turns over changed.
+How polygons are split: `trinormal.mesh.io`. `MeshData.source` keeps the file's bytes, so
+that `write_mesh` can write the file back with only the faces a fix turns over changed.
 """
 
 from __future__ import annotations
@@ -14,11 +10,16 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
-from trinormal.mesh.polygons import Split, split_polygons
+from trinormal.mesh.polygons import split_polygons
 
 __all__ = ["MeshData"]
+
+
+def _none() -> IntArray:
+    return np.empty(0, dtype=np.intp)
 
 
 @dataclass(frozen=True)
@@ -77,8 +78,8 @@ class MeshData:
     path: str
     notes: tuple[str, ...] = ()
     source: bytes = field(default=b"", repr=False)
-    nonplanar: IntArray = field(default_factory=lambda: _none(), repr=False)
-    crossing: IntArray = field(default_factory=lambda: _none(), repr=False)
+    nonplanar: IntArray = field(default_factory=_none, repr=False)
+    crossing: IntArray = field(default_factory=_none, repr=False)
     stl_records: Any = field(default=None, repr=False)
     stl_against: IntArray | None = field(default=None, repr=False)
     vertex_normals: FloatArray | None = field(default=None, repr=False)
@@ -92,10 +93,7 @@ class MeshData:
     @property
     def split_polygons(self) -> int:
         """How many faces of the file had more than three corners."""
-        if self.source_faces.size == 0:
-            return 0
-        counts = np.bincount(self.source_faces, minlength=self.n_polygons)
-        return int((counts > 1).sum())
+        return int((self.corners > 3).sum())
 
     def normals_against(self, faces: IntArray | None = None) -> IntArray | None:
         r"""Return the faces whose stored normals point against the winding (None: none stored).
@@ -145,21 +143,16 @@ class MeshData:
         noun = "quad" if corners.size and (corners == 4).all() else "polygon"
         text += f", {np_:,} {_plural(np_, noun)}, {nf:,} {_plural(nf, 'triangle')}"
         odd = []
-        if self.nonplanar.size:
-            k = self.nonplanar.size
-            odd.append(f"{k:,} {_plural(k, noun)} {'is' if k == 1 else 'are'} not planar")
-        if self.crossing.size:
-            k = self.crossing.size
-            odd.append(
-                f"{k:,} {_plural(k, noun)} {'crosses itself' if k == 1 else 'cross themselves'}"
-            )
+        for k, one, many in (
+            (self.nonplanar.size, "is not planar", "are not planar"),
+            (self.crossing.size, "crosses itself", "cross themselves"),
+        ):
+            if k:
+                odd.append(f"{k:,} {_plural(k, noun)} {one if k == 1 else many}")
         if odd:
-            k = self.nonplanar.size + self.crossing.size
-            text += (
-                f"; {' and '.join(odd)}: {'its' if k == 1 else 'their'} triangles are one of "
-                "several surfaces through "
-                f"{'its' if k == 1 else 'their'} corners"
-            )
+            its = "its" if self.nonplanar.size + self.crossing.size == 1 else "their"
+            text += f"; {' and '.join(odd)}: {its} triangles are one of several surfaces"
+            text += f" through {its} corners"
         return text + "." + self._normals_sentence()
 
     def _normals_sentence(self) -> str:
@@ -179,26 +172,32 @@ def _plural(n: int, noun: str) -> str:
     return "vertices" if noun == "vertex" else noun + "s"
 
 
-def _none() -> IntArray:
-    return np.empty(0, dtype=np.intp)
+def _polygon_mesh(
+    vertices: FloatArray,
+    polys: list[list[Any]] | npt.NDArray[Any],
+    fmt: str,
+    encoding: str,
+    **fields: Any,
+) -> MeshData:
+    """Return the `MeshData` of a file's polygons (corner lists, or a (P, n) table), split.
 
-
-def _split(vertices: FloatArray, polys: list[list[int]] | IntArray) -> tuple[Split, IntArray]:
-    """Split the polygons (a list of corner lists, or a (P, n) table) in their planes.
-
-    Returns the split and each polygon's number of corners.
+    The corners are vertex numbers, checked: integers, or whole numbers of a float type.
     """
     if isinstance(polys, np.ndarray):
         sizes = np.full(polys.shape[0], polys.shape[1], dtype=np.intp)
-        return split_polygons(vertices, polys.astype(np.intp).ravel(), sizes), sizes
-    sizes = np.fromiter((len(p) for p in polys), dtype=np.intp, count=len(polys))
-    flat = np.fromiter((i for p in polys for i in p), dtype=np.intp, count=int(sizes.sum()))
-    return split_polygons(vertices, flat, sizes), sizes
-
-
-def _polygon_fields(split: Split, sizes: IntArray) -> dict[str, Any]:
-    """Return the `MeshData` fields that say what the split found."""
-    return {
-        "nonplanar": np.flatnonzero(split.nonplanar).astype(np.intp),
-        "crossing": np.flatnonzero(split.crossing).astype(np.intp),
-    }
+        flat = polys.astype(np.intp).ravel()
+    else:
+        sizes = np.fromiter((len(p) for p in polys), dtype=np.intp, count=len(polys))
+        flat = np.fromiter((i for p in polys for i in p), dtype=np.intp, count=int(sizes.sum()))
+    split = split_polygons(vertices, flat, sizes)
+    return MeshData(
+        vertices,
+        split.faces,
+        fmt,
+        encoding,
+        split.source,
+        len(sizes),
+        nonplanar=np.flatnonzero(split.nonplanar).astype(np.intp),
+        crossing=np.flatnonzero(split.crossing).astype(np.intp),
+        **fields,
+    )

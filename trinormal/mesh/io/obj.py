@@ -8,6 +8,7 @@ materials, curves) are skipped; anything else is an error on its line.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -15,7 +16,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import MeshFileError, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
+from trinormal.mesh.io.mesh_data import MeshData, _plural, _polygon_mesh
 
 # OBJ statements that carry no triangle (texture, normals, grouping, materials, curves)
 _OBJ_IGNORED = frozenset(
@@ -27,11 +28,9 @@ _OBJ_IGNORED = frozenset(
 
 
 def _read_obj(data: bytes, name: str) -> MeshData:
-    """Read OBJ text; polygons are split in their planes (`_split`).
+    """Read OBJ text: plain lines in one go (`_read_plain`), else line by line (`_read_lines`).
 
-    A file of plain lines only is read in one go by `_read_plain`; any other
-    file, and every file with an error, line by line by `_read_lines`, which
-    names the line.
+    Every file with an error is read line by line, which names the line.
     """
     plain = _read_plain(data)
     if plain is None:
@@ -140,22 +139,7 @@ def _read_lines(data: bytes, name: str) -> MeshData:
     polys: list[list[int]] = []
     poly_lines: list[int] = []
     nv = 0
-    lines = text.splitlines()
-    lineno = 0
-    pending = ""
-    for raw in lines:
-        lineno += 1
-        if raw.endswith("\\"):  # a continued line
-            pending += raw[:-1] + " "
-            continue
-        line = pending + raw
-        pending = ""
-        hash_at = line.find("#")
-        if hash_at >= 0:
-            line = line[:hash_at]
-        toks = line.split()
-        if not toks:
-            continue
+    for lineno, toks in _statements(text.splitlines()):
         kw = toks[0]
         if kw == "v":
             if len(toks) < 4:
@@ -185,7 +169,12 @@ def _read_lines(data: bytes, name: str) -> MeshData:
                 elif i < 0:  # counted back from the last vertex so far
                     if -i > nv:
                         raise MeshFileError.of(
-                            name, "obj_back", lineno, index=i, count=nv, vertices=_vertices(nv)
+                            name,
+                            "obj_back",
+                            lineno,
+                            index=i,
+                            count=nv,
+                            vertices=_plural(nv, "vertex"),
                         )
                     poly.append(nv + i)
                 else:
@@ -206,14 +195,23 @@ def _read_lines(data: bytes, name: str) -> MeshData:
                 face=k + 1,
                 index=over[0] + 1,
                 count=nv,
-                vertices=_vertices(nv),
+                vertices=_plural(nv, "vertex"),
             )
     vertices = np.array(coords, dtype=np.float64).reshape(-1, 3)
-    split, sizes = _split(vertices, polys)
-    fields = _polygon_fields(split, sizes)
-    return MeshData(
-        vertices, split.faces, "obj", "ascii", split.source, len(polys), name, source=data, **fields
-    )
+    return _polygon_mesh(vertices, polys, "obj", "ascii", path=name, source=data)
+
+
+def _statements(lines: list[str]) -> Iterator[tuple[int, list[str]]]:
+    """Each statement's tokens and line (its last, from 1): continued lines joined, no comments."""
+    pending = ""
+    for lineno, raw in enumerate(lines, start=1):
+        if raw.endswith("\\"):  # a continued line
+            pending += raw[:-1] + " "
+            continue
+        toks = (pending + raw).split("#", 1)[0].split()
+        pending = ""
+        if toks:
+            yield lineno, toks
 
 
 def _is_float(tok: str) -> bool:
@@ -222,10 +220,6 @@ def _is_float(tok: str) -> bool:
     except ValueError:
         return False
     return True
-
-
-def _vertices(n: int) -> str:
-    return "vertex" if n == 1 else "vertices"
 
 
 def _encode_obj(v: FloatArray, f: IntArray) -> bytes:

@@ -11,7 +11,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import FloatArray, IntArray
 from trinormal.mesh.io.errors import READ_ERRORS, MeshFileError, _number, _show, _text
-from trinormal.mesh.io.mesh_data import MeshData, _polygon_fields, _split
+from trinormal.mesh.io.mesh_data import MeshData, _polygon_mesh
 
 #: The PLY property types, by both their names, as numpy type codes.
 _PLY_TYPES = {
@@ -57,20 +57,9 @@ def _read_ply(data: bytes, name: str) -> MeshData:
     normals = None
     if all(k in vdata for k in ("nx", "ny", "nz")):
         normals = np.stack([np.asarray(vdata[k], dtype=np.float64) for k in ("nx", "ny", "nz")], 1)
-    polys = _ply_faces(polys, vertices.shape[0], name)
-    split, sizes = _split(vertices, polys)
-    fields = _polygon_fields(split, sizes)
-    return MeshData(
-        vertices,
-        split.faces,
-        "ply",
-        encoding,
-        split.source,
-        len(sizes),
-        name,
-        source=data,
-        vertex_normals=normals,
-        **fields,
+    _check_ply_faces(polys, vertices.shape[0], name)
+    return _polygon_mesh(
+        vertices, polys, "ply", encoding, path=name, source=data, vertex_normals=normals
     )
 
 
@@ -130,13 +119,10 @@ def _ply_header(data: bytes, name: str) -> tuple[str, list[_Element], int, int]:
     return fmt, elements, body_start, len(header) + 2
 
 
-def _ply_faces(
-    polys: list[list[Any]] | npt.NDArray[Any], nv: int, name: str
-) -> list[list[int]] | IntArray:
+def _check_ply_faces(polys: list[list[Any]] | npt.NDArray[Any], nv: int, name: str) -> None:
     """Check the face lists against the ``nv`` vertices: three corners or more, each in range.
 
-    Returns them as integers: a list of a float type must hold whole numbers (a vertex 1.5
-    is out of range).
+    A list of a float type must hold whole numbers (a vertex 1.5 is out of range).
     """
     if isinstance(polys, np.ndarray):  # every face has the same number of corners
         if polys.shape[1] < 3:
@@ -145,19 +131,13 @@ def _ply_faces(
         if out_of_range.any():
             row = int(np.flatnonzero(out_of_range.any(axis=1))[0])
             _ply_range_error(name, row, polys[row][out_of_range[row]][0].item(), nv)
-        table: IntArray = polys.astype(np.intp)
-        return table
+        return
     for row, poly in enumerate(polys):
         if len(poly) < 3:
             raise MeshFileError.of(name, "ply_corners", face=row, count=len(poly))
         outside = [i for i in poly if not (0 <= i < nv and float(i).is_integer())]
         if outside:
             _ply_range_error(name, row, outside[0], nv)
-    return (
-        [[int(i) for i in p] for p in polys]
-        if any(isinstance(i, float) for p in polys[:1] for i in p)
-        else polys
-    )
 
 
 def _ply_range_error(name: str, k: int, index: float, nv: int) -> None:

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from trinormal.mesh._arrays import IntArray
+from trinormal.mesh.io.errors import _decode
 from trinormal.mesh.io.mesh_data import MeshData
 from trinormal.mesh.io.ply import _STRUCT, _face_list_name, _ply_header
 from trinormal.mesh.normals import face_normals
@@ -87,11 +88,7 @@ def _rewrite(m: MeshData, faces: IntArray) -> bytes | bytearray:
 
 def _text_rewrite(data: bytes, edit: Any, start: int = 0) -> bytes:
     """Decode ``data[start:]`` as the readers do (UTF-8, else Latin-1), edit, encode back."""
-    body = data[start:]
-    try:
-        text, codec = body.decode("utf-8"), "utf-8"
-    except UnicodeDecodeError:
-        text, codec = body.decode("latin-1"), "latin-1"
+    text, codec = _decode(data[start:])
     bom = "\ufeff" if text.startswith("\ufeff") else ""
     lines = text[len(bom) :].splitlines(keepends=True)
     edit(lines)
@@ -140,7 +137,7 @@ def _obj(lines: list[str], turned: IntArray) -> None:
     first: int | None = None
     logical = ""
     for i, line in enumerate(lines):
-        content, _ = _content(line)
+        content, end = _content(line)
         if content.endswith("\\"):  # continued on the next line, as the reader joins it
             first = i if first is None else first
             logical += content[:-1] + " "
@@ -155,40 +152,34 @@ def _obj(lines: list[str], turned: IntArray) -> None:
         face += 1
         if face not in todo:
             continue
-        spans = _spans(code)
-        corners = [code[s:e] for s, e in spans[1:]]
-        turned_line = _replaced(whole, spans, [toks[0], *_reversed_corners(corners, 1)])
+        turned_line = _replaced(whole, _spans(code), [toks[0], *_reversed_corners(toks[1:], 1)])
         for k in range(start, i):  # a continued statement becomes one line
             lines[k] = ""
-        lines[i] = turned_line + _content(line)[1]
+        lines[i] = turned_line + end
 
 
 # --------------------------------------------------------------------------- STL
 
 
-def _stl_binary(m: MeshData, faces: IntArray, turned: IntArray) -> bytes | bytearray:
-    if m.stl_records is None:  # the whole file was kept
-        buf = bytearray(m.source)
-        rec = np.frombuffer(buf, dtype=_STL_RAW, count=m.faces.shape[0], offset=84)
-        rec["b"][turned], rec["c"][turned] = rec["c"][turned], rec["b"][turned].copy()
-        rec["n"][turned] = face_normals(m.vertices, faces[turned]).astype(np.float32)
-        return buf
-    return _stl_records(m, faces, turned)
+def _stl_binary(m: MeshData, faces: IntArray, turned: IntArray) -> bytearray:
+    """Return a binary STL with the facets ``turned`` turned over and their normals recomputed.
 
-
-def _stl_records(m: MeshData, faces: IntArray, turned: IntArray) -> bytearray:
-    """Build a binary STL from its kept header, normals and attribute bytes and the faces.
-
-    Every corner is ``vertices[faces]`` as float32, the number the file holds.
+    Where only its header, normals and attribute bytes were kept (``stl_records``), every
+    corner is ``vertices[faces]`` as float32, the number the file holds.
     """
     nf = faces.shape[0]
-    buf = bytearray(84 + 50 * nf + len(m.source) - 84)
-    buf[:84] = m.source[:84]
-    buf[84 + 50 * nf :] = m.source[84:]
-    raw = np.frombuffer(buf, dtype=_STL_RAW, count=nf, offset=84)
-    raw["n"], raw["x"] = m.stl_records["normal"], m.stl_records["attr"]
-    corners = m.vertices.astype(np.float32).view("V12").reshape(-1)  # a corner's 12 bytes
-    raw["a"], raw["b"], raw["c"] = (corners[faces[:, k]] for k in range(3))
+    if m.stl_records is None:  # the whole file was kept
+        buf = bytearray(m.source)
+        raw = np.frombuffer(buf, dtype=_STL_RAW, count=nf, offset=84)
+        raw["b"][turned], raw["c"][turned] = raw["c"][turned], raw["b"][turned].copy()
+    else:
+        buf = bytearray(84 + 50 * nf + len(m.source) - 84)
+        buf[:84] = m.source[:84]
+        buf[84 + 50 * nf :] = m.source[84:]
+        raw = np.frombuffer(buf, dtype=_STL_RAW, count=nf, offset=84)
+        raw["n"], raw["x"] = m.stl_records["normal"], m.stl_records["attr"]
+        corners = m.vertices.astype(np.float32).view("V12").reshape(-1)  # a corner's 12 bytes
+        raw["a"], raw["b"], raw["c"] = (corners[faces[:, k]] for k in range(3))
     raw["n"][turned] = face_normals(m.vertices, np.take(faces, turned, axis=0)).astype(np.float32)
     return buf
 
@@ -291,26 +282,22 @@ def _ply_binary(
     for target in turned.tolist():
         pos = _skip_rows(data, pos, elements[face_at], order, target - row)
         row = target
-        lists, at = [], pos
+        items, lists, at = [], [], pos  # the row's values as bytes, as _ply_ascii has its tokens
         for pname, ptype, ctype in elements[face_at].props:
-            if ctype is None:
-                at += np.dtype(ptype).itemsize
-                continue
-            (n,) = struct.unpack_from(order + _code(ctype), data, at)
-            at += np.dtype(ctype).itemsize
             size = np.dtype(ptype).itemsize
-            lists.append((pname, at, n, size))
+            if ctype is None:
+                items.append(data[at : at + size])
+                at += size
+                continue
+            (n,) = struct.unpack_from(order + _STRUCT[ctype], data, at)
+            items.append(data[at : at + np.dtype(ctype).itemsize])
+            at += np.dtype(ctype).itemsize
+            lists.append((pname, len(items), n))
+            items += [data[at + size * i : at + size * (i + 1)] for i in range(n)]
             at += n * size
-        corners = next(n for pname, _, n, _ in lists if pname == want)
-        for _pname, start, n, size in lists:
-            if n and corners >= 3 and n % corners == 0:
-                items = [data[start + size * i : start + size * (i + 1)] for i in range(n)]
-                buf[start : start + size * n] = b"".join(_reversed_corners(items, n // corners))
+        _turn_lists(items, lists, want)
+        buf[pos:at] = b"".join(items)
     return bytes(buf)
-
-
-def _code(ptype: str) -> str:
-    return _STRUCT[ptype]
 
 
 def _skip_rows(data: bytes, pos: int, el: Any, order: str, rows: int) -> int:
@@ -322,6 +309,6 @@ def _skip_rows(data: bytes, pos: int, el: Any, order: str, rows: int) -> int:
             if ctype is None:
                 pos += np.dtype(ptype).itemsize
                 continue
-            (n,) = struct.unpack_from(order + _code(ctype), data, pos)
+            (n,) = struct.unpack_from(order + _STRUCT[ctype], data, pos)
             pos += np.dtype(ctype).itemsize + n * np.dtype(ptype).itemsize
     return pos

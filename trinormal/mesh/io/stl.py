@@ -1,9 +1,6 @@
 """STL files, text and binary: corners with exactly equal coordinates become one vertex.
 
-STL stores each triangle's three corners as coordinates, not as shared
-vertices. Corners are merged by exact equality, never a tolerance (``-0.0``
-equals ``0.0``), and numbered in order of first appearance, so an STL model has
-the same edges, holes and pieces as the same model saved as OBJ.
+Why, and in which order they are numbered: `trinormal.mesh.io`.
 """
 
 from __future__ import annotations
@@ -182,11 +179,7 @@ def _merge_corners(corners: FloatArray, name: str, encoding: str) -> MeshData:
 
 
 def _encode_stl(v: FloatArray, f: IntArray, enc: str) -> bytes | bytearray:
-    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face).
-
-    A binary file is filled in place: its records are a numpy view of the
-    zeroed bytes, written a corner at a time.
-    """
+    """Write the mesh as STL, each face with its unit normal (zero for a degenerate face)."""
     normals = face_normals(v, f) if f.shape[0] else np.empty((0, 3))
     if enc == "binary":
         nf = f.shape[0]

@@ -22,19 +22,22 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from trinormal.mesh._arrays import BoolArray, FloatArray, IntArray
+from trinormal.mesh._arrays import FloatArray, IntArray
+from trinormal.mesh.io.errors import _decode
+from trinormal.mesh.io.obj import _statements
 
 if TYPE_CHECKING:
     from trinormal.mesh.io.mesh_data import MeshData
 
-_STL_NORMAL = np.dtype([("n", "<f4", (3,)), ("rest", "V38")])
+#: A binary STL record: stored normal, three corners, attribute bytes.
+_STL_RECORD = np.dtype([("n", "<f4", (3,)), ("c", "<f4", (3, 3)), ("x", "V2")])
 
 
 def stored_normals(m: MeshData) -> FloatArray | None:
     """Return each face's stored normal, shape (P, 3), or None when the file stores none."""
     if m.format == "stl" and m.encoding == "binary":
         if m.stl_records is None:
-            rec = np.frombuffer(m.source, dtype=_STL_NORMAL, count=m.n_polygons, offset=84)
+            rec = np.frombuffer(m.source, dtype=_STL_RECORD, count=m.n_polygons, offset=84)
             out: FloatArray = rec["n"].astype(np.float64)
         else:
             out = m.stl_records["normal"].astype(np.float64)
@@ -63,22 +66,16 @@ def against(m: MeshData, faces: IntArray, turned: IntArray | None = None) -> Int
         normals = stored_normals(m)
         if normals is None:
             return None
-        bad = _bad(m, faces, normals)
+        if m.format == "stl" and m.encoding == "binary" and m.stl_records is None:
+            # a facet not turned over has its corners as read, one turned over a new normal:
+            # the corners straight from the records, in file order (no gather by vertex)
+            dot = _stl_dots(m.source, m.n_polygons, normals)
+        else:
+            dot = _dots(m, m.faces if m.format == "stl" else faces, normals)
+        bad = dot < 0
     if turned is not None and m.format == "stl":
         bad[turned] = False
     out: IntArray = np.flatnonzero(bad).astype(np.intp)
-    return out
-
-
-def _bad(m: MeshData, faces: IntArray, normals: FloatArray) -> BoolArray:
-    """Whether each face's stored normal points against the winding of ``faces``."""
-    if m.format == "stl" and m.encoding == "binary" and m.stl_records is None:
-        # a facet not turned over has its corners as read, one turned over a new normal:
-        # the corners straight from the records, in file order (no gather by vertex)
-        dot = _stl_dots(m.source, m.n_polygons, normals)
-    else:
-        dot = _dots(m, m.faces if m.format == "stl" else faces, normals)
-    out: BoolArray = dot < 0
     return out
 
 
@@ -86,12 +83,9 @@ def _bad(m: MeshData, faces: IntArray, normals: FloatArray) -> BoolArray:
 _BLOCK = 1 << 16
 
 
-_STL_CORNERS = np.dtype([("n", "V12"), ("c", "<f4", (3, 3)), ("x", "V2")])
-
-
 def _stl_dots(data: bytes, n: int, normals: FloatArray) -> FloatArray:
     """`_dots` for a binary STL as read, its corners taken from the records."""
-    rec = np.frombuffer(data, dtype=_STL_CORNERS, count=n, offset=84)
+    rec = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)
     dot = np.empty(n)
     with np.errstate(over="ignore", invalid="ignore"):
         for lo in range(0, n, _BLOCK):
@@ -128,19 +122,15 @@ def _dots(m: MeshData, faces: IntArray, normals: FloatArray) -> FloatArray:
     return dot
 
 
-def _text(data: bytes) -> list[str]:
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        text = data.decode("latin-1")
-    return text.removeprefix("\ufeff").splitlines()
+def _lines(data: bytes) -> list[str]:
+    return _decode(data)[0].removeprefix("\ufeff").splitlines()
 
 
 def _stl_ascii(data: bytes) -> FloatArray:
     """Each facet's ``facet normal x y z`` (zero when a facet has none)."""
     out: list[tuple[float, float, float]] = []
     current = (0.0, 0.0, 0.0)
-    for line in _text(data):
+    for line in _lines(data):
         toks = line.split()
         kw = toks[0].lower() if toks else ""
         if kw == "facet":
@@ -159,15 +149,7 @@ def _obj(data: bytes, n_polygons: int) -> FloatArray | None:
     vn: list[tuple[float, float, float]] = []
     out = np.zeros((n_polygons, 3))
     face = -1
-    pending = ""
-    for raw in _text(data):
-        if raw.endswith("\\"):
-            pending += raw[:-1] + " "
-            continue
-        line, pending = (pending + raw).split("#", 1)[0], ""
-        toks = line.split()
-        if not toks:
-            continue
+    for _, toks in _statements(_lines(data)):
         if toks[0] == "vn" and len(toks) >= 4:
             try:
                 vn.append((float(toks[1]), float(toks[2]), float(toks[3])))
