@@ -11,13 +11,34 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
   var EPS = Math.pow(2, -52);
   var VOLUME_ROUNDING = 8;
 
+  var f64 = new Float64Array(1);
+  var u32 = new Uint32Array(f64.buffer);
+
+  /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
+  function frexpExp(x) {
+    if (x === 0 || !Number.isFinite(x)) return 0;
+    f64[0] = x;
+    var e = (u32[1] >>> 20) & 0x7ff;
+    if (e === 0) {
+      f64[0] = x * 18446744073709551616; // 2**64: a subnormal made normal, exactly
+      e = ((u32[1] >>> 20) & 0x7ff) - 64;
+    }
+    return e - 1022;
+  }
+
+  /** 2**e for -1074 <= e <= 1023, built from its bits (exact). */
+  function pow2(e) {
+    u32[0] = 0;
+    u32[1] = 0;
+    if (e >= -1022) u32[1] = (e + 1023) << 20;
+    else if (e >= -1042) u32[1] = 1 << (e + 1074 - 32);
+    else u32[0] = 1 << (e + 1074);
+    return f64[0];
+  }
+
   /** 2 ** (frexp(x)[1] - 1) in Python: the largest power of two <= x >= 0 (0.5 for 0). */
   function powerOfTwoBelow(x) {
-    if (x === 0) return 0.5;
-    var k = Math.min(1023, Math.floor(Math.log2(x)));
-    if (Math.pow(2, k) > x) k--;
-    else if (k < 1023 && Math.pow(2, k + 1) <= x) k++;
-    return Math.pow(2, k);
+    return pow2(frexpExp(x) - 1);
   }
 
   /**
@@ -79,8 +100,8 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
   }
 
-  function crossNorm(p, q) {
-    return norm([p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]]);
+  function cross(p, q) {
+    return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
   }
 
   function dot(p, q) {
@@ -177,7 +198,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       fv[c] += det;
       ff[c] += det * (flip[f] ? -1.0 : 1.0);
       fsize[c] += norm(p) * norm(q) * norm(t);
-      farea[c] += crossNorm(sub(q, p), sub(t, p));
+      farea[c] += norm(cross(sub(q, p), sub(t, p)));
       nTerms[c] += 1;
     }
     // the rims, in half-edge order; their corners as (piece, vertex) nodes, sorted
@@ -188,19 +209,12 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     var nodes = Float64Array.from(new Set(keyA.concat(keyB))).sort();
     var nodeOf = new Map();
     nodes.forEach(function (key, i) { nodeOf.set(key, i); });
-    var parent = I.weldIdentity(nodes.length);
-    var root = function (x) {
-      while (parent[x] !== x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
-    for (var e = 0; e < h.length; e++) {
-      var ra = root(nodeOf.get(keyA[e])), rb = root(nodeOf.get(keyB[e]));
-      if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
-    }
+    var parent = I.identity(nodes.length);
+    for (var e = 0; e < h.length; e++) I.union(parent, nodeOf.get(keyA[e]), nodeOf.get(keyB[e]));
     var sum = new Map();
     for (var n = 0; n < nodes.length; n++) {
       var pc = Math.floor(nodes[n] / nv), vx = nodes[n] - pc * nv;
-      var xyz = scaled(V, vx, scale[pc], ref[pc]), r = root(n);
+      var xyz = scaled(V, vx, scale[pc], ref[pc]), r = I.find(parent, n);
       var acc = sum.get(r) || [0, 0, 0, 0];
       sum.set(r, [acc[0] + xyz[0], acc[1] + xyz[1], acc[2] + xyz[2], acc[3] + 1]);
     }
@@ -208,7 +222,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     var carea = new Float64Array(nComp);
     for (e = 0; e < h.length; e++) {
       c = comp[(h[e] / 3) | 0];
-      var tot = sum.get(root(nodeOf.get(keyA[e])));
+      var tot = sum.get(I.find(parent, nodeOf.get(keyA[e])));
       var m = [tot[0] / tot[3], tot[1] / tot[3], tot[2] / tot[3]];
       var pa = scaled(V, faces[h[e]], scale[c], ref[c]);
       var pb = scaled(V, faces[h[e] % 3 === 2 ? h[e] - 2 : h[e] + 1], scale[c], ref[c]);
@@ -216,7 +230,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       cv[c] += cap;
       cf[c] += cap * (flip[(h[e] / 3) | 0] ? -1.0 : 1.0);
       csize[c] += norm(m) * norm(pb) * norm(pa);
-      carea[c] += crossNorm(sub(pb, m), sub(pa, m));
+      carea[c] += norm(cross(sub(pb, m), sub(pa, m)));
       nTerms[c] += 1;
     }
     for (c = 0; c < nComp; c++) {
@@ -289,5 +303,14 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return { components: components, faces_to_flip: toFlip };
   }
 
-  return { internal: Object.assign({}, I, { pieceReports: pieceReports, powerOfTwoBelow: powerOfTwoBelow }) };
+  return {
+    internal: Object.assign({}, I, {
+      frexpExp: frexpExp,
+      pow2: pow2,
+      powerOfTwoBelow: powerOfTwoBelow,
+      sub: sub,
+      cross: cross,
+      pieceReports: pieceReports,
+    }),
+  };
 });
