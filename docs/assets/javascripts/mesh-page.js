@@ -19,10 +19,9 @@ function constants() {
   return window.TRINORMAL_CONSTANTS || {};
 }
 
-function message(key, values = {}) {
-  const template = (constants().mesh || {}).messages?.[key] || key;
-  return template.replace(/\{(\w+)\}/g, (m, name) => (values[name] !== undefined ? String(values[name]) : m));
-}
+// the package's words, as the mesh scripts (loaded before this module) fill them in
+const message = (key, values) => window.TrinormalMesh.message(key, values);
+const fill = (template, values) => window.TrinormalMesh.internal.fill(template, values);
 
 /** A Web Worker with request ids: run(op, data, transfer, onProgress) -> Promise of the result. */
 function createWorker() {
@@ -76,31 +75,6 @@ function createModel(initial) {
   };
 }
 
-/** A double's exact value as [numerator, denominator] (BigInt, lowest terms, power-of-two denominator). */
-function exactRatio(x) {
-  if (x === 0) return [0n, 1n];
-  const bits = new DataView(new ArrayBuffer(8));
-  bits.setFloat64(0, x);
-  const hi = bits.getUint32(0);
-  const exponent = (hi >>> 20) & 0x7ff;
-  let n = (BigInt(hi & 0xfffff) << 32n) | BigInt(bits.getUint32(4));
-  let power = -1074; // a subnormal number: n * 2^-1074
-  if (exponent) {
-    n |= 1n << 52n;
-    power = exponent - 1075;
-  }
-  while (power < 0 && !(n & 1n)) {
-    n >>= 1n;
-    power++;
-  }
-  if (hi >>> 31) n = -n;
-  return power >= 0 ? [n << BigInt(power), 1n] : [n, 1n << BigInt(-power)];
-}
-
-function fill(template, values) {
-  return template.replace(/\{(\w+)\}/g, (m, name) => (values[name] !== undefined ? String(values[name]) : m));
-}
-
 /**
  * The readout of one face, as trinormal.mesh.selection.face_selection writes it in Python: the
  * corners' coordinates (their exact binary values), then the calculator's exact results.
@@ -113,7 +87,7 @@ function faceSelection(res, face) {
   const problem = (text) => ({ face, title: text, rows: [[t.problem_label, text, ""]] });
   if (!Number.isInteger(face) || face < 0 || face >= nf) return problem(fill(t.no_face, { face, last: nf - 1 }));
   const corners = [0, 1, 2].map((k) => res.faces[3 * face + k]);
-  const ratios = corners.map((v) => [0, 1, 2].map((k) => exactRatio(res.positions[3 * v + k])));
+  const ratios = corners.map((v) => [0, 1, 2].map((k) => core.doubleRatio(res.positions[3 * v + k])));
   const texts = ratios.map((point) => point.map(([n, d]) => (d === 1n ? String(n) : `${n}/${d}`)));
   const result = core.compute(texts[0], texts[1], texts[2], "ABC", sel.precision);
   if (!result.ok) return problem(result.status);
@@ -144,7 +118,7 @@ function cell(tag, text, attrs = {}) {
 function pieceHeadings() {
   const head = $("tn-mesh-pieces-head");
   head.textContent = "";
-  for (const [, label] of (constants().mesh || {}).columns || []) head.appendChild(cell("th", label, { scope: "col" }));
+  for (const [, label] of constants().mesh.columns) head.appendChild(cell("th", label, { scope: "col" }));
 }
 
 /**
@@ -164,7 +138,7 @@ function renderReport(r) {
   const pieces = $("tn-mesh-pieces");
   pieces.textContent = "";
   // each cell carries its column's heading: on a phone the table is a list of cards
-  const heads = ((constants().mesh || {}).columns || []).map(([, label]) => label);
+  const heads = constants().mesh.columns.map(([, label]) => label);
   const none = message("no_answer");
   let dash = false;
   for (const [number, ...values] of table.pieces) {
@@ -199,7 +173,7 @@ function createViewHost(model) {
   let view = null; // the mounted view's cleanup
   async function showModel(res) {
     const host = $("tn-mesh-view");
-    const limit = ((constants().mesh || {}).limits || {}).max_view_faces || Infinity;
+    const limit = window.TrinormalMesh.LIMITS.max_view_faces;
     const nf = res.faces.length / 3;
     if (nf > limit && !host.dataset.asked) {
       // a big model is drawn when the reader asks: its first frame can take seconds
