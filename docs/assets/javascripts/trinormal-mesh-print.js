@@ -245,5 +245,5 @@ self.TrinormalMesh.part("print", "check", function (base) {
     return { rows: rows, pieces: pieces };
   }
 
-  return { check: check, summary: summary, table: table, internal: Object.assign({}, I, { shown: shown }) };
+  return { check: check, summary: summary, table: table };
 });

@@ -83,7 +83,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     }
     var error = new Float64Array(nComp);
     for (var i = 0; i < nComp; i++) error[i] = (VOLUME_ROUNDING + nIn[i]) * EPS * sizeSum[i];
-    return { volume: volume, fixed: fixed, error: error, scale: scale, ref: ref };
+    return { volume: volume, fixed: fixed, error: error, scale: scale, ref: ref, sizeSum: sizeSum, count: nIn };
   }
 
   // ------------------------------------------------------------------ small vector helpers
@@ -177,9 +177,11 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
 
   /**
    * Each `candidate` piece closed over its holes: a fan from the centre of each rim (a loop of
-   * boundary edges of one piece). {encloses, volume, fixed} per piece, as shells.py's capped.
+   * boundary edges of one piece). {encloses, volume, fixed} per piece, as shells.py's capped:
+   * the faces' sums of `vol` (volumes') and the caps' sums, added.
    */
-  function capped(V, faces, comp, nComp, flip, candidate, scale, refOf, boundarySides) {
+  function capped(V, faces, comp, nComp, flip, candidate, vol, boundarySides) {
+    var scale = vol.scale, refOf = vol.ref;
     var nv = V.length / 3;
     var volume = new Float64Array(nComp), fixed = new Float64Array(nComp), encloses = new Uint8Array(nComp);
     var any = false;
@@ -187,19 +189,13 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     if (!any) return { encloses: encloses, volume: volume, fixed: fixed };
     var ref = [];
     for (c = 0; c < nComp; c++) ref.push(refOf[c] >= 0 ? [V[refOf[c]], V[refOf[c] + 1], V[refOf[c] + 2]] : [0, 0, 0]);
-    var fv = new Float64Array(nComp), ff = new Float64Array(nComp), fsize = new Float64Array(nComp);
-    var farea = new Float64Array(nComp), nTerms = new Float64Array(nComp);
+    var farea = new Float64Array(nComp);
     for (var f = 0; f < comp.length; f++) {
       c = comp[f];
       if (c < 0 || !candidate[c]) continue;
       var s = scale[c];
       var p = scaled(V, faces[3 * f], s, ref[c]), q = scaled(V, faces[3 * f + 1], s, ref[c]), t = scaled(V, faces[3 * f + 2], s, ref[c]);
-      var det = det3(p, q, t);
-      fv[c] += det;
-      ff[c] += det * (flip[f] ? -1.0 : 1.0);
-      fsize[c] += norm(p) * norm(q) * norm(t);
       farea[c] += norm(cross(sub(q, p), sub(t, p)));
-      nTerms[c] += 1;
     }
     // the rims, in half-edge order; their corners as (piece, vertex) nodes, sorted
     var h = Array.from(boundarySides).filter(function (x) { return candidate[comp[(x / 3) | 0]]; });
@@ -219,7 +215,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       sum.set(r, [acc[0] + xyz[0], acc[1] + xyz[1], acc[2] + xyz[2], acc[3] + 1]);
     }
     var cv = new Float64Array(nComp), cf = new Float64Array(nComp), csize = new Float64Array(nComp);
-    var carea = new Float64Array(nComp);
+    var carea = new Float64Array(nComp), caps = new Float64Array(nComp);
     for (e = 0; e < h.length; e++) {
       c = comp[(h[e] / 3) | 0];
       var tot = sum.get(I.find(parent, nodeOf.get(keyA[e])));
@@ -231,13 +227,14 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       cf[c] += cap * (flip[(h[e] / 3) | 0] ? -1.0 : 1.0);
       csize[c] += norm(m) * norm(pb) * norm(pa);
       carea[c] += norm(cross(sub(pb, m), sub(pa, m)));
-      nTerms[c] += 1;
+      caps[c] += 1;
     }
     for (c = 0; c < nComp; c++) {
-      volume[c] = fv[c] + cv[c];
-      fixed[c] = ff[c] + cf[c];
-      var error = (VOLUME_ROUNDING + nTerms[c]) * EPS * (fsize[c] + csize[c]);
-      encloses[c] = candidate[c] && carea[c] < WELD.cap_fraction * (carea[c] + farea[c]) && Math.abs(fixed[c]) > error ? 1 : 0;
+      if (!candidate[c]) continue;
+      volume[c] = vol.volume[c] + cv[c];
+      fixed[c] = vol.fixed[c] + cf[c];
+      var error = (VOLUME_ROUNDING + vol.count[c] + caps[c]) * EPS * (vol.sizeSum[c] + csize[c]);
+      encloses[c] = carea[c] < WELD.cap_fraction * (carea[c] + farea[c]) && Math.abs(fixed[c]) > error ? 1 : 0;
     }
     return { encloses: encloses, volume: volume, fixed: fixed };
   }
@@ -265,7 +262,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       candidate[i] = !closed[i] && openCount[i] === boundaryCount[i] && w.orientable[i] ? 1 : 0;
     }
     var cavity = cavities(V, faces, comp, nComp, flip, solid, vol.scale);
-    var cap = capped(V, faces, comp, nComp, flip, candidate, vol.scale, vol.ref, e.boundarySides.array());
+    var cap = capped(V, faces, comp, nComp, flip, candidate, vol, e.boundarySides.array());
     var inward = new Uint8Array(nComp);
     for (i = 0; i < nComp; i++) {
       inward[i] = (solid[i] && (vol.fixed[i] < 0) !== !!cavity[i]) || (cap.encloses[i] && cap.fixed[i] < 0) ? 1 : 0;

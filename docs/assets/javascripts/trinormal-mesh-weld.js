@@ -52,10 +52,7 @@ self.TrinormalMesh.part("weld", "read", function (base) {
           break;
         }
         if (V[3 * at] === x && V[3 * at + 1] === y && V[3 * at + 2] === z) {
-          if (!rep) {
-            rep = new Int32Array(n);
-            for (var k = 0; k < n; k++) rep[k] = k;
-          }
+          if (!rep) rep = I.identity(n);
           rep[i] = at;
           break;
         }
