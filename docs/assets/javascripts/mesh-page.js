@@ -116,9 +116,7 @@ function cell(tag, text, attrs = {}) {
 
 /** The table of pieces' headings, from the package (trinormal.mesh_page.PIECE_COLUMNS). */
 function pieceHeadings() {
-  const head = $("tn-mesh-pieces-head");
-  head.textContent = "";
-  for (const [, label] of constants().mesh.columns) head.appendChild(cell("th", label, { scope: "col" }));
+  $("tn-mesh-pieces-head").replaceChildren(...constants().mesh.columns.map(([, label]) => cell("th", label, { scope: "col" })));
 }
 
 /**
@@ -127,29 +125,26 @@ function pieceHeadings() {
  */
 function renderReport(r) {
   const table = window.TrinormalMesh.table(r);
-  const tbody = $("tn-mesh-rows");
-  tbody.textContent = "";
-  for (const [key, label, text] of table.rows) {
-    const tr = document.createElement("tr");
+  const rows = table.rows.map(([key, label, text]) => {
+    const tr = cell("tr", undefined, { "data-key": key });
     tr.append(cell("th", label, { scope: "row" }), cell("td", text));
-    tr.dataset.key = key;
-    tbody.appendChild(tr);
-  }
+    return tr;
+  });
+  $("tn-mesh-rows").replaceChildren(...rows);
   const pieces = $("tn-mesh-pieces");
   pieces.textContent = "";
   // each cell carries its column's heading: on a phone the table is a list of cards
   const heads = constants().mesh.columns.map(([, label]) => label);
-  const none = message("no_answer");
-  let dash = false;
   for (const [number, ...values] of table.pieces) {
     const tr = document.createElement("tr");
-    dash = dash || values.includes(none);
     tr.append(
       cell("th", number, { scope: "row", "data-label": heads[0] }),
       ...values.map((text, k) => cell("td", text, { "data-label": heads[k + 1] })),
     );
     pieces.appendChild(tr);
   }
+  const none = message("no_answer");
+  const dash = table.pieces.some((piece) => piece.includes(none));
   const dashNote = $("tn-mesh-pieces-note");
   dashNote.textContent = dash ? message("pieces_dash") : "";
   dashNote.hidden = !dash;
@@ -160,9 +155,7 @@ function renderReport(r) {
     ? message("fix_only_winding")
     : r.faces_to_flip.length ? "" : message("fix_nothing");
   fixNote.hidden = !fixNote.textContent;
-  const summary = $("tn-mesh-summary");
-  summary.textContent = "";
-  for (const line of window.TrinormalMesh.summary(r)) summary.appendChild(cell("li", line));
+  $("tn-mesh-summary").replaceChildren(...window.TrinormalMesh.summary(r).map((line) => cell("li", line)));
 }
 
 /**
@@ -354,12 +347,17 @@ function mount(root) {
       root.dataset.state = "done";
       await shown;
     } catch (err) {
-      root.dataset.state = "error";
-      current = null;
-      result.hidden = true;
+      refuse(err.message);
       setBusy(false);
-      setStatus(err.message, "error");
     }
+  }
+
+  /** No report to show: the reason in the status line. */
+  function refuse(reason) {
+    current = null;
+    result.hidden = true;
+    root.dataset.state = "error";
+    setStatus(reason, "error");
   }
 
   /** One step of the worker on the file shown ("fix" or "weld"), then its report. */
@@ -402,10 +400,7 @@ function mount(root) {
     const tooLarge = window.TrinormalMesh.sizeProblem(file.name, file.size);
     if (tooLarge) {
       fixedFile = null;
-      current = null;
-      result.hidden = true;
-      root.dataset.state = "error";
-      setStatus(tooLarge, "error");
+      refuse(tooLarge);
       return;
     }
     open(file.name, await file.arrayBuffer());
