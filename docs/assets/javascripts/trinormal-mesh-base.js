@@ -115,15 +115,12 @@ self.TrinormalMesh = (function (root, constants) {
     this.length = 0;
   }
   Growable.prototype.push = function (x) {
-    if (this.length === this.data.length) this.grow(this.length + 1);
+    if (this.length === this.data.length) {
+      var next = new this.Type(2 * this.length);
+      next.set(this.data);
+      this.data = next;
+    }
     this.data[this.length++] = x;
-  };
-  Growable.prototype.grow = function (need) {
-    var size = this.data.length;
-    while (size < need) size *= 2;
-    var next = new this.Type(size);
-    next.set(this.data.subarray(0, this.length));
-    this.data = next;
   };
   Growable.prototype.array = function () {
     return this.data.slice(0, this.length);

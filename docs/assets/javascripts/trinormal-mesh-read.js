@@ -340,9 +340,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
   function looksLikeText(bytes) {
     var start = 0;
     while (start < bytes.length && (bytes[start] === 32 || (bytes[start] >= 9 && bytes[start] <= 13))) start++;
-    var head = "";
-    for (var j = start; j < Math.min(start + 5, bytes.length); j++) head += String.fromCharCode(bytes[j]);
-    return head.toLowerCase() === "solid" && bytes.indexOf(0) < 0;
+    return latin1(bytes.subarray(start, start + 5)).toLowerCase() === "solid" && bytes.indexOf(0) < 0;
   }
 
   /**
@@ -494,8 +492,8 @@ self.TrinormalMesh.part("read", "base", function (base) {
           fileError(name, null, "ply_index_range", { face: q, index: idx, valid: valid });
         }
       }
+      out.add(polys[q]);
     }
-    for (q = 0; q < polys.length; q++) out.add(polys[q]);
     var normals = null;
     if (v.nx && v.ny && v.nz) {
       normals = new Float64Array(3 * nv);
