@@ -302,7 +302,10 @@ self.TrinormalMesh.part("read", "base", function (base) {
   /** What the STL readers return: each triangle is its own face. */
   function stlMesh(merged, binary, notes) {
     var n = merged.faces.length / 3;
-    return { vertices: merged.vertices, faces: merged.faces, source: I.identity(n), polygons: n, split_polygons: 0, binary: binary, notes: notes };
+    return {
+      vertices: merged.vertices, faces: merged.faces, source: I.identity(n), polygons: n, split_polygons: 0,
+      nonplanar_polygons: 0, crossing_polygons: 0, quads: false, binary: binary, notes: notes,
+    };
   }
 
   function readStl(bytes, name, progress) {
@@ -683,7 +686,6 @@ self.TrinormalMesh.part("read", "base", function (base) {
     mesh.name = name;
     mesh.notes = mesh.notes || [];
     mesh.bytes = bytes;
-    if (mesh.nonplanar_polygons === undefined) Object.assign(mesh, { nonplanar_polygons: 0, crossing_polygons: 0, quads: false });
     if (mesh.faces.length === 0) fileError(name, null, "no_faces", {});
     I.checkFaceCount(name, mesh.faces.length / 3);
     return mesh;
