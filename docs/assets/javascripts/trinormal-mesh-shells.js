@@ -139,31 +139,25 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     var which = [];
     for (var c = 0; c < nComp; c++) if (solid[c]) which.push(c);
     if (which.length < 2) return depth;
-    var lo = [], hi = [], first = new Int32Array(nComp).fill(-1), lists = [];
+    var lists = [], corners = []; // each piece's faces, and their vertices
     for (c = 0; c < nComp; c++) {
-      lo.push([Infinity, Infinity, Infinity]);
-      hi.push([-Infinity, -Infinity, -Infinity]);
       lists.push([]);
+      corners.push([]);
     }
     for (var f = 0; f < comp.length; f++) {
       c = comp[f];
       if (c < 0) continue;
-      if (first[c] < 0) first[c] = f;
       lists[c].push(f);
-      for (var k = 0; k < 3; k++) {
-        for (var a = 0; a < 3; a++) {
-          var x = V[3 * faces[3 * f + k] + a];
-          lo[c][a] = Math.min(lo[c][a], x);
-          hi[c][a] = Math.max(hi[c][a], x);
-        }
-      }
+      corners[c].push(faces[3 * f], faces[3 * f + 1], faces[3 * f + 2]);
     }
+    var box = corners.map(function (list) { return I.bounds(V, list); });
     which.forEach(function (pa) {
       which.forEach(function (pb) {
         if (pa === pb) return;
-        for (var a = 0; a < 3; a++) if (!(lo[pb][a] <= lo[pa][a] && hi[pa][a] <= hi[pb][a])) return;
+        var lo = box[pb][0], hi = box[pb][1];
+        for (var a = 0; a < 3; a++) if (!(lo[a] <= box[pa][0][a] && box[pa][1][a] <= hi[a])) return;
         var s = Math.max(scale[pa], scale[pb]), z = [0, 0, 0];
-        var f0 = first[pa];
+        var f0 = lists[pa][0];
         var p0 = scaled(V, faces[3 * f0], s, z), p1 = scaled(V, faces[3 * f0 + 1], s, z), p2 = scaled(V, faces[3 * f0 + 2], s, z);
         var point = [(p0[0] + p1[0] + p2[0]) / 3.0, (p0[1] + p1[1] + p2[1]) / 3.0, (p0[2] + p1[2] + p2[2]) / 3.0];
         if (inside(V, faces, lists[pb], flip, s, point)) depth[pa]++;
