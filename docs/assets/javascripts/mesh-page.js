@@ -19,10 +19,9 @@ function constants() {
   return window.TRINORMAL_CONSTANTS || {};
 }
 
-function message(key, values = {}) {
-  const template = (constants().mesh || {}).messages?.[key] || key;
-  return template.replace(/\{(\w+)\}/g, (m, name) => (values[name] !== undefined ? String(values[name]) : m));
-}
+// the package's words, as the mesh scripts (loaded before this module) fill them in
+const message = (key, values) => window.TrinormalMesh.message(key, values);
+const fill = (template, values) => window.TrinormalMesh.internal.fill(template, values);
 
 /** A Web Worker with request ids: run(op, data, transfer, onProgress) -> Promise of the result. */
 function createWorker() {
@@ -76,31 +75,6 @@ function createModel(initial) {
   };
 }
 
-/** A double's exact value as [numerator, denominator] (BigInt, lowest terms, power-of-two denominator). */
-function exactRatio(x) {
-  if (x === 0) return [0n, 1n];
-  const bits = new DataView(new ArrayBuffer(8));
-  bits.setFloat64(0, x);
-  const hi = bits.getUint32(0);
-  const exponent = (hi >>> 20) & 0x7ff;
-  let n = (BigInt(hi & 0xfffff) << 32n) | BigInt(bits.getUint32(4));
-  let power = -1074; // a subnormal number: n * 2^-1074
-  if (exponent) {
-    n |= 1n << 52n;
-    power = exponent - 1075;
-  }
-  while (power < 0 && !(n & 1n)) {
-    n >>= 1n;
-    power++;
-  }
-  if (hi >>> 31) n = -n;
-  return power >= 0 ? [n << BigInt(power), 1n] : [n, 1n << BigInt(-power)];
-}
-
-function fill(template, values) {
-  return template.replace(/\{(\w+)\}/g, (m, name) => (values[name] !== undefined ? String(values[name]) : m));
-}
-
 /**
  * The readout of one face, as trinormal.mesh.selection.face_selection writes it in Python: the
  * corners' coordinates (their exact binary values), then the calculator's exact results.
@@ -113,7 +87,7 @@ function faceSelection(res, face) {
   const problem = (text) => ({ face, title: text, rows: [[t.problem_label, text, ""]] });
   if (!Number.isInteger(face) || face < 0 || face >= nf) return problem(fill(t.no_face, { face, last: nf - 1 }));
   const corners = [0, 1, 2].map((k) => res.faces[3 * face + k]);
-  const ratios = corners.map((v) => [0, 1, 2].map((k) => exactRatio(res.positions[3 * v + k])));
+  const ratios = corners.map((v) => [0, 1, 2].map((k) => core.doubleRatio(res.positions[3 * v + k])));
   const texts = ratios.map((point) => point.map(([n, d]) => (d === 1n ? String(n) : `${n}/${d}`)));
   const result = core.compute(texts[0], texts[1], texts[2], "ABC", sel.precision);
   if (!result.ok) return problem(result.status);
@@ -142,9 +116,7 @@ function cell(tag, text, attrs = {}) {
 
 /** The table of pieces' headings, from the package (trinormal.mesh_page.PIECE_COLUMNS). */
 function pieceHeadings() {
-  const head = $("tn-mesh-pieces-head");
-  head.textContent = "";
-  for (const [, label] of (constants().mesh || {}).columns || []) head.appendChild(cell("th", label, { scope: "col" }));
+  $("tn-mesh-pieces-head").replaceChildren(...constants().mesh.columns.map(([, label]) => cell("th", label, { scope: "col" })));
 }
 
 /**
@@ -153,29 +125,26 @@ function pieceHeadings() {
  */
 function renderReport(r) {
   const table = window.TrinormalMesh.table(r);
-  const tbody = $("tn-mesh-rows");
-  tbody.textContent = "";
-  for (const [key, label, text] of table.rows) {
-    const tr = document.createElement("tr");
+  const rows = table.rows.map(([key, label, text]) => {
+    const tr = cell("tr", undefined, { "data-key": key });
     tr.append(cell("th", label, { scope: "row" }), cell("td", text));
-    tr.dataset.key = key;
-    tbody.appendChild(tr);
-  }
+    return tr;
+  });
+  $("tn-mesh-rows").replaceChildren(...rows);
   const pieces = $("tn-mesh-pieces");
   pieces.textContent = "";
   // each cell carries its column's heading: on a phone the table is a list of cards
-  const heads = ((constants().mesh || {}).columns || []).map(([, label]) => label);
-  const none = message("no_answer");
-  let dash = false;
+  const heads = constants().mesh.columns.map(([, label]) => label);
   for (const [number, ...values] of table.pieces) {
     const tr = document.createElement("tr");
-    dash = dash || values.includes(none);
     tr.append(
       cell("th", number, { scope: "row", "data-label": heads[0] }),
       ...values.map((text, k) => cell("td", text, { "data-label": heads[k + 1] })),
     );
     pieces.appendChild(tr);
   }
+  const none = message("no_answer");
+  const dash = table.pieces.some((piece) => piece.includes(none));
   const dashNote = $("tn-mesh-pieces-note");
   dashNote.textContent = dash ? message("pieces_dash") : "";
   dashNote.hidden = !dash;
@@ -186,9 +155,7 @@ function renderReport(r) {
     ? message("fix_only_winding")
     : r.faces_to_flip.length ? "" : message("fix_nothing");
   fixNote.hidden = !fixNote.textContent;
-  const summary = $("tn-mesh-summary");
-  summary.textContent = "";
-  for (const line of window.TrinormalMesh.summary(r)) summary.appendChild(cell("li", line));
+  $("tn-mesh-summary").replaceChildren(...window.TrinormalMesh.summary(r).map((line) => cell("li", line)));
 }
 
 /**
@@ -199,7 +166,7 @@ function createViewHost(model) {
   let view = null; // the mounted view's cleanup
   async function showModel(res) {
     const host = $("tn-mesh-view");
-    const limit = ((constants().mesh || {}).limits || {}).max_view_faces || Infinity;
+    const limit = window.TrinormalMesh.LIMITS.max_view_faces;
     const nf = res.faces.length / 3;
     if (nf > limit && !host.dataset.asked) {
       // a big model is drawn when the reader asks: its first frame can take seconds
@@ -380,12 +347,17 @@ function mount(root) {
       root.dataset.state = "done";
       await shown;
     } catch (err) {
-      root.dataset.state = "error";
-      current = null;
-      result.hidden = true;
+      refuse(err.message);
       setBusy(false);
-      setStatus(err.message, "error");
     }
+  }
+
+  /** No report to show: the reason in the status line. */
+  function refuse(reason) {
+    current = null;
+    result.hidden = true;
+    root.dataset.state = "error";
+    setStatus(reason, "error");
   }
 
   /** One step of the worker on the file shown ("fix" or "weld"), then its report. */
@@ -428,10 +400,7 @@ function mount(root) {
     const tooLarge = window.TrinormalMesh.sizeProblem(file.name, file.size);
     if (tooLarge) {
       fixedFile = null;
-      current = null;
-      result.hidden = true;
-      root.dataset.state = "error";
-      setStatus(tooLarge, "error");
+      refuse(tooLarge);
       return;
     }
     open(file.name, await file.arrayBuffer());

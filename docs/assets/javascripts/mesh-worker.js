@@ -3,10 +3,10 @@
  * repaired file, off the page's main thread, so a million faces never freeze the page.
  *
  * Messages in: {op: "open", id, name, buffer} (the file's bytes, transferred),
- *              {op: "fix", id}.
+ *              {op: "weld", id}, {op: "fix", id}.
  * Messages out: {id, type: "progress", stage, fraction},
  *               {id, type: "done", result}, {id, type: "error", message}.
- * The worker keeps the last mesh read; "fix" works on it.
+ * The worker keeps the last mesh read; "weld" and "fix" work on it.
  */
 /* global importScripts, TrinormalMesh */
 self.window = self; // trinormal-constants.js sets window.TRINORMAL_CONSTANTS
@@ -49,8 +49,6 @@ function payload(mesh, faces, report, file) {
     name: mesh.name,
     format: mesh.format,
     binary: !!mesh.binary,
-    polygons: mesh.polygons,
-    split_polygons: mesh.split_polygons,
     notes: mesh.notes,
     report: TrinormalMesh.toDict(report),
     positions,
@@ -67,33 +65,30 @@ function payload(mesh, faces, report, file) {
   return [result, transfer];
 }
 
+/** Check `faces` of the mesh read (welded when asked); the worker keeps what it checked. */
+function checked(id, mesh, faces, weld) {
+  const report = TrinormalMesh.check(mesh.vertices, faces, progressFor(id, "check"), weld);
+  current = { mesh, faces, report, weld };
+  return report;
+}
+
 self.onmessage = (event) => {
   const { op, id } = event.data;
   try {
     if (op === "open") {
-      const t0 = performance.now();
       const mesh = TrinormalMesh.read(event.data.buffer, event.data.name, progressFor(id, "read"));
-      const t1 = performance.now();
-      const report = TrinormalMesh.check(mesh.vertices, mesh.faces, progressFor(id, "check"));
-      const t2 = performance.now();
-      current = { mesh, faces: mesh.faces, report, weld: false };
-      const [result, transfer] = payload(mesh, mesh.faces, report);
-      result.timing = { read_ms: t1 - t0, check_ms: t2 - t1 };
+      const [result, transfer] = payload(mesh, mesh.faces, checked(id, mesh, mesh.faces, false));
       post(id, "done", { result }, transfer);
     } else if (op === "weld") {
       if (!current) throw new Error("no mesh to weld");
       const mesh = current.mesh;
-      const report = TrinormalMesh.check(mesh.vertices, mesh.faces, progressFor(id, "check"), true);
-      current = { mesh, faces: mesh.faces, report, weld: true };
-      const [result, transfer] = payload(mesh, mesh.faces, report);
+      const [result, transfer] = payload(mesh, mesh.faces, checked(id, mesh, mesh.faces, true));
       post(id, "done", { result }, transfer);
     } else if (op === "fix") {
       if (!current) throw new Error("no mesh to fix");
       const faces = TrinormalMesh.fixWinding(current.faces, current.report);
-      const report = TrinormalMesh.check(current.mesh.vertices, faces, progressFor(id, "check"), current.weld);
-      current = { mesh: current.mesh, faces, report, weld: current.weld };
-      const file = TrinormalMesh.write(current.mesh, faces);
-      const [result, transfer] = payload(current.mesh, faces, report, file);
+      const report = checked(id, current.mesh, faces, current.weld);
+      const [result, transfer] = payload(current.mesh, faces, report, TrinormalMesh.write(current.mesh, faces));
       post(id, "done", { result }, transfer);
     }
   } catch (err) {

@@ -49,8 +49,12 @@ self.TrinormalMesh = (function (root, constants) {
   MeshError.prototype = Object.create(Error.prototype);
   MeshError.prototype.constructor = MeshError;
 
-  /** A template's {placeholders} filled in from `values` (left as they are when missing). */
+  /**
+   * A template's {placeholders} filled in from `values` (left as they are when missing); a
+   * (one, many) pair of templates is chosen by values.n.
+   */
   function fill(template, values) {
+    if (Array.isArray(template)) template = values && values.n === 1 ? template[0] : template[1];
     return template.replace(/\{(\w+)\}/g, function (m, name) {
       return values && values[name] !== undefined ? String(values[name]) : m;
     });
@@ -111,19 +115,41 @@ self.TrinormalMesh = (function (root, constants) {
     this.length = 0;
   }
   Growable.prototype.push = function (x) {
-    if (this.length === this.data.length) this.grow(this.length + 1);
+    if (this.length === this.data.length) {
+      var next = new this.Type(2 * this.length);
+      next.set(this.data);
+      this.data = next;
+    }
     this.data[this.length++] = x;
-  };
-  Growable.prototype.grow = function (need) {
-    var size = this.data.length;
-    while (size < need) size *= 2;
-    var next = new this.Type(size);
-    next.set(this.data.subarray(0, this.length));
-    this.data = next;
   };
   Growable.prototype.array = function () {
     return this.data.slice(0, this.length);
   };
+
+  // ------------------------------------------------------------------ union-find
+
+  /** 0, 1, ..., n - 1: every element its own set, for `find` and `union`. */
+  function identity(n) {
+    var out = new Int32Array(n);
+    for (var i = 0; i < n; i++) out[i] = i;
+    return out;
+  }
+
+  function find(parent, x) {
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  }
+
+  /** Join the sets of a and b; the larger root goes under the smaller. */
+  function union(parent, a, b) {
+    a = find(parent, a);
+    b = find(parent, b);
+    if (a < b) parent[b] = a;
+    else if (b < a) parent[a] = b;
+  }
 
   // ------------------------------------------------------------------ open-addressing tables
 
@@ -317,6 +343,9 @@ self.TrinormalMesh = (function (root, constants) {
       fileError: fileError,
       plural: plural,
       Growable: Growable,
+      identity: identity,
+      find: find,
+      union: union,
       fmix: fmix,
       slotTable: slotTable,
       show: show,

@@ -7,11 +7,12 @@
 self.TrinormalMesh.part("check", "shells", function (base) {
   "use strict";
   var I = base.internal, MESH = I.MESH, TOL = MESH.tol, Growable = I.Growable;
-  // The exact core's integer square root (Python's math.isqrt), so the two ports share one.
+  var frexpExp = I.frexpExp, pow2 = I.pow2, sub = I.sub, cross = I.cross, find = I.find, union = I.union;
+  // The exact core's math.isqrt and float.as_integer_ratio, so the two ports share them.
   if (!self.TrinormalCore) {
     throw new Error("trinormal-mesh-check.js needs trinormal-core.js to be loaded first");
   }
-  var isqrt = self.TrinormalCore.isqrt;
+  var isqrt = self.TrinormalCore.isqrt, doubleRatio = self.TrinormalCore.doubleRatio;
 
   // ------------------------------------------------------------------ each face: normal and degeneracy
   //
@@ -28,8 +29,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
   var BAND = Math.pow(2, -49);
   var LO_T = Math.max(TOL * (1 - BAND) - BAND, 0.0);
   var HI_T = TOL * (1 + BAND) + BAND;
-  var f64 = new Float64Array(1);
-  var u32 = new Uint32Array(f64.buffer);
 
   /** 1: surely not degenerate, -1: surely degenerate, 0: too near the threshold (_sure). */
   function sure(nn, l2) {
@@ -37,28 +36,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     if (nn > HI_T * HI_T * l4) return 1;
     var below = LO_T * LO_T * l4;
     return (nn < below && below > TWO_M900) || l2 === 0.0 ? -1 : 0;
-  }
-
-  /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
-  function frexpExp(x) {
-    if (x === 0 || !Number.isFinite(x)) return 0;
-    f64[0] = x;
-    var e = (u32[1] >>> 20) & 0x7ff;
-    if (e === 0) {
-      f64[0] = x * 18446744073709551616; // 2**64: a subnormal made normal, exactly
-      e = ((u32[1] >>> 20) & 0x7ff) - 64;
-    }
-    return e - 1022;
-  }
-
-  /** 2**e for -1074 <= e <= 1023, built from its bits (exact). */
-  function pow2(e) {
-    u32[0] = 0;
-    u32[1] = 0;
-    if (e >= -1022) u32[1] = (e + 1023) << 20;
-    else if (e >= -1042) u32[1] = 1 << (e + 1074 - 32);
-    else u32[0] = 1 << (e + 1074);
-    return f64[0];
   }
 
   /** x * 2**e rounded once, as C's ldexp (numpy.ldexp): exact unless the result is subnormal. */
@@ -80,10 +57,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     return Math.max(Math.abs(p[0]), Math.abs(p[1]), Math.abs(p[2]));
   }
 
-  function cross(p, q) {
-    return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
-  }
-
   /**
    * p·q of two rows as numpy's einsum("ij,ij->i") adds it in normals.py's _careful (its
    * _rowdot): two lanes at a time, so (p0 q0 + p2 q2) + p1 q1. The fast path adds in order.
@@ -97,22 +70,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
   function bitLength(n) {
     return n === 0n ? 0 : n.toString(2).length;
   }
-
-  /** A finite x as [M, E], x = M * 2**E exactly, M an odd BigInt (or [0n, 0]): as_integer_ratio. */
-  function binaryRatio(x) {
-    if (x === 0) return [0n, 0];
-    f64[0] = Math.abs(x);
-    var bits = (BigInt(u32[1] & 0xfffff) << 32n) | BigInt(u32[0]);
-    var be = (u32[1] >>> 20) & 0x7ff;
-    var m = be === 0 ? bits : bits | (1n << 52n);
-    var e = (be === 0 ? 1 : be) - 1075;
-    while ((m & 1n) === 0n) {
-      m >>= 1n;
-      e++;
-    }
-    return [x < 0 ? -m : m, e];
-  }
-
 
   /** a / b correctly rounded to a double (b > 0), as Python's int / int. */
   function divide(a, b) {
@@ -136,9 +93,8 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     return neg ? -out : out;
   }
 
-  var TOL_RATIO = binaryRatio(TOL); // tol = n / d exactly, as check_tolerance reads the float
-  var TOL_N = TOL_RATIO[1] >= 0 ? TOL_RATIO[0] << BigInt(TOL_RATIO[1]) : TOL_RATIO[0];
-  var TOL_D = TOL_RATIO[1] >= 0 ? 1n : 1n << BigInt(-TOL_RATIO[1]);
+  var TOL_RATIO = doubleRatio(TOL); // tol = n / d exactly, as check_tolerance reads the float
+  var TOL_N = TOL_RATIO[0], TOL_D = TOL_RATIO[1];
 
   /**
    * One face's unit normal computed exactly, or null when it is degenerate: the corners as
@@ -146,10 +102,9 @@ self.TrinormalMesh.part("check", "shells", function (base) {
    * and each component a quotient of integers, correctly rounded.
    */
   function exact(corners) {
-    var ratios = corners.map(binaryRatio);
-    var den = 0;
-    ratios.forEach(function (r) { if (r[0] !== 0n && -r[1] > den) den = -r[1]; });
-    var p = ratios.map(function (r) { return r[0] << BigInt(r[1] + den); });
+    var ratios = corners.map(doubleRatio);
+    var den = ratios.reduce(function (d, r) { return r[1] > d ? r[1] : d; }, 1n);
+    var p = ratios.map(function (r) { return r[0] * (den / r[1]); });
     var u = [p[3] - p[0], p[4] - p[1], p[5] - p[2]];
     var v = [p[6] - p[0], p[7] - p[1], p[8] - p[2]];
     var w = [p[6] - p[3], p[7] - p[4], p[8] - p[5]];
@@ -170,7 +125,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
    */
   function careful(V, i0, i1, i2, normals, at) {
     var a = [V[i0], V[i0 + 1], V[i0 + 2]], b = [V[i1], V[i1 + 1], V[i1 + 2]], c = [V[i2], V[i2 + 1], V[i2 + 2]];
-    var sub = function (p, q) { return [p[0] - q[0], p[1] - q[1], p[2] - q[2]]; };
     var quarter = function (p) { return [p[0] * 0.25, p[1] * 0.25, p[2] * 0.25]; };
     var u = sub(b, a), w = sub(c, a), x = sub(c, b); // U, V, W
     if (!u.concat(w, x).every(Number.isFinite)) {
@@ -289,22 +243,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     return { start: start, hi: hi, side: side };
   }
 
-  function find(parent, x) {
-    while (parent[x] !== x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  }
-
-  function union(parent, a, b) {
-    a = find(parent, a);
-    b = find(parent, b);
-    if (a === b) return;
-    if (a < b) parent[b] = a;
-    else parent[a] = b;
-  }
-
   function next(h) {
     return h % 3 === 2 ? h - 2 : h + 1;
   }
@@ -322,13 +260,6 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     });
   }
 
-  /** 0..n-1 in a typed array: every element its own set, for `find` and `union`. */
-  function identity(n) {
-    var out = new Int32Array(n);
-    for (var i = 0; i < n; i++) out[i] = i;
-    return out;
-  }
-
   /**
    * Every undirected edge, by how many face sides share it: a boundary (one side), a manifold
    * edge (two: `pairA`, `pairB`) or a non-manifold one (three or more). On the way, faces
@@ -340,8 +271,8 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     var table = edgeTable(faces, nv, clean);
     var start = table.start, hi = table.hi, side = table.side;
     var e = {
-      parent: identity(nf),
-      fanParent: identity(3 * nf),
+      parent: I.identity(nf),
+      fanParent: I.identity(3 * nf),
       boundary: [],
       nonManifold: [],
       inconsistentPairs: [],
@@ -429,9 +360,7 @@ self.TrinormalMesh.part("check", "shells", function (base) {
       if (fanOf[vtx] < 0) fanOf[vtx] = root;
       else if (fanOf[vtx] !== root) manyFans[vtx] = 1;
     }
-    var out = [];
-    for (var i = 0; i < nv; i++) if (manyFans[i]) out.push(i);
-    return out;
+    return indicesWhere(manyFans, function (many) { return many; });
   }
 
   // ------------------------------------------------------------------ winding (repair.py)
@@ -544,7 +473,7 @@ self.TrinormalMesh.part("check", "shells", function (base) {
     var exact = I.exactRepresentatives(V);
     var t = joined(faces, nv, exact);
     if (t.e.boundarySides.length && dist > 0) {
-      var rep = I.mergeClose(V, exact || I.weldIdentity(nv), boundaryCorners(t), dist);
+      var rep = I.mergeClose(V, exact || I.identity(nv), boundaryCorners(t), dist);
       if (rep) t = joined(faces, nv, rep);
     }
     var near = { edges: 0, distance: null };
@@ -554,7 +483,7 @@ self.TrinormalMesh.part("check", "shells", function (base) {
       var most = I.nearestLargest(V, b, range);
       if (most !== null) {
         var suggest = I.roundDistance(most, true)[0];
-        var t2 = joined(faces, nv, I.mergeClose(V, t.rep || I.weldIdentity(nv), b, suggest));
+        var t2 = joined(faces, nv, I.mergeClose(V, t.rep || I.identity(nv), b, suggest));
         var closes = t.e.boundarySides.length - t2.e.boundarySides.length;
         if (closes > 0 && weld === true) {
           t = t2;
@@ -686,9 +615,7 @@ self.TrinormalMesh.part("check", "shells", function (base) {
 
   /** A sentence of the summary: a template, or a (one, many) pair chosen by values.n. */
   function sentence(key, values) {
-    var t = MESH.summary[key];
-    if (Array.isArray(t)) t = values.n === 1 ? t[0] : t[1];
-    return I.fill(t, values);
+    return I.fill(MESH.summary[key], values);
   }
 
   /** A distance as the summary writes it: rounded up to 1, 2 or 5 times a power of ten. */
@@ -761,11 +688,7 @@ self.TrinormalMesh.part("check", "shells", function (base) {
 
   /** The report without the view's private keys: what Python's to_dict() returns. */
   function toDict(report) {
-    var out = {};
-    Object.keys(report).forEach(function (k) {
-      if (k.charAt(0) !== "_") out[k] = report[k];
-    });
-    return out;
+    return Object.fromEntries(Object.entries(report).filter(function (kv) { return kv[0].charAt(0) !== "_"; }));
   }
 
   return {

@@ -15,9 +15,7 @@ self.TrinormalMesh.part("print", "check", function (base) {
 
   /** A line or word of the printing templates: a (one, many) pair chosen by values.n. */
   function say(key, values) {
-    var t = T[key];
-    if (Array.isArray(t)) t = values && values.n === 1 ? t[0] : t[1];
-    return I.fill(t, values || {});
+    return I.fill(T[key], values);
   }
 
   /** A number of the printing lines, as printing.shown writes it (significant digits). */
@@ -39,24 +37,12 @@ self.TrinormalMesh.part("print", "check", function (base) {
 
   /** The bounding box of the used vertices and the surface area (printing.measure). */
   function measure(V, F) {
-    var nv = V.length / 3, nf = F.length / 3;
-    var used = new Uint8Array(nv);
-    for (var k = 0; k < F.length; k++) used[F[k]] = 1;
-    var lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-    var any = false;
-    for (var i = 0; i < nv; i++) {
-      if (!used[i]) continue;
-      any = true;
-      for (var j = 0; j < 3; j++) {
-        var x = V[3 * i + j];
-        if (x < lo[j]) lo[j] = x;
-        if (x > hi[j]) hi[j] = x;
-      }
-    }
-    if (!any) return { surface_area: 0.0, size: null };
+    var nf = F.length / 3;
+    var box = I.bounds(V, F);
+    if (!box) return { surface_area: 0.0, size: null };
     // + 0 writes a zero corner as 0, never -0, whichever of the two came first
-    lo = lo.map(function (x) { return x + 0; });
-    hi = hi.map(function (x) { return x + 0; });
+    var lo = box[0].map(function (x) { return x + 0; });
+    var hi = box[1].map(function (x) { return x + 0; });
     var s = I.powerOfTwoBelow(Math.max(Math.abs(lo[0]), Math.abs(lo[1]), Math.abs(lo[2]),
       Math.abs(hi[0]), Math.abs(hi[1]), Math.abs(hi[2])));
     var total = 0.0;
@@ -86,24 +72,12 @@ self.TrinormalMesh.part("print", "check", function (base) {
   }
 
   /** The number of edges around each hole, largest first (printing._holes). */
-  function holes(boundary) {
-    var parent = new Map();
-    function find(x) {
-      while (parent.get(x) !== x) {
-        parent.set(x, parent.get(parent.get(x)));
-        x = parent.get(x);
-      }
-      return x;
-    }
-    boundary.forEach(function (e) {
-      if (!parent.has(e[0])) parent.set(e[0], e[0]);
-      if (!parent.has(e[1])) parent.set(e[1], e[1]);
-      var a = find(e[0]), b = find(e[1]);
-      if (a !== b) parent.set(Math.max(a, b), Math.min(a, b));
-    });
+  function holes(boundary, nv) {
+    var parent = I.identity(nv);
+    boundary.forEach(function (e) { I.union(parent, e[0], e[1]); });
     var count = new Map();
     boundary.forEach(function (e) {
-      var r = find(e[0]);
+      var r = I.find(parent, e[0]);
       count.set(r, (count.get(r) || 0) + 1);
     });
     return Array.from(count.values()).sort(function (x, y) { return y - x; });
@@ -159,7 +133,7 @@ self.TrinormalMesh.part("print", "check", function (base) {
   function check(vertices, faces, onProgress, weld) {
     var r = base.check(vertices, faces, onProgress, weld);
     var m = measure(vertices, faces);
-    var h = holes(r.boundary_edges);
+    var h = holes(r.boundary_edges, r.n_vertices);
     r.holes = h;
     r.surface_area = m.surface_area;
     r.volume = totalVolume(r.components);
@@ -271,5 +245,5 @@ self.TrinormalMesh.part("print", "check", function (base) {
     return { rows: rows, pieces: pieces };
   }
 
-  return { check: check, summary: summary, table: table, internal: Object.assign({}, I, { shown: shown }) };
+  return { check: check, summary: summary, table: table };
 });

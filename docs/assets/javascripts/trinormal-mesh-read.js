@@ -183,16 +183,13 @@ self.TrinormalMesh.part("read", "base", function (base) {
 
   // ------------------------------------------------------------------ OBJ
 
-  var OBJ_IGNORED = {};
-  (
-    "vt vn vp g o s mg usemtl mtllib usemap maplib l p cstype deg bmat step curv curv2 surf " +
-    "parm trim hole scrv sp end con bevel c_interp d_interp lod shadow_obj trace_obj ctech " +
-    "stech call csh"
-  )
-    .split(" ")
-    .forEach(function (k) {
-      OBJ_IGNORED[k] = true;
-    });
+  var OBJ_IGNORED = new Set(
+    (
+      "vt vn vp g o s mg usemtl mtllib usemap maplib l p cstype deg bmat step curv curv2 surf " +
+      "parm trim hole scrv sp end con bevel c_interp d_interp lod shadow_obj trace_obj ctech " +
+      "stech call csh"
+    ).split(" ")
+  );
 
   function readObj(bytes, name, progress) {
     var lines = splitlines(text(bytes, name, "OBJ"));
@@ -236,7 +233,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
         }
         polys.push(poly);
         polyLines.push(lineno);
-      } else if (!OBJ_IGNORED[kw]) {
+      } else if (!OBJ_IGNORED.has(kw)) {
         fileError(name, lineno, "obj_statement", { token: show(kw) });
       }
     }
@@ -302,11 +299,13 @@ self.TrinormalMesh.part("read", "base", function (base) {
     return { vertices: out.slice(0, 3 * nv), faces: faces };
   }
 
-  /** 0, 1, ..., n - 1: each triangle of an STL file is its own face. */
-  function series(n) {
-    var out = new Uint32Array(n);
-    for (var i = 0; i < n; i++) out[i] = i;
-    return out;
+  /** What the STL readers return: each triangle is its own face. */
+  function stlMesh(merged, binary, notes) {
+    var n = merged.faces.length / 3;
+    return {
+      vertices: merged.vertices, faces: merged.faces, source: I.identity(n), polygons: n, split_polygons: 0,
+      nonplanar_polygons: 0, crossing_polygons: 0, quads: false, binary: binary, notes: notes,
+    };
   }
 
   function readStl(bytes, name, progress) {
@@ -333,7 +332,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
           }
         }
         var merged = mergeCorners(corners, function (p) { progress(0.4 + 0.6 * p); });
-        return { vertices: merged.vertices, faces: merged.faces, source: series(n), polygons: n, split_polygons: 0, binary: true, notes: notes };
+        return stlMesh(merged, true, notes);
       }
     }
     if (!looksLikeText(bytes)) fileError(name, null, "stl_short", {});
@@ -344,9 +343,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
   function looksLikeText(bytes) {
     var start = 0;
     while (start < bytes.length && (bytes[start] === 32 || (bytes[start] >= 9 && bytes[start] <= 13))) start++;
-    var head = "";
-    for (var j = start; j < Math.min(start + 5, bytes.length); j++) head += String.fromCharCode(bytes[j]);
-    return head.toLowerCase() === "solid" && bytes.indexOf(0) < 0;
+    return latin1(bytes.subarray(start, start + 5)).toLowerCase() === "solid" && bytes.indexOf(0) < 0;
   }
 
   /**
@@ -397,8 +394,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
     }
     if (inLoop) fileError(name, lineno, "stl_ends_in_facet", {});
     var merged = mergeCorners(corners.array(), function (p) { progress(0.5 + 0.5 * p); });
-    var nf = merged.faces.length / 3;
-    return { vertices: merged.vertices, faces: merged.faces, source: series(nf), polygons: nf, split_polygons: 0, binary: false };
+    return stlMesh(merged, false, []);
   }
 
   // ------------------------------------------------------------------ PLY
@@ -460,10 +456,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
       }
     }
     if (fmt === null) fileError(name, null, "ply_no_format", {});
-    var vert = null;
-    elements.forEach(function (e) {
-      if (!vert && e.name === "vertex") vert = e;
-    });
+    var vert = elements.find(function (e) { return e.name === "vertex"; });
     if (!vert) fileError(name, null, "ply_no_vertex", {});
     if (!isFixed(vert)) fileError(name, vert.line, "ply_vertex_list", {});
     ["x", "y", "z"].forEach(function (axis) {
@@ -476,10 +469,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
   function readPly(bytes, name, progress) {
     var head = plyHeader(bytes, name);
     var fmt = head.fmt, elements = head.elements, bodyStart = head.bodyStart, vert = head.vert;
-    var face = null;
-    elements.forEach(function (e) {
-      if (!face && e.name === "face") face = e;
-    });
+    var face = elements.find(function (e) { return e.name === "face"; });
     if (face) I.checkFaceCount(name, face.rows);
     var values =
       fmt === "ascii"
@@ -505,8 +495,8 @@ self.TrinormalMesh.part("read", "base", function (base) {
           fileError(name, null, "ply_index_range", { face: q, index: idx, valid: valid });
         }
       }
+      out.add(polys[q]);
     }
-    for (q = 0; q < polys.length; q++) out.add(polys[q]);
     var normals = null;
     if (v.nx && v.ny && v.nz) {
       normals = new Float64Array(3 * nv);
@@ -528,6 +518,11 @@ self.TrinormalMesh.part("read", "base", function (base) {
 
   function isFixed(el) {
     return el.props.every(function (p) { return p.count === null; });
+  }
+
+  /** The bytes of one row of an element without lists. */
+  function rowSize(el) {
+    return el.props.reduce(function (size, p) { return size + p.type[1]; }, 0);
   }
 
   function plyAscii(bytes, start, firstLine, elements, name, progress) {
@@ -621,8 +616,7 @@ self.TrinormalMesh.part("read", "base", function (base) {
     var size = bytes.length;
     elements.forEach(function (el) {
       if (isFixed(el)) {
-        var item = 0;
-        el.props.forEach(function (p) { item += p.type[1]; });
+        var item = rowSize(el);
         if (pos + item * el.count > size) {
           fileError(name, null, "ply_binary_short", {
             element: el.name, rows: Math.floor((size - pos) / Math.max(item, 1)), count: el.rows,
@@ -692,11 +686,10 @@ self.TrinormalMesh.part("read", "base", function (base) {
     mesh.name = name;
     mesh.notes = mesh.notes || [];
     mesh.bytes = bytes;
-    if (mesh.nonplanar_polygons === undefined) Object.assign(mesh, { nonplanar_polygons: 0, crossing_polygons: 0, quads: false });
     if (mesh.faces.length === 0) fileError(name, null, "no_faces", {});
     I.checkFaceCount(name, mesh.faces.length / 3);
     return mesh;
   }
 
-  return { FORMATS: FORMATS, read: read, plyLayout: { header: plyHeader, faceListName: faceListName, isFixed: isFixed } };
+  return { FORMATS: FORMATS, read: read, plyLayout: { header: plyHeader, faceListName: faceListName, isFixed: isFixed, rowSize: rowSize } };
 });

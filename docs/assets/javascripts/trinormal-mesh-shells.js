@@ -11,13 +11,34 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
   var EPS = Math.pow(2, -52);
   var VOLUME_ROUNDING = 8;
 
+  var f64 = new Float64Array(1);
+  var u32 = new Uint32Array(f64.buffer);
+
+  /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
+  function frexpExp(x) {
+    if (x === 0 || !Number.isFinite(x)) return 0;
+    f64[0] = x;
+    var e = (u32[1] >>> 20) & 0x7ff;
+    if (e === 0) {
+      f64[0] = x * 18446744073709551616; // 2**64: a subnormal made normal, exactly
+      e = ((u32[1] >>> 20) & 0x7ff) - 64;
+    }
+    return e - 1022;
+  }
+
+  /** 2**e for -1074 <= e <= 1023, built from its bits (exact). */
+  function pow2(e) {
+    u32[0] = 0;
+    u32[1] = 0;
+    if (e >= -1022) u32[1] = (e + 1023) << 20;
+    else if (e >= -1042) u32[1] = 1 << (e + 1074 - 32);
+    else u32[0] = 1 << (e + 1074);
+    return f64[0];
+  }
+
   /** 2 ** (frexp(x)[1] - 1) in Python: the largest power of two <= x >= 0 (0.5 for 0). */
   function powerOfTwoBelow(x) {
-    if (x === 0) return 0.5;
-    var k = Math.min(1023, Math.floor(Math.log2(x)));
-    if (Math.pow(2, k) > x) k--;
-    else if (k < 1023 && Math.pow(2, k + 1) <= x) k++;
-    return Math.pow(2, k);
+    return pow2(frexpExp(x) - 1);
   }
 
   /**
@@ -62,7 +83,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     }
     var error = new Float64Array(nComp);
     for (var i = 0; i < nComp; i++) error[i] = (VOLUME_ROUNDING + nIn[i]) * EPS * sizeSum[i];
-    return { volume: volume, fixed: fixed, error: error, scale: scale, ref: ref };
+    return { volume: volume, fixed: fixed, error: error, scale: scale, ref: ref, sizeSum: sizeSum, count: nIn };
   }
 
   // ------------------------------------------------------------------ small vector helpers
@@ -79,8 +100,8 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
   }
 
-  function crossNorm(p, q) {
-    return norm([p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]]);
+  function cross(p, q) {
+    return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
   }
 
   function dot(p, q) {
@@ -118,31 +139,25 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     var which = [];
     for (var c = 0; c < nComp; c++) if (solid[c]) which.push(c);
     if (which.length < 2) return depth;
-    var lo = [], hi = [], first = new Int32Array(nComp).fill(-1), lists = [];
+    var lists = [], corners = []; // each piece's faces, and their vertices
     for (c = 0; c < nComp; c++) {
-      lo.push([Infinity, Infinity, Infinity]);
-      hi.push([-Infinity, -Infinity, -Infinity]);
       lists.push([]);
+      corners.push([]);
     }
     for (var f = 0; f < comp.length; f++) {
       c = comp[f];
       if (c < 0) continue;
-      if (first[c] < 0) first[c] = f;
       lists[c].push(f);
-      for (var k = 0; k < 3; k++) {
-        for (var a = 0; a < 3; a++) {
-          var x = V[3 * faces[3 * f + k] + a];
-          lo[c][a] = Math.min(lo[c][a], x);
-          hi[c][a] = Math.max(hi[c][a], x);
-        }
-      }
+      corners[c].push(faces[3 * f], faces[3 * f + 1], faces[3 * f + 2]);
     }
+    var box = corners.map(function (list) { return I.bounds(V, list); });
     which.forEach(function (pa) {
       which.forEach(function (pb) {
         if (pa === pb) return;
-        for (var a = 0; a < 3; a++) if (!(lo[pb][a] <= lo[pa][a] && hi[pa][a] <= hi[pb][a])) return;
+        var lo = box[pb][0], hi = box[pb][1];
+        for (var a = 0; a < 3; a++) if (!(lo[a] <= box[pa][0][a] && box[pa][1][a] <= hi[a])) return;
         var s = Math.max(scale[pa], scale[pb]), z = [0, 0, 0];
-        var f0 = first[pa];
+        var f0 = lists[pa][0];
         var p0 = scaled(V, faces[3 * f0], s, z), p1 = scaled(V, faces[3 * f0 + 1], s, z), p2 = scaled(V, faces[3 * f0 + 2], s, z);
         var point = [(p0[0] + p1[0] + p2[0]) / 3.0, (p0[1] + p1[1] + p2[1]) / 3.0, (p0[2] + p1[2] + p2[2]) / 3.0];
         if (inside(V, faces, lists[pb], flip, s, point)) depth[pa]++;
@@ -156,9 +171,11 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
 
   /**
    * Each `candidate` piece closed over its holes: a fan from the centre of each rim (a loop of
-   * boundary edges of one piece). {encloses, volume, fixed} per piece, as shells.py's capped.
+   * boundary edges of one piece). {encloses, volume, fixed} per piece, as shells.py's capped:
+   * the faces' sums of `vol` (volumes') and the caps' sums, added.
    */
-  function capped(V, faces, comp, nComp, flip, candidate, scale, refOf, boundarySides) {
+  function capped(V, faces, comp, nComp, flip, candidate, vol, boundarySides) {
+    var scale = vol.scale, refOf = vol.ref;
     var nv = V.length / 3;
     var volume = new Float64Array(nComp), fixed = new Float64Array(nComp), encloses = new Uint8Array(nComp);
     var any = false;
@@ -166,19 +183,13 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     if (!any) return { encloses: encloses, volume: volume, fixed: fixed };
     var ref = [];
     for (c = 0; c < nComp; c++) ref.push(refOf[c] >= 0 ? [V[refOf[c]], V[refOf[c] + 1], V[refOf[c] + 2]] : [0, 0, 0]);
-    var fv = new Float64Array(nComp), ff = new Float64Array(nComp), fsize = new Float64Array(nComp);
-    var farea = new Float64Array(nComp), nTerms = new Float64Array(nComp);
+    var farea = new Float64Array(nComp);
     for (var f = 0; f < comp.length; f++) {
       c = comp[f];
       if (c < 0 || !candidate[c]) continue;
       var s = scale[c];
       var p = scaled(V, faces[3 * f], s, ref[c]), q = scaled(V, faces[3 * f + 1], s, ref[c]), t = scaled(V, faces[3 * f + 2], s, ref[c]);
-      var det = det3(p, q, t);
-      fv[c] += det;
-      ff[c] += det * (flip[f] ? -1.0 : 1.0);
-      fsize[c] += norm(p) * norm(q) * norm(t);
-      farea[c] += crossNorm(sub(q, p), sub(t, p));
-      nTerms[c] += 1;
+      farea[c] += norm(cross(sub(q, p), sub(t, p)));
     }
     // the rims, in half-edge order; their corners as (piece, vertex) nodes, sorted
     var h = Array.from(boundarySides).filter(function (x) { return candidate[comp[(x / 3) | 0]]; });
@@ -188,27 +199,20 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     var nodes = Float64Array.from(new Set(keyA.concat(keyB))).sort();
     var nodeOf = new Map();
     nodes.forEach(function (key, i) { nodeOf.set(key, i); });
-    var parent = I.weldIdentity(nodes.length);
-    var root = function (x) {
-      while (parent[x] !== x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
-    for (var e = 0; e < h.length; e++) {
-      var ra = root(nodeOf.get(keyA[e])), rb = root(nodeOf.get(keyB[e]));
-      if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
-    }
+    var parent = I.identity(nodes.length);
+    for (var e = 0; e < h.length; e++) I.union(parent, nodeOf.get(keyA[e]), nodeOf.get(keyB[e]));
     var sum = new Map();
     for (var n = 0; n < nodes.length; n++) {
       var pc = Math.floor(nodes[n] / nv), vx = nodes[n] - pc * nv;
-      var xyz = scaled(V, vx, scale[pc], ref[pc]), r = root(n);
+      var xyz = scaled(V, vx, scale[pc], ref[pc]), r = I.find(parent, n);
       var acc = sum.get(r) || [0, 0, 0, 0];
       sum.set(r, [acc[0] + xyz[0], acc[1] + xyz[1], acc[2] + xyz[2], acc[3] + 1]);
     }
     var cv = new Float64Array(nComp), cf = new Float64Array(nComp), csize = new Float64Array(nComp);
-    var carea = new Float64Array(nComp);
+    var carea = new Float64Array(nComp), caps = new Float64Array(nComp);
     for (e = 0; e < h.length; e++) {
       c = comp[(h[e] / 3) | 0];
-      var tot = sum.get(root(nodeOf.get(keyA[e])));
+      var tot = sum.get(I.find(parent, nodeOf.get(keyA[e])));
       var m = [tot[0] / tot[3], tot[1] / tot[3], tot[2] / tot[3]];
       var pa = scaled(V, faces[h[e]], scale[c], ref[c]);
       var pb = scaled(V, faces[h[e] % 3 === 2 ? h[e] - 2 : h[e] + 1], scale[c], ref[c]);
@@ -216,14 +220,15 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       cv[c] += cap;
       cf[c] += cap * (flip[(h[e] / 3) | 0] ? -1.0 : 1.0);
       csize[c] += norm(m) * norm(pb) * norm(pa);
-      carea[c] += crossNorm(sub(pb, m), sub(pa, m));
-      nTerms[c] += 1;
+      carea[c] += norm(cross(sub(pb, m), sub(pa, m)));
+      caps[c] += 1;
     }
     for (c = 0; c < nComp; c++) {
-      volume[c] = fv[c] + cv[c];
-      fixed[c] = ff[c] + cf[c];
-      var error = (VOLUME_ROUNDING + nTerms[c]) * EPS * (fsize[c] + csize[c]);
-      encloses[c] = candidate[c] && carea[c] < WELD.cap_fraction * (carea[c] + farea[c]) && Math.abs(fixed[c]) > error ? 1 : 0;
+      if (!candidate[c]) continue;
+      volume[c] = vol.volume[c] + cv[c];
+      fixed[c] = vol.fixed[c] + cf[c];
+      var error = (VOLUME_ROUNDING + vol.count[c] + caps[c]) * EPS * (vol.sizeSum[c] + csize[c]);
+      encloses[c] = carea[c] < WELD.cap_fraction * (carea[c] + farea[c]) && Math.abs(fixed[c]) > error ? 1 : 0;
     }
     return { encloses: encloses, volume: volume, fixed: fixed };
   }
@@ -251,7 +256,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       candidate[i] = !closed[i] && openCount[i] === boundaryCount[i] && w.orientable[i] ? 1 : 0;
     }
     var cavity = cavities(V, faces, comp, nComp, flip, solid, vol.scale);
-    var cap = capped(V, faces, comp, nComp, flip, candidate, vol.scale, vol.ref, e.boundarySides.array());
+    var cap = capped(V, faces, comp, nComp, flip, candidate, vol, e.boundarySides.array());
     var inward = new Uint8Array(nComp);
     for (i = 0; i < nComp; i++) {
       inward[i] = (solid[i] && (vol.fixed[i] < 0) !== !!cavity[i]) || (cap.encloses[i] && cap.fixed[i] < 0) ? 1 : 0;
@@ -289,5 +294,14 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return { components: components, faces_to_flip: toFlip };
   }
 
-  return { internal: Object.assign({}, I, { pieceReports: pieceReports, powerOfTwoBelow: powerOfTwoBelow }) };
+  return {
+    internal: Object.assign({}, I, {
+      frexpExp: frexpExp,
+      pow2: pow2,
+      powerOfTwoBelow: powerOfTwoBelow,
+      sub: sub,
+      cross: cross,
+      pieceReports: pieceReports,
+    }),
+  };
 });

@@ -11,9 +11,9 @@ self.TrinormalMesh.part("weld", "read", function (base) {
   var f64 = new Float64Array(1);
   var u32 = new Uint32Array(f64.buffer);
 
-  /** The longest side of the bounding box of the vertices the faces use (0: no faces). */
-  function modelSize(V, faces) {
-    if (!faces.length) return 0;
+  /** The bounding box of the vertices the faces use, [lo, hi] (null: no faces). */
+  function bounds(V, faces) {
+    if (!faces.length) return null;
     var lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
     for (var s = 0; s < faces.length; s++) {
       for (var k = 0; k < 3; k++) {
@@ -22,7 +22,13 @@ self.TrinormalMesh.part("weld", "read", function (base) {
         if (x > hi[k]) hi[k] = x;
       }
     }
-    return Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    return [lo, hi];
+  }
+
+  /** The longest side of the bounding box of the vertices the faces use (0: no faces). */
+  function modelSize(V, faces) {
+    var box = bounds(V, faces);
+    return box ? Math.max(box[1][0] - box[0][0], box[1][1] - box[0][1], box[1][2] - box[0][2]) : 0;
   }
 
   /** h mixed with the two 32-bit words of x's float64 bits (-0 is 0). */
@@ -46,10 +52,7 @@ self.TrinormalMesh.part("weld", "read", function (base) {
           break;
         }
         if (V[3 * at] === x && V[3 * at + 1] === y && V[3 * at + 2] === z) {
-          if (!rep) {
-            rep = new Int32Array(n);
-            for (var k = 0; k < n; k++) rep[k] = k;
-          }
+          if (!rep) rep = I.identity(n);
           rep[i] = at;
           break;
         }
@@ -114,14 +117,6 @@ self.TrinormalMesh.part("weld", "read", function (base) {
     return P;
   }
 
-  function root(parent, x) {
-    while (parent[x] !== x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  }
-
   /**
    * `rep` with the boundary corners `b` (sorted vertex indices) within `dist` of each other
    * merged, single linkage, each group into its smallest index; null when none are.
@@ -129,16 +124,10 @@ self.TrinormalMesh.part("weld", "read", function (base) {
   function mergeClose(V, rep, b, dist) {
     var pairs = closePairs(rows(V, b), dist);
     if (!pairs.i.length) return null;
-    var parent = new Int32Array(b.length);
-    for (var r = 0; r < b.length; r++) parent[r] = r;
-    for (var p = 0; p < pairs.i.length; p++) {
-      var x = root(parent, pairs.i[p]), y = root(parent, pairs.j[p]);
-      if (x < y) parent[y] = x;
-      else if (y < x) parent[x] = y;
-    }
-    var to = new Int32Array(rep.length);
-    for (r = 0; r < to.length; r++) to[r] = r;
-    for (r = 0; r < b.length; r++) to[b[r]] = b[root(parent, r)];
+    var parent = I.identity(b.length);
+    for (var p = 0; p < pairs.i.length; p++) I.union(parent, pairs.i[p], pairs.j[p]);
+    var to = I.identity(rep.length);
+    for (var r = 0; r < b.length; r++) to[b[r]] = b[I.find(parent, r)];
     var out = new Int32Array(rep.length);
     for (r = 0; r < rep.length; r++) out[r] = to[rep[r]];
     return out;
@@ -178,12 +167,6 @@ self.TrinormalMesh.part("weld", "read", function (base) {
     return out;
   }
 
-  function identity(n) {
-    var out = new Int32Array(n);
-    for (var i = 0; i < n; i++) out[i] = i;
-    return out;
-  }
-
   /** How many vertices `rep` replaces by another. */
   function replaced(rep) {
     var n = 0;
@@ -194,13 +177,13 @@ self.TrinormalMesh.part("weld", "read", function (base) {
   return {
     internal: Object.assign({}, I, {
       WELD: WELD,
+      bounds: bounds,
       modelSize: modelSize,
       exactRepresentatives: exactRepresentatives,
       mergeClose: mergeClose,
       nearestLargest: nearestLargest,
       roundDistance: roundDistance,
       weldMapped: mapped,
-      weldIdentity: identity,
       replaced: replaced,
     }),
   };

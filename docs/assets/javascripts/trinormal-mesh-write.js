@@ -211,7 +211,7 @@ self.TrinormalMesh.part("write", "check", function (base) {
 
   /** Turn over every list of a face row with a whole number of items per corner. */
   function turnLists(items, lists, want) {
-    var corners = lists.filter(function (l) { return l.name === want; })[0].n;
+    var corners = lists.find(function (l) { return l.name === want; }).n;
     lists.forEach(function (l) {
       if (l.n && corners >= 3 && l.n % corners === 0) {
         var turned = reversedCorners(items.slice(l.at, l.at + l.n), l.n / corners);
@@ -223,8 +223,8 @@ self.TrinormalMesh.part("write", "check", function (base) {
   function turnPly(mesh, flags) {
     var layout = base.plyLayout, bytes = mesh.bytes;
     var head = layout.header(bytes, mesh.name);
-    var els = head.elements, faceAt = 0;
-    while (els[faceAt].name !== "face") faceAt++;
+    var els = head.elements;
+    var faceAt = els.findIndex(function (el) { return el.name === "face"; });
     var face = els[faceAt], want = layout.faceListName(face);
     if (head.fmt === "ascii") {
       var doc = decode(bytes.subarray(head.bodyStart));
@@ -251,9 +251,7 @@ self.TrinormalMesh.part("write", "check", function (base) {
     var pos = head.bodyStart;
     function skip(el, rows) {
       if (layout.isFixed(el)) {
-        var size = 0;
-        el.props.forEach(function (p) { size += p.type[1]; });
-        pos += rows * size;
+        pos += rows * layout.rowSize(el);
         return;
       }
       for (var i = 0; i < rows; i++) {
@@ -270,21 +268,20 @@ self.TrinormalMesh.part("write", "check", function (base) {
       if (!flags[r]) continue;
       skip(face, r - row);
       row = r;
-      var at = pos, rowLists = [];
+      // the row's list items as byte strings, turned over as the text's tokens are
+      var at = pos, items = [], places = [], lists = [];
       face.props.forEach(function (p) {
         if (p.count === null) { at += p.type[1]; return; }
         var n = view["get" + p.count[0]](at, little);
         at += p.count[1];
-        rowLists.push({ name: p.name, start: at, n: n, size: p.type[1] });
-        at += n * p.type[1];
+        lists.push({ name: p.name, at: items.length, n: n });
+        for (var i = 0; i < n; i++, at += p.type[1]) {
+          places.push(at);
+          items.push(bytes.slice(at, at + p.type[1]));
+        }
       });
-      var corners = rowLists.filter(function (l) { return l.name === want; })[0].n;
-      rowLists.forEach(function (l) {
-        if (!(l.n && corners >= 3 && l.n % corners === 0)) return;
-        var items = [];
-        for (var i = 0; i < l.n; i++) items.push(bytes.slice(l.start + l.size * i, l.start + l.size * (i + 1)));
-        reversedCorners(items, l.n / corners).forEach(function (item, j) { out.set(item, l.start + l.size * j); });
-      });
+      turnLists(items, lists, want);
+      items.forEach(function (item, j) { out.set(item, places[j]); });
     }
     return out;
   }
