@@ -287,6 +287,11 @@ def _run(args_in: list[str]) -> int:
     except (_UsageError, ValueError, TypeError) as exc:
         _error(str(exc))
         return 2
+    return _print(text)
+
+
+def _print(text: str) -> int:
+    """Print ``text`` on stdout; return 1, after one error line, when it cannot be written."""
     try:
         _write(sys.stdout, text + "\n")
     except BrokenPipeError:  # the reader stopped early (``| head``): not an error
@@ -299,16 +304,21 @@ def _run(args_in: list[str]) -> int:
     return 0
 
 
+def _json_text(data: Any, indent: int | None = None) -> str:
+    """Write ``data`` as JSON, ASCII-escaped where stdout cannot show every symbol."""
+    text = json.dumps(data, indent=indent, ensure_ascii=False)
+    if _encodable(text, sys.stdout) != text:
+        text = json.dumps(data, indent=indent, ensure_ascii=True)
+    return text
+
+
 def _render(r: TriangleNormal, args: argparse.Namespace, points: list[str], precision: int) -> str:
     """Make the text to print: JSON, the worked steps or the table."""
     if args.json:
         data = r.to_dict()
         data["precision"] = precision
         data["formatted"] = r.format(precision)
-        text = json.dumps(data, indent=2, ensure_ascii=False)
-        if _encodable(text, sys.stdout) != text:  # the stream cannot show every symbol
-            text = json.dumps(data, indent=2, ensure_ascii=True)
-        return text
+        return _json_text(data, indent=2)
     if args.steps:
         lines = [points_text(working(r))]
         lines.append(f"winding {r.winding.label}")
@@ -405,9 +415,7 @@ def _run_mesh(args_in: list[str]) -> int:
             out["fixed"] = {"file": args.fix, "format": fixed[0], "flipped": fixed[1].tolist()}
             if fixed[2] is not None:  # stored normals that disagree with the fixed winding
                 out["fixed"]["normals_against"] = fixed[2].tolist()
-        text = json.dumps(out, ensure_ascii=False)
-        if _encodable(text, sys.stdout) != text:
-            text = json.dumps(out, ensure_ascii=True)
+        text = _json_text(out)
     else:
         lines = [data.describe(), report.summary()]
         if fixed is not None:
@@ -423,14 +431,7 @@ def _run_mesh(args_in: list[str]) -> int:
                     "the fixed winding; the file keeps them as they were."
                 )
         text = "\n".join(lines)
-    try:
-        _write(sys.stdout, text + "\n")
-    except BrokenPipeError:
-        _silence_stdout()
-    except (OSError, ValueError) as exc:
-        _silence_stdout()
-        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-        _error(f"cannot write the output: {reason}")
+    if _print(text):
         return 1
     return 0 if report.ok else 1  # like a linter: 1 when the report found a problem
 
