@@ -34,7 +34,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from trinormal.display import (
@@ -126,11 +125,7 @@ class Field:
         >>> FIELDS[5].text(None, 4)
         'undefined'
         """
-
-        def number(x: Surd) -> str:
-            return format_surd(x[0], x[1], x[2], precision, trim)
-
-        return self.write(value, number)
+        return self.write(value, lambda x: format_surd(*x, precision, trim))
 
     def write(self, value: Any, number: Callable[[Surd], str]) -> str:
         """Write an exact value of this field's kind, each number written by ``number``.
@@ -320,16 +315,10 @@ def result_dict(r: TriangleNormal) -> dict[str, Any]:
         out[f.key] = _json_value(f.kind, getattr(r, f.key))
     out["degenerate"] = r.degenerate
     out["reason"] = r.reason
-    out["exact"] = {
-        "a": _exact_strings(e.a),
-        "b": _exact_strings(e.b),
-        "c": _exact_strings(e.c),
-        "u": _exact_strings(e.u),
-        "v": _exact_strings(e.v),
-        "normal": _exact_strings(e.normal),
-        "magnitude_squared": str(e.magnitude_squared),
-        "area_squared": str(e.magnitude_squared / 4),
-    }
+    vectors = ("a", "b", "c", "u", "v", "normal")
+    out["exact"] = {key: [str(x) for x in getattr(e, key)] for key in vectors}
+    out["exact"]["magnitude_squared"] = str(e.magnitude_squared)
+    out["exact"]["area_squared"] = str(e.magnitude_squared / 4)
     return out
 
 
@@ -392,7 +381,3 @@ def _json_value(kind: str, value: Any) -> Any:
         return _json_vector(value)
     normal, offset = value
     return {"normal": _json_vector(normal), "offset": _json_number(offset)}
-
-
-def _exact_strings(xs: Iterable[Fraction]) -> list[str]:
-    return [str(x) for x in xs]
