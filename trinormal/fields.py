@@ -272,11 +272,10 @@ def format_fields(r: TriangleNormal, precision: int = 4, trim: bool = False) -> 
     """
     from trinormal.core import VERDICTS
 
-    spec = FIELDS
     if r.arithmetic == "exact":
         values = exact_values(r)
     else:
-        values = {f.key: _float_surds(f.kind, getattr(r, f.key)) for f in spec}
+        values = {f.key: _float_surds(f.kind, getattr(r, f.key)) for f in FIELDS}
     written: dict[Surd, str] = {}  # the unit normal's numbers recur in the plane
 
     def number(x: Surd) -> str:
@@ -285,11 +284,10 @@ def format_fields(r: TriangleNormal, precision: int = 4, trim: bool = False) -> 
             text = written[x] = format_surd(x[0], x[1], x[2], precision, trim)
         return text
 
-    out = {f.key: f.write(values[f.key], number) for f in spec}
-    if r.degenerate:
-        out["status"] = VERDICTS["degenerate"].format(reason=r.reason)
-    else:
-        out["status"] = VERDICTS["proper"]
+    out = {f.key: f.write(values[f.key], number) for f in FIELDS}
+    out["status"] = (
+        VERDICTS["degenerate"].format(reason=r.reason) if r.degenerate else VERDICTS["proper"]
+    )
     return out
 
 
