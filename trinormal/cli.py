@@ -155,12 +155,7 @@ def _parser() -> argparse.ArgumentParser:
         "To print the triangle: trinormal print-model A B C OUT [--size MM] [--braille]",
     )
     p.add_argument("points", nargs="*", metavar="POINT", help="A, B and C, each as x,y,z")
-    p.add_argument(
-        "--winding",
-        default="ABC",
-        metavar="{ABC,ACB}",
-        help="ABC: U = B − A, V = C − A (default); ACB swaps U and V and flips N",
-    )
+    _add_winding(p, "ABC: U = B − A, V = C − A (default); ACB swaps U and V and flips N")
     p.add_argument("--precision", default="4", help="decimal places, 0 to 15 (default 4)")
     p.add_argument(
         "--tol",
@@ -180,6 +175,11 @@ def _parser() -> argparse.ArgumentParser:
     )
     out.add_argument("--steps", action="store_true", help="the working, with your own numbers")
     return p
+
+
+def _add_winding(p: argparse.ArgumentParser, help_text: str) -> None:
+    """Add the option ``--winding`` (ABC or ACB) with this help text."""
+    p.add_argument("--winding", default="ABC", metavar="{ABC,ACB}", help=help_text)
 
 
 def _split_argv(
@@ -456,12 +456,7 @@ def _print_parser() -> argparse.ArgumentParser:
         help=f"the longest side in millimetres, {SIZE_RANGE[0]:g} to {SIZE_RANGE[1]:g} "
         f"(default {DEFAULT_SIZE:g})",
     )
-    p.add_argument(
-        "--winding",
-        default="ABC",
-        metavar="{ABC,ACB}",
-        help="the order whose front is the plate's top (default ABC)",
-    )
+    _add_winding(p, "the order whose front is the plate's top (default ABC)")
     p.add_argument(
         "--braille", action="store_true", help="mark A, B and C in braille, not in letters"
     )
