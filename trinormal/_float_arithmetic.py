@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import struct
+from collections.abc import Callable
 
 from trinormal.core import (
     FloatRangeError,
@@ -71,17 +72,21 @@ def floating(
     coords: list[tuple[int, int]], w: Winding, tn: int, td: int, fmt: str
 ) -> TriangleNormal:
     """Evaluate the textbook formula with every operation rounded in float64 or float32."""
+    rnd: Callable[[float], float]
     if fmt == "float32":
         rnd = _f32
         vals = [_ratio_to_f32(n, d) for n, d in coords]
         limit = "±3.4e38"
     else:
-
-        def rnd(x: float) -> float:
-            return x
-
+        rnd = float  # a float64 operation is already rounded
         vals = [_div(n, d) for n, d in coords]
         limit = "±1.8e308"
+
+    def overflow(what: str) -> FloatRangeError:
+        return FloatRangeError(
+            f"{what} overflows the {fmt} range ({limit}) for these points; use arithmetic='exact'"
+        )
+
     for x, i in zip(vals, range(9), strict=True):
         if math.isinf(x):
             raise FloatRangeError(
@@ -99,11 +104,9 @@ def floating(
     )
     for q, name in ((u, "U"), (v, "V"), (n, "N")):
         if not all(math.isfinite(x) for x in q):
-            raise FloatRangeError(
-                f"{name} overflows the {fmt} range ({limit}) for these points; "
-                "use arithmetic='exact'"
-            )
-    degenerate = _degenerate_floats(vals, n, tn, td)
+            raise overflow(name)
+    ints, D = check_common([x.as_integer_ratio() for x in vals])  # the vertices as held
+    degenerate = _degenerate_floats(ints, D, n, tn, td)
     # |N| in this format, scaled by a power of two so squares neither overflow nor underflow
     m = max(abs(x) for x in n)
     unit = plane = None
@@ -117,22 +120,15 @@ def floating(
         root = rnd(math.sqrt(ss))
         magnitude = rnd(_ldexp(root, e))
         if math.isinf(magnitude):
-            raise FloatRangeError(
-                f"|N| overflows the {fmt} range ({limit}) for these points; use arithmetic='exact'"
-            )
+            raise overflow("|N|")
     area = rnd(magnitude / 2)
     if degenerate:
-        ints = check_common([x.as_integer_ratio() for x in vals])[0]
-        nr = [x.as_integer_ratio() for x in n]
-        reason = _reason(ints, all(p == 0 for p, _ in nr), fmt)
+        reason = _reason(ints, m == 0.0, fmt)
     else:
         unit = (rnd(sx / root), rnd(sy / root), rnd(sz / root))
         d = rnd(rnd(rnd(unit[0] * A[0]) + rnd(unit[1] * A[1])) + rnd(unit[2] * A[2]))
         if math.isinf(d):
-            raise FloatRangeError(
-                f"the plane's offset n̂ · A overflows the {fmt} range ({limit}) for these "
-                "points; use arithmetic='exact'"
-            )
+            raise overflow("the plane's offset n̂ · A")
         plane = Plane(unit, d)
     exact = _exact(*check_common(coords), w, tn, td, tn / td)._integers
     a, b, c = (A[0], A[1], A[2]), (B[0], B[1], B[2]), (C[0], C[1], C[2])
@@ -147,13 +143,12 @@ def _ldexp(x: float, e: int) -> float:
         return math.copysign(math.inf, x)
 
 
-def _degenerate_floats(vertices: list[float], n: Vec3, tn: int, td: int) -> bool:
+def _degenerate_floats(ints: tuple[int, ...], D: int, n: Vec3, tn: int, td: int) -> bool:
     """Apply the rule |N| <= tol · L² to the N this format computed, evaluated exactly.
 
-    L² comes from the vertices as this format holds them (exact differences);
-    only N carries the format's rounding.
+    L² comes from the vertices as this format holds them (``ints / D``, exact
+    differences); only N carries the format's rounding.
     """
-    ints, D = check_common([x.as_integer_ratio() for x in vertices])
     a, b, c = ints[0:3], ints[3:6], ints[6:9]
     u = tuple([q - p for p, q in zip(a, b, strict=True)])
     v = tuple([q - p for p, q in zip(a, c, strict=True)])

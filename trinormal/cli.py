@@ -155,12 +155,7 @@ def _parser() -> argparse.ArgumentParser:
         "To print the triangle: trinormal print-model A B C OUT [--size MM] [--braille]",
     )
     p.add_argument("points", nargs="*", metavar="POINT", help="A, B and C, each as x,y,z")
-    p.add_argument(
-        "--winding",
-        default="ABC",
-        metavar="{ABC,ACB}",
-        help="ABC: U = B − A, V = C − A (default); ACB swaps U and V and flips N",
-    )
+    _add_winding(p, "ABC: U = B − A, V = C − A (default); ACB swaps U and V and flips N")
     p.add_argument("--precision", default="4", help="decimal places, 0 to 15 (default 4)")
     p.add_argument(
         "--tol",
@@ -180,6 +175,11 @@ def _parser() -> argparse.ArgumentParser:
     )
     out.add_argument("--steps", action="store_true", help="the working, with your own numbers")
     return p
+
+
+def _add_winding(p: argparse.ArgumentParser, help_text: str) -> None:
+    """Add the option ``--winding`` (ABC or ACB) with this help text."""
+    p.add_argument("--winding", default="ABC", metavar="{ABC,ACB}", help=help_text)
 
 
 def _split_argv(
@@ -287,6 +287,11 @@ def _run(args_in: list[str]) -> int:
     except (_UsageError, ValueError, TypeError) as exc:
         _error(str(exc))
         return 2
+    return _print(text)
+
+
+def _print(text: str) -> int:
+    """Print ``text`` on stdout; return 1, after one error line, when it cannot be written."""
     try:
         _write(sys.stdout, text + "\n")
     except BrokenPipeError:  # the reader stopped early (``| head``): not an error
@@ -299,16 +304,21 @@ def _run(args_in: list[str]) -> int:
     return 0
 
 
+def _json_text(data: Any, indent: int | None = None) -> str:
+    """Write ``data`` as JSON, ASCII-escaped where stdout cannot show every symbol."""
+    text = json.dumps(data, indent=indent, ensure_ascii=False)
+    if _encodable(text, sys.stdout) != text:
+        text = json.dumps(data, indent=indent, ensure_ascii=True)
+    return text
+
+
 def _render(r: TriangleNormal, args: argparse.Namespace, points: list[str], precision: int) -> str:
     """Make the text to print: JSON, the worked steps or the table."""
     if args.json:
         data = r.to_dict()
         data["precision"] = precision
         data["formatted"] = r.format(precision)
-        text = json.dumps(data, indent=2, ensure_ascii=False)
-        if _encodable(text, sys.stdout) != text:  # the stream cannot show every symbol
-            text = json.dumps(data, indent=2, ensure_ascii=True)
-        return text
+        return _json_text(data, indent=2)
     if args.steps:
         lines = [points_text(working(r))]
         lines.append(f"winding {r.winding.label}")
@@ -405,9 +415,7 @@ def _run_mesh(args_in: list[str]) -> int:
             out["fixed"] = {"file": args.fix, "format": fixed[0], "flipped": fixed[1].tolist()}
             if fixed[2] is not None:  # stored normals that disagree with the fixed winding
                 out["fixed"]["normals_against"] = fixed[2].tolist()
-        text = json.dumps(out, ensure_ascii=False)
-        if _encodable(text, sys.stdout) != text:
-            text = json.dumps(out, ensure_ascii=True)
+        text = _json_text(out)
     else:
         lines = [data.describe(), report.summary()]
         if fixed is not None:
@@ -423,14 +431,7 @@ def _run_mesh(args_in: list[str]) -> int:
                     "the fixed winding; the file keeps them as they were."
                 )
         text = "\n".join(lines)
-    try:
-        _write(sys.stdout, text + "\n")
-    except BrokenPipeError:
-        _silence_stdout()
-    except (OSError, ValueError) as exc:
-        _silence_stdout()
-        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-        _error(f"cannot write the output: {reason}")
+    if _print(text):
         return 1
     return 0 if report.ok else 1  # like a linter: 1 when the report found a problem
 
@@ -455,12 +456,7 @@ def _print_parser() -> argparse.ArgumentParser:
         help=f"the longest side in millimetres, {SIZE_RANGE[0]:g} to {SIZE_RANGE[1]:g} "
         f"(default {DEFAULT_SIZE:g})",
     )
-    p.add_argument(
-        "--winding",
-        default="ABC",
-        metavar="{ABC,ACB}",
-        help="the order whose front is the plate's top (default ABC)",
-    )
+    _add_winding(p, "the order whose front is the plate's top (default ABC)")
     p.add_argument(
         "--braille", action="store_true", help="mark A, B and C in braille, not in letters"
     )

@@ -98,10 +98,9 @@ def parse_coordinate(x: object, name: str = "value") -> tuple[int, int]:
     """Read one coordinate as an exact ratio ``(numerator, denominator)``, denominator > 0.
 
     This is [`trinormal.validation.check_coordinate`][trinormal.validation.check_coordinate] under
-    the name the
-    core has always used: the accepted types, the size limit, the return value
-    and the errors are described there. ``name`` says how to call the value in
-    an error message, such as ``"B.y"``.
+    the name the core has always used: the accepted types, the size limit, the return
+    value and the errors are described there. ``name`` says how to call the value in an
+    error message, such as ``"B.y"``.
 
     Examples
     --------
@@ -542,10 +541,7 @@ def triangle_normal(
     ...
     ValueError: B.y is NaN
     """
-    # The common call (plain tuples or lists of floats and ints, the default tolerance,
-    # exact arithmetic) is read by _plain_integers, without the careful checks; anything
-    # it cannot read is read by validation. Both hand the one exact path, _exact, the same
-    # integers, so the result depends only on the values.
+    # the common call is read by _plain_integers, anything else by validation (see the top)
     if (
         arithmetic == "exact"
         and type(tol) is float
@@ -592,14 +588,12 @@ _TN, _TD = DEFAULT_TOL.as_integer_ratio()
 
 
 def _plain_integers(a: Any, b: Any, c: Any) -> tuple[tuple[int, ...], int, float] | None:
-    """Read three plain vertices of floats and ints as integers over one denominator.
+    """Read three plain vertices of floats and ints as ``(ints, D, pinv)``, or None.
 
-    Returns ``(ints, D, pinv)``, the nine coordinates times ``D``; ``pinv`` is
-    ``1 / D`` when D is a power of two and every nonzero coordinate is a float in
-    [2**-400, 2**400) (then ``float(i) * pinv`` is ``i / D`` correctly rounded),
-    else ``0.0``. Returns None, and validation reads the vertices, for anything
-    else: other types, wrong lengths, NaN or infinities, ints beyond the size
-    limit.
+    ``ints`` are the nine coordinates times ``D``; ``pinv`` is ``1 / D`` when
+    ``float(i) * pinv`` is ``i / D`` correctly rounded (every nonzero coordinate a
+    float in [2**-400, 2**400)), else ``0.0``. None (validation then reads the
+    vertices) for anything else: other types or lengths, NaN, infinities, huge ints.
     """
     if len(a) != 3 or len(b) != 3 or len(c) != 3:
         return None
@@ -726,11 +720,10 @@ def _result(
     tol: float,
     integers: _Integers,
 ) -> TriangleNormal:
-    """Build a `TriangleNormal`: the one constructor every path uses.
+    """Build a `TriangleNormal` from its fields in order: the one constructor every path uses.
 
-    The arguments are the fields in order. The result is frozen: its attributes
-    are set once, here, as one dictionary (the dataclass's field-by-field
-    ``__init__`` is a large share of the time of one call, and it is refused).
+    The frozen attributes are set once, as one dictionary (the dataclass's
+    ``__init__`` refuses, and setting them field by field would be slower).
     """
     r = _new_object(TriangleNormal)
     _set(

@@ -31,7 +31,6 @@ __all__ = ["format_number", "format_vector"]
 
 #: Values of at least 10**SCI_ABOVE_LOG10 print in scientific notation.
 SCI_ABOVE_LOG10 = 15
-_check_precision = check_precision
 
 
 def _round_sqrt(num: int, den: int, k: int) -> int:
@@ -82,7 +81,7 @@ def format_surd(negative: bool, num: int, den: int, precision: int, trim: bool =
     >>> format_surd(False, 1, 64, 2)            # 0.125 rounds half away from zero
     '0.13'
     """
-    p = _check_precision(precision)
+    p = check_precision(precision)
     if num == 0:
         return "0" if (trim or p == 0) else "0." + "0" * p
     # Scientific where fixed-point would show zero, sqrt(num/den) < 10**-p / 2, that is

@@ -34,7 +34,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from trinormal.display import (
@@ -126,11 +125,7 @@ class Field:
         >>> FIELDS[5].text(None, 4)
         'undefined'
         """
-
-        def number(x: Surd) -> str:
-            return format_surd(x[0], x[1], x[2], precision, trim)
-
-        return self.write(value, number)
+        return self.write(value, lambda x: format_surd(*x, precision, trim))
 
     def write(self, value: Any, number: Callable[[Surd], str]) -> str:
         """Write an exact value of this field's kind, each number written by ``number``.
@@ -277,11 +272,10 @@ def format_fields(r: TriangleNormal, precision: int = 4, trim: bool = False) -> 
     """
     from trinormal.core import VERDICTS
 
-    spec = FIELDS
     if r.arithmetic == "exact":
         values = exact_values(r)
     else:
-        values = {f.key: _float_surds(f.kind, getattr(r, f.key)) for f in spec}
+        values = {f.key: _float_surds(f.kind, getattr(r, f.key)) for f in FIELDS}
     written: dict[Surd, str] = {}  # the unit normal's numbers recur in the plane
 
     def number(x: Surd) -> str:
@@ -290,11 +284,10 @@ def format_fields(r: TriangleNormal, precision: int = 4, trim: bool = False) -> 
             text = written[x] = format_surd(x[0], x[1], x[2], precision, trim)
         return text
 
-    out = {f.key: f.write(values[f.key], number) for f in spec}
-    if r.degenerate:
-        out["status"] = VERDICTS["degenerate"].format(reason=r.reason)
-    else:
-        out["status"] = VERDICTS["proper"]
+    out = {f.key: f.write(values[f.key], number) for f in FIELDS}
+    out["status"] = (
+        VERDICTS["degenerate"].format(reason=r.reason) if r.degenerate else VERDICTS["proper"]
+    )
     return out
 
 
@@ -320,16 +313,10 @@ def result_dict(r: TriangleNormal) -> dict[str, Any]:
         out[f.key] = _json_value(f.kind, getattr(r, f.key))
     out["degenerate"] = r.degenerate
     out["reason"] = r.reason
-    out["exact"] = {
-        "a": _exact_strings(e.a),
-        "b": _exact_strings(e.b),
-        "c": _exact_strings(e.c),
-        "u": _exact_strings(e.u),
-        "v": _exact_strings(e.v),
-        "normal": _exact_strings(e.normal),
-        "magnitude_squared": str(e.magnitude_squared),
-        "area_squared": str(e.magnitude_squared / 4),
-    }
+    vectors = ("a", "b", "c", "u", "v", "normal")
+    out["exact"] = {key: [str(x) for x in getattr(e, key)] for key in vectors}
+    out["exact"]["magnitude_squared"] = str(e.magnitude_squared)
+    out["exact"]["area_squared"] = str(e.magnitude_squared / 4)
     return out
 
 
@@ -392,7 +379,3 @@ def _json_value(kind: str, value: Any) -> Any:
         return _json_vector(value)
     normal, offset = value
     return {"normal": _json_vector(normal), "offset": _json_number(offset)}
-
-
-def _exact_strings(xs: Iterable[Fraction]) -> list[str]:
-    return [str(x) for x in xs]

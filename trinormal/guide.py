@@ -115,16 +115,12 @@ def worked_example(precision: int = 4, trim: bool = True) -> dict[str, str]:
     r = triangle_normal(ex.a, ex.b, ex.c)
     f = r.format(precision, trim=trim)
     flipped = triangle_normal(ex.a, ex.b, ex.c, winding="ACB").format(precision, trim=trim)
+    computed = ("u", "v", "normal", "magnitude", "area", "unit_normal")
     return {
         "a": format_vector(ex.a, precision, trim=True),
         "b": format_vector(ex.b, precision, trim=True),
         "c": format_vector(ex.c, precision, trim=True),
-        "u": f["u"],
-        "v": f["v"],
-        "normal": f["normal"],
-        "magnitude": f["magnitude"],
-        "area": f["area"],
-        "unit_normal": f["unit_normal"],
+        **{key: f[key] for key in computed},
         "reversed_normal": flipped["normal"],
     }
 
@@ -188,6 +184,11 @@ COMPARISON_ROWS: tuple[ComparisonRow, ...] = (
 )
 
 
+def _capital(text: str) -> str:
+    """Upper-case the first letter only (`str.capitalize` would lower the others)."""
+    return text[:1].upper() + text[1:]
+
+
 def _vertices_cell(row: ComparisonRow) -> str:
     def point(p: Sequence[int]) -> str:
         return "(" + ",".join(format_number(x, 0, trim=True) for x in p) + ")"
@@ -199,7 +200,7 @@ def _row_cells(row: ComparisonRow, r: TriangleNormal, precision: int) -> list[st
     f = r.format(precision, trim=True)
     unit = f["unit_normal"]
     if r.degenerate:  # the guide capitalises the word in its table
-        unit = unit[:1].upper() + unit[1:]
+        unit = _capital(unit)
     return [_vertices_cell(row), f["normal"], f["magnitude"], f["area"], unit]
 
 
@@ -209,9 +210,9 @@ def comparison_table_cells(
     """Recompute the guide's comparison table: a header row, then one row per triangle.
 
     Every number is computed by [`trinormal.triangle_normal`][trinormal.core.triangle_normal] from
-    the
-    row's vertices and formatted by [`TriangleNormal.format`][trinormal.core.TriangleNormal.format]
-    with trailing zeros trimmed; nothing is copied from the published cells.
+    the row's vertices and formatted by
+    [`TriangleNormal.format`][trinormal.core.TriangleNormal.format] with trailing zeros
+    trimmed; nothing is copied from the published cells.
 
     Examples
     --------
@@ -364,12 +365,10 @@ def precision_table_markdown() -> str:
     ]
     for f in PRECISION_FORMATS:
         eps = format_number(f.machine_epsilon, 4)
-        digits = f.decimal_digits_text
         lines.append(
             f"| {f.name} | {f.significand_bits} binary digits | "
-            f"{digits[:1].upper()}{digits[1:]} decimal digits | {eps} | "
-            f"{f.typical_use[:1].upper()}{f.typical_use[1:]} | "
-            f"{f.implication[:1].upper()}{f.implication[1:]} |"
+            f"{_capital(f.decimal_digits_text)} decimal digits | {eps} | "
+            f"{_capital(f.typical_use)} | {_capital(f.implication)} |"
         )
     return "\n".join(lines)
 
@@ -525,8 +524,7 @@ def normalising_table_markdown(precision: int = 4) -> str:
     ]
     for case in normalising_cases():
         lines.append(
-            f"| {case.recipe[:1].upper()}{case.recipe[1:]} | "
-            f"{case.weighting[:1].upper()}{case.weighting[1:]} | "
+            f"| {_capital(case.recipe)} | {_capital(case.weighting)} | "
             f"{format_vector(case.normal, precision, trim=True)} |"
         )
     return "\n".join(lines)

@@ -123,8 +123,7 @@ def working(result: TriangleNormal) -> Working:
     ----------
     result : TriangleNormal
         A result from [`trinormal.triangle_normal`][trinormal.core.triangle_normal] (in any
-        arithmetic:
-        the working is always exact).
+        arithmetic: the working is always exact).
 
     Returns
     -------

@@ -84,7 +84,7 @@ class NormalComponents(NamedTuple):
     z: sp.Expr
 
 
-def _vec(symbols: Sequence[Any]) -> sp.Matrix:
+def _vec(symbols: Iterable[Any]) -> sp.Matrix:
     return sp.Matrix(list(symbols))
 
 
@@ -96,12 +96,12 @@ def cross(u: Iterable[Any], v: Iterable[Any]) -> sp.Matrix:
     >>> cross((1, 0, 0), (0, 1, 0)).T
     Matrix([[0, 0, 1]])
     """
-    return sp.Matrix(list(u)).cross(sp.Matrix(list(v)))
+    return _vec(u).cross(_vec(v))
 
 
 def _normal(a: Iterable[Any], b: Iterable[Any], c: Iterable[Any]) -> sp.Matrix:
     """N(A, B, C) = (B − A) × (C − A) for sympy vectors."""
-    A, B, C = sp.Matrix(list(a)), sp.Matrix(list(b)), sp.Matrix(list(c))
+    A, B, C = (_vec(p) for p in (a, b, c))
     return (B - A).cross(C - A)
 
 
@@ -323,9 +323,8 @@ class Step(NamedTuple):
     latex: str
 
 
-def _exact_vertex(p: Iterable[Fraction]) -> tuple[sp.Rational, sp.Rational, sp.Rational]:
-    x, y, z = (_rational(f) for f in p)
-    return x, y, z
+def _exact_vertex(p: Iterable[Fraction]) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    return _three(_rational(f) for f in p)
 
 
 def _tex(x: sp.Expr) -> str:
@@ -333,7 +332,7 @@ def _tex(x: sp.Expr) -> str:
 
 
 def _factor(x: sp.Expr) -> str:
-    """LaTeX of a number used as a factor or a term: negatives and fractions in parentheses."""
+    """LaTeX of a number used as a factor or a term: negatives in parentheses."""
     t = _tex(x)
     return f"\\left({t}\\right)" if x < 0 else t
 
@@ -485,22 +484,13 @@ def steps(
     """
     s, w = _solve(triangle_normal(a, b, c, winding=winding, tol=tol))
     A, B, C, u, v, n = s.a, s.b, s.c, s.u, s.v, s.normal
-    out = [
-        Step(
-            "Points",
-            rf"A = {_tuple(A)},\quad B = {_tuple(B)},\quad C = {_tuple(C)}",
-        )
-    ]
+    out = [Step("Points", rf"A = {_tuple(A)},\quad B = {_tuple(B)},\quad C = {_tuple(C)}")]
     for edge, vec in zip(w.edges, (u, v), strict=True):
         name, end = edge.name, edge.end
         E = C if end == "C" else B
         diffs = ", ".join(f"{_tex(E[i])} - {_factor(A[i])}" for i in range(3))
-        out.append(
-            Step(
-                f"{name} = {end} − A",
-                rf"\mathbf{{{name}}} = {end} - A = \left({diffs}\right) = {_tuple(vec)}",
-            )
-        )
+        latex = rf"\mathbf{{{name}}} = {end} - A = \left({diffs}\right) = {_tuple(vec)}"
+        out.append(Step(f"{name} = {end} − A", latex))
     axes = "xyz"
     for k, (axis, i, j) in enumerate(CROSS_TERMS):
         term = (
@@ -515,19 +505,9 @@ def steps(
     if s.unit_normal is None or s.offset is None:
         out.append(Step("Degenerate", rf"\text{{No unit normal: {s.reason}}}"))
         return out
-    out.append(
-        Step(
-            "Unit normal",
-            rf"{_HAT} = \frac{{\mathbf{{N}}}}{{|\mathbf{{N}}|}} = {_tuple(s.unit_normal)}",
-        )
-    )
-    out.append(
-        Step(
-            "Plane",
-            rf"{_HAT} \cdot X = d,\quad d = {_HAT} \cdot A = {_tex(s.offset)}",
-        )
-    )
-    return out
+    unit = rf"{_HAT} = \frac{{\mathbf{{N}}}}{{|\mathbf{{N}}|}} = {_tuple(s.unit_normal)}"
+    plane = rf"{_HAT} \cdot X = d,\quad d = {_HAT} \cdot A = {_tex(s.offset)}"
+    return [*out, Step("Unit normal", unit), Step("Plane", plane)]
 
 
 def steps_latex(solution: Iterable[Step]) -> str:

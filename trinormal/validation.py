@@ -50,6 +50,7 @@ ValueError: A.y = '１' is not a number (use a decimal like 0.1 or a fraction li
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import unicodedata
@@ -91,6 +92,7 @@ MAX_TEXT_LENGTH = 1000
 MIN_PRECISION, MAX_PRECISION = 0, 15
 #: Characters of an input echoed in a message; longer inputs are cut (see `quote_input`).
 QUOTE_SHOWN = 24
+_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
 
 VERTICES = "ABC"
 AXES = "xyz"
@@ -231,12 +233,8 @@ def quote_input(text: str) -> str:
         code = ord(ch)
         if ch in ("\\", quote):
             out.append("\\" + ch)
-        elif ch == "\n":
-            out.append("\\n")
-        elif ch == "\r":
-            out.append("\\r")
-        elif ch == "\t":
-            out.append("\\t")
+        elif ch in _ESCAPES:
+            out.append(_ESCAPES[ch])
         elif (
             ch == " "
             or 0x20 < code < 0x7F
@@ -590,11 +588,7 @@ def check_vertex(p: object, vertex: str) -> list[tuple[int, int]]:
         raise not_a_sequence from None
     if size != 3:
         raise ValueError(message("vertex_size", name=vertex, count=size))
-    items = []
-    for item in p:  # type: ignore[attr-defined]
-        items.append(item)
-        if len(items) > 3:
-            break
+    items = list(itertools.islice(p, 4))  # type: ignore[call-overload]
     if len(items) != 3:
         raise ValueError(message("vertex_size", name=vertex, count=len(items)))
     return [check_coordinate(x, f"{vertex}.{axis}") for x, axis in zip(items, AXES, strict=True)]

@@ -69,6 +69,8 @@ COORDINATES: list[str] = [
     "1e1000000000",
     "0e1000000000",
     "1e-1000000000",
+    "1e0000001",  # leading zeros in an exponent, without and with a sign
+    "1e+00000000000001",
     "0." + "0" * 398 + "1",
     "0." + "0" * 399 + "1",
     # the text length limit: 1000 characters, never echoed in the message

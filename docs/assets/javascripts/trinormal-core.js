@@ -220,12 +220,6 @@
     throw tooLarge(name, shown);
   }
 
-  function stripLeft(text, chars) {
-    var i = 0;
-    while (i < text.length && chars.indexOf(text[i]) >= 0) i++;
-    return text.slice(i);
-  }
-
   /* sign digits e exp, exactly, its size checked before converting: validation._decimal. */
   function readDecimal(sign, digits, exp, name, shown) {
     var shift = 0;
@@ -234,11 +228,11 @@
       shift = -parts[1].length;
       digits = parts[0] + parts[1];
     }
-    var sig = stripLeft(digits, "0");
+    var sig = digits.replace(/^0+/, "");
     if (!sig) return [0n, 1n];
     if (exp) {
       exp = exp.replace(/\u2212/g, "-");
-      if (stripLeft(stripLeft(exp, "+-"), "0").length > 6) throw tooLarge(name, shown);
+      if (exp.replace(/^[+-]*0*/, "").length > 6) throw tooLarge(name, shown);
       shift += parseInt(exp, 10);
     }
     var stripped = sig.replace(/0+$/, "");
