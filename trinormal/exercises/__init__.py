@@ -310,16 +310,14 @@ class Exercise:
         """Judge one answer by the shared rules (or the exercise's checker)."""
         if self.checker is not None:
             result = self.checker(answer)
-            if isinstance(result, Verdict):
-                return (
-                    result
-                    if result.ok or result.hint
-                    else Verdict(False, self.hint, slip=result.slip)
-                )
             if isinstance(result, tuple):
                 ok, hint = bool(result[0]), str(result[1])
-                return Verdict(True) if ok else Verdict(False, hint or self.hint)
-            return Verdict(True) if result else Verdict(False, self.hint)
+                result = Verdict(ok, "" if ok else hint)
+            elif not isinstance(result, Verdict):
+                result = Verdict(bool(result))
+            return (
+                result if result.ok or result.hint else Verdict(False, self.hint, slip=result.slip)
+            )
         solution = self.solution()
         kind = _kind(solution)
         if kind == "bool":

@@ -333,15 +333,7 @@ def _dot(p: Sequence[Fraction], q: Sequence[Fraction]) -> Fraction:
 
 def _cross_zero(p: Sequence[Fraction], q: Sequence[Fraction], sine: Fraction | None) -> bool:
     """P ∥ q: exactly (sine None) or with |p × q| ≤ sine · |p| |q|."""
-    if len(p) == 3:
-        c = (
-            p[1] * q[2] - p[2] * q[1],
-            p[2] * q[0] - p[0] * q[2],
-            p[0] * q[1] - p[1] * q[0],
-        )
-        c2 = _dot(c, c)
-    else:  # any size: |p|²|q|² − (p·q)²
-        c2 = _dot(p, p) * _dot(q, q) - _dot(p, q) ** 2
+    c2 = _dot(p, p) * _dot(q, q) - _dot(p, q) ** 2  # |p × q|², by Lagrange's identity (exact)
     if sine is None:
         return c2 == 0
     return c2 <= sine * sine * _dot(p, p) * _dot(q, q)

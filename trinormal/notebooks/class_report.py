@@ -124,10 +124,6 @@ def _e(text: object) -> str:
     return html.escape(str(text), quote=True)
 
 
-def _hint(message: str) -> str:
-    return message.removeprefix("not yet.").strip()
-
-
 def _bars(title: str, bars: Sequence[tuple[str, int, str]], total: int) -> str:
     """Draw a horizontal bar chart in inline SVG, each bar's number written beside it."""
     row, label_w, bar_w = 22, 190, 260
@@ -155,7 +151,7 @@ def _exercise_section(name: str, checks: Sequence[Check]) -> str:
     slips = Counter(c.slip or "other" for c in wrong)
     hints: dict[str, str] = {}
     for c in wrong:
-        hints.setdefault(c.slip or "other", _hint(c.message))
+        hints.setdefault(c.slip or "other", c.message.removeprefix("not yet.").strip())
     common = slips.most_common(TOP_SLIPS)
     rest = sum(slips.values()) - sum(n for _, n in common)
     bars = [("right", right, STATUS_COLORS["correct"])]
