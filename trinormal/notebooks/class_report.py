@@ -245,9 +245,14 @@ def render_html(outcomes: Sequence[Outcome], title: str = "Class report") -> str
     body += [_exercise_section(n, by_exercise[n]) for n in sorted(by_exercise)]
     body.append('<h2 id="students">Students</h2>')
     body.append(_students_table(reported))
+    return _page(title, _COLOURS + _CSS, "".join(body))
+
+
+def _page(title: str, css: str, body: str) -> str:
+    """Wrap ``body`` in a self-contained HTML page, its style inline (a worksheet's too)."""
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f"<title>{_e(title)}</title><style>{_COLOURS}{_CSS}</style></head>"
-        f"<body><main>{''.join(body)}</main></body></html>\n"
+        f"<title>{_e(title)}</title><style>{css}</style></head>"
+        f"<body><main>{body}</main></body></html>\n"
     )
