@@ -213,13 +213,9 @@ def decimals(x: Number) -> int | None:
     if isinstance(x, float):
         if not math.isfinite(x):
             return None
-        text = repr(x)
-        if "e" in text or "E" in text:
-            mantissa, _, exp = text.lower().partition("e")
-            frac = mantissa.partition(".")[2].rstrip("0")
-            return max(0, len(frac) - int(exp))
-        frac = text.partition(".")[2].rstrip("0")
-        return len(frac)
+        mantissa, _, exp = repr(x).partition("e")  # a float's repr writes "1.5e-07"
+        frac = mantissa.partition(".")[2].rstrip("0")
+        return max(0, len(frac) - int(exp or 0))
     d = x.denominator
     twos = fives = 0
     while d % 2 == 0:
