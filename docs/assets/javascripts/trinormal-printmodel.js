@@ -115,9 +115,7 @@
     var pts = outer.slice();
     var rings = [];
     holes.forEach(function (hole) {
-      var ring = [];
-      for (var i = 0; i < hole.length; i++) ring.push(pts.length + i);
-      rings.push(ring);
+      rings.push(hole.map(function (_, i) { return pts.length + i; }));
       pts = pts.concat(hole);
     });
     var poly = outer.map(function (_, i) { return i; });
@@ -564,12 +562,11 @@
       }
       throw new PrintModelError(fill(K.messages.too_thin, { size: num(size), reason: err.reason, fits: num(least) }));
     }
-    var corners = lay.corners;
     var s = solid(lay, size, marks, names);
     return {
       vertices: s.vertices,
       faces: s.faces,
-      corners: corners.map(function (p) { return [p[0], p[1], K.thickness]; }),
+      corners: lay.corners.map(function (p) { return [p[0], p[1], K.thickness]; }),
       names: names,
       tip: [snap(lay.centroid[0]), snap(lay.centroid[1]), snap(K.thickness + K.arrow_length * size)],
       size: size,
