@@ -78,6 +78,7 @@ import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import partial
 from typing import Any, Literal, overload
 
 from trinormal.core import triangle_normal
@@ -309,16 +310,14 @@ class Exercise:
         """Judge one answer by the shared rules (or the exercise's checker)."""
         if self.checker is not None:
             result = self.checker(answer)
-            if isinstance(result, Verdict):
-                return (
-                    result
-                    if result.ok or result.hint
-                    else Verdict(False, self.hint, slip=result.slip)
-                )
             if isinstance(result, tuple):
                 ok, hint = bool(result[0]), str(result[1])
-                return Verdict(True) if ok else Verdict(False, hint or self.hint)
-            return Verdict(True) if result else Verdict(False, self.hint)
+                result = Verdict(ok, "" if ok else hint)
+            elif not isinstance(result, Verdict):
+                result = Verdict(bool(result))
+            return (
+                result if result.ok or result.hint else Verdict(False, self.hint, slip=result.slip)
+            )
         solution = self.solution()
         kind = _kind(solution)
         if kind == "bool":
@@ -333,32 +332,20 @@ class Exercise:
             except AnswerError as exc:
                 return Verdict(False, _sentence(exc), slip="unreadable")
             return Verdict(word == read_word(solution), self.hint)
+        read: Callable[..., Any] = read_number
+        judge: Callable[..., Verdict] = judge_number
         if kind == "vector":
-            want = read_vector(solution, len(solution))
-            try:
-                got = read_vector(answer, len(solution), degrees=self.degrees)
-            except AnswerError as exc:
-                return Verdict(False, f"Your answer could not be read: {exc}.", slip="unreadable")
-            vector_mistakes = [
-                (read_vector(value, len(solution)), text, slip)
-                for value, text, slip in self._mistakes()
-            ]
-            return judge_vector(got, want, self.tol, vector_mistakes, self.hint)
-        want_number = read_number(solution)
+            read, judge = partial(read_vector, size=len(solution)), judge_vector
+        want = read(solution)
         try:
-            got_number = read_number(answer, degrees=self.degrees)
+            got = read(answer, degrees=self.degrees)
         except AnswerError as exc:
             return Verdict(False, f"Your answer could not be read: {exc}.", slip="unreadable")
-        number_mistakes = [
-            (read_number(value), text, slip) for value, text, slip in self._mistakes()
-        ]
-        return judge_number(got_number, want_number, self.tol, number_mistakes, self.hint)
-
-    def _mistakes(self) -> list[tuple[Any, str, str]]:
-        return [
-            (wrong() if callable(wrong) else wrong, hint, slip)
+        mistakes = [
+            (read(wrong() if callable(wrong) else wrong), hint, slip)
             for wrong, hint, slip in self.mistakes
         ]
+        return judge(got, want, self.tol, mistakes, self.hint)
 
 
 # The exercises of the notebook modules, loaded on first use, and the ones added by hand.

@@ -213,13 +213,9 @@ def decimals(x: Number) -> int | None:
     if isinstance(x, float):
         if not math.isfinite(x):
             return None
-        text = repr(x)
-        if "e" in text or "E" in text:
-            mantissa, _, exp = text.lower().partition("e")
-            frac = mantissa.partition(".")[2].rstrip("0")
-            return max(0, len(frac) - int(exp))
-        frac = text.partition(".")[2].rstrip("0")
-        return len(frac)
+        mantissa, _, exp = repr(x).partition("e")  # a float's repr writes "1.5e-07"
+        frac = mantissa.partition(".")[2].rstrip("0")
+        return max(0, len(frac) - int(exp or 0))
     d = x.denominator
     twos = fives = 0
     while d % 2 == 0:
@@ -333,15 +329,7 @@ def _dot(p: Sequence[Fraction], q: Sequence[Fraction]) -> Fraction:
 
 def _cross_zero(p: Sequence[Fraction], q: Sequence[Fraction], sine: Fraction | None) -> bool:
     """P ∥ q: exactly (sine None) or with |p × q| ≤ sine · |p| |q|."""
-    if len(p) == 3:
-        c = (
-            p[1] * q[2] - p[2] * q[1],
-            p[2] * q[0] - p[0] * q[2],
-            p[0] * q[1] - p[1] * q[0],
-        )
-        c2 = _dot(c, c)
-    else:  # any size: |p|²|q|² − (p·q)²
-        c2 = _dot(p, p) * _dot(q, q) - _dot(p, q) ** 2
+    c2 = _dot(p, p) * _dot(q, q) - _dot(p, q) ** 2  # |p × q|², by Lagrange's identity (exact)
     if sine is None:
         return c2 == 0
     return c2 <= sine * sine * _dot(p, p) * _dot(q, q)

@@ -12,31 +12,26 @@ from trinormal.exercises.judging import tolerance_text
 DIGITS_TOL = 1e-3
 
 
-def _float64_bits() -> int:
+def _bits(dtype: str = "float64") -> int:
+    """Count the significand bits of a float type, the implicit leading bit included."""
     import numpy as np
 
-    return int(np.finfo(np.float64).nmant) + 1
+    return int(np.finfo(dtype).nmant) + 1
 
 
-def _float64_digits() -> float:
-    return _float64_bits() * math.log10(2)
-
-
-def _float32_digits() -> float:
-    import numpy as np
-
-    return (int(np.finfo(np.float32).nmant) + 1) * math.log10(2)
+def _digits(dtype: str = "float64") -> float:
+    return _bits(dtype) * math.log10(2)
 
 
 EXERCISES = (
     Exercise(
         "06-float64-bits",
         "How many significand bits does a float64 carry (numpy.finfo helps)?",
-        expected=_float64_bits,
+        expected=_bits,
         hint="np.finfo(np.float64).nmant counts the stored bits; add the implicit leading bit.",
         mistakes=(
             (
-                lambda: _float64_bits() - 1,
+                lambda: _bits() - 1,
                 "That is nmant, the stored bits: one more leading bit is implicit.",
                 "implicit-bit-missed",
             ),
@@ -51,38 +46,38 @@ EXERCISES = (
         "06-float64-digits",
         "How many decimal digits does a float64 carry: p · log10(2), p being its number of "
         f"significand bits? (Answers {tolerance_text(DIGITS_TOL)} count.)",
-        expected=_float64_digits,
+        expected=_digits,
         tol=DIGITS_TOL,
         hint="Each significand bit is worth log10(2) decimal digits: count the bits, then "
         "multiply.",
         mistakes=(
             (
-                _float64_bits,
+                _bits,
                 "That is the number of bits: multiply it by log10(2).",
                 "bits-for-digits",
             ),
             (
-                lambda: (_float64_bits() - 1) * math.log10(2),
+                lambda: (_bits() - 1) * math.log10(2),
                 "That counts the stored bits (nmant) only: p includes the implicit leading bit.",
                 "implicit-bit-missed",
             ),
             (
-                lambda: math.ceil(_float64_digits()),
+                lambda: math.ceil(_digits()),
                 "That is p · log10(2) rounded up to a whole number: give the value itself.",
                 "rounded-up",
             ),
             (
-                lambda: math.floor(_float64_digits()),
+                lambda: math.floor(_digits()),
                 "That is p · log10(2) rounded down to a whole number: give the value itself.",
                 "rounded-down",
             ),
             (
-                _float32_digits,
+                lambda: _digits("float32"),
                 "That is float32's count, from its 24 significand bits: a float64 has more.",
                 "float32",
             ),
             (
-                lambda: round(_float32_digits()),
+                lambda: round(_digits("float32")),
                 "That is about float32's count, from its 24 significand bits: a float64 has more.",
                 "float32",
             ),

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
-from trinormal.exercises import Exercise
+from trinormal.exercises import Exercise, nb01, nb02, nb04, nb05
 
 __all__ = [
     "BANK_SIZE",
@@ -89,16 +89,10 @@ def _triangle(rng: random.Random, pool: Sequence[Fraction] = COORDINATES) -> tup
 
 
 def _clean_01(abc: Any) -> bool:
-    """Keep a triangle with a rational area and |N| at least 2 (no listed mistake is right).
-
-    Computed on the doubled coordinates, whole numbers (the halves become odd): their
-    normal is 4 N, so |N| is rational exactly when |4 N|² is a perfect square.
-    """
-    a, b, c = ([int(2 * x) for x in p] for p in abc)
-    u, v = [q - p for p, q in zip(a, b, strict=True)], [q - p for p, q in zip(a, c, strict=True)]
-    n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-    n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2]
-    return n2 >= 4 * 16 and math.isqrt(n2) ** 2 == n2
+    """Keep a triangle with a rational area and |N| at least 2 (no listed mistake is right)."""
+    n = _normal(abc)
+    n2 = 16 * _dot(n, n)  # |4 N|², a whole number: the coordinates are halves
+    return n2 >= 4 * 16 and math.isqrt(int(n2)) ** 2 == n2
 
 
 def _clean_lagrange(uv: Any) -> bool:
@@ -117,51 +111,13 @@ def _clean_flat(pqr: Any) -> bool:
 
 
 def _clean_scale(abk: Any) -> bool:
-    from trinormal.exercises.nb05 import EXPLORER_RANGE
-
     triangle: tuple[Point, ...] = abk[0]
-    fits = all(abs(abk[1] * x) <= EXPLORER_RANGE for p in triangle for x in p)
+    fits = all(abs(abk[1] * x) <= nb05.EXPLORER_RANGE for p in triangle for x in p)
     return fits and any(_normal(triangle))
 
 
 def _clean_line(ab: Any) -> bool:
     return bool(ab[0] != ab[1])
-
-
-def _build_01(abc: Any) -> tuple[Exercise, ...]:
-    from trinormal.exercises import nb01
-
-    return nb01.exercises_for(abc)
-
-
-def _build_lagrange(uv: Any) -> tuple[Exercise, ...]:
-    from trinormal.exercises import nb02
-
-    return (nb02.lagrange_exercise(*uv),)
-
-
-def _build_dot(abc: Any) -> tuple[Exercise, ...]:
-    from trinormal.exercises import nb04
-
-    return (nb04.dot_value_exercise(abc),)
-
-
-def _build_flat(pqr: Any) -> tuple[Exercise, ...]:
-    from trinormal.exercises import nb04
-
-    return (nb04.flat_nz_exercise(pqr),)
-
-
-def _build_scale(abk: Any) -> tuple[Exercise, ...]:
-    from trinormal.exercises import nb05
-
-    return (nb05.scale_area_exercise(*abk),)
-
-
-def _build_line(ab: Any) -> tuple[Exercise, ...]:
-    from trinormal.exercises import nb05
-
-    return (nb05.collinear_exercise(ab),)
 
 
 @dataclass(frozen=True)
@@ -204,31 +160,36 @@ class Template:
 
 
 TEMPLATES: tuple[Template, ...] = (
-    Template(("01-normal", "01-area", "01-reversed"), _triangle, _clean_01, _build_01),
+    Template(("01-normal", "01-area", "01-reversed"), _triangle, _clean_01, nb01.exercises_for),
     Template(
         ("02-lagrange",),
         lambda rng: (_point(rng, WHOLE), _point(rng, WHOLE)),
         _clean_lagrange,
-        _build_lagrange,
+        lambda uv: (nb02.lagrange_exercise(*uv),),
     ),
-    Template(("04-dot-value",), lambda rng: _triangle(rng, WHOLE), _clean_dot, _build_dot),
+    Template(
+        ("04-dot-value",),
+        lambda rng: _triangle(rng, WHOLE),
+        _clean_dot,
+        lambda abc: (nb04.dot_value_exercise(abc),),
+    ),
     Template(
         ("04-2d-nz",),
         lambda rng: tuple(_point(rng, WHOLE, 2) for _ in range(3)),
         _clean_flat,
-        _build_flat,
+        lambda pqr: (nb04.flat_nz_exercise(pqr),),
     ),
     Template(
         ("05-collinear",),
         lambda rng: (_point(rng, WHOLE), _point(rng, WHOLE)),
         _clean_line,
-        _build_line,
+        lambda ab: (nb05.collinear_exercise(ab),),
     ),
     Template(
         ("05-scale-area",),
         lambda rng: (_triangle(rng, WHOLE), rng.randint(2, 5)),
         _clean_scale,
-        _build_scale,
+        lambda abk: (nb05.scale_area_exercise(*abk),),
     ),
 )
 

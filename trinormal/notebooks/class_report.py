@@ -124,10 +124,6 @@ def _e(text: object) -> str:
     return html.escape(str(text), quote=True)
 
 
-def _hint(message: str) -> str:
-    return message.removeprefix("not yet.").strip()
-
-
 def _bars(title: str, bars: Sequence[tuple[str, int, str]], total: int) -> str:
     """Draw a horizontal bar chart in inline SVG, each bar's number written beside it."""
     row, label_w, bar_w = 22, 190, 260
@@ -155,7 +151,7 @@ def _exercise_section(name: str, checks: Sequence[Check]) -> str:
     slips = Counter(c.slip or "other" for c in wrong)
     hints: dict[str, str] = {}
     for c in wrong:
-        hints.setdefault(c.slip or "other", _hint(c.message))
+        hints.setdefault(c.slip or "other", c.message.removeprefix("not yet.").strip())
     common = slips.most_common(TOP_SLIPS)
     rest = sum(slips.values()) - sum(n for _, n in common)
     bars = [("right", right, STATUS_COLORS["correct"])]
@@ -249,9 +245,14 @@ def render_html(outcomes: Sequence[Outcome], title: str = "Class report") -> str
     body += [_exercise_section(n, by_exercise[n]) for n in sorted(by_exercise)]
     body.append('<h2 id="students">Students</h2>')
     body.append(_students_table(reported))
+    return _page(title, _COLOURS + _CSS, "".join(body))
+
+
+def _page(title: str, css: str, body: str) -> str:
+    """Wrap ``body`` in a self-contained HTML page, its style inline (a worksheet's too)."""
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f"<title>{_e(title)}</title><style>{_COLOURS}{_CSS}</style></head>"
-        f"<body><main>{''.join(body)}</main></body></html>\n"
+        f"<title>{_e(title)}</title><style>{css}</style></head>"
+        f"<body><main>{body}</main></body></html>\n"
     )

@@ -130,9 +130,7 @@ def student_name(path: Path, cells: Sequence[dict[str, Any]] = ()) -> str:
     """
     for cell in cells:
         if cell.get("cell_type") in ("markdown", "raw"):
-            text = "".join(cell.get("source", ""))
-            first = text.strip().splitlines()[0] if text.strip() else ""
-            found = NAME_CELL.match(first)
+            found = NAME_CELL.match(_first_line("".join(cell.get("source", ""))))
             if found:
                 return found["name"].strip()
     stem = path.stem
@@ -298,9 +296,9 @@ def _execute(nb: dict[str, Any], folder: Path, log: Path, timeout: float) -> tup
         return "timeout", f"still running after {timeout:g} s: stopped (an endless loop?)"
     except CellExecutionError as exc:
         where = _failed_cell(node)
-        return "failed", f"stopped at cell {where}: {exc.ename}: {_first_line(exc.evalue)}"
+        return "failed", f"stopped at cell {where}: {exc.ename}: {_first_line(exc.evalue)[:160]}"
     except DeadKernelError as exc:
-        return "failed", f"the kernel died ({_first_line(str(exc))})"
+        return "failed", f"the kernel died ({_first_line(str(exc))[:160]})"
     return "ok", ""
 
 
@@ -313,8 +311,8 @@ def _failed_cell(node: Any) -> int:
 
 
 def _first_line(text: str) -> str:
-    line = (text or "").strip().splitlines()[0] if (text or "").strip() else ""
-    return line[:160]
+    lines = (text or "").strip().splitlines()
+    return lines[0] if lines else ""
 
 
 def run_class(

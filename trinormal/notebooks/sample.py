@@ -36,13 +36,7 @@ SAMPLE_TIMEOUT = 6
 SAMPLE_ROSTER = ("Ana Lima", "Ben Okafor", "Cleo Diaz")
 
 #: The exercises whose every listed slip a student of the sample class makes.
-SLIP_EXERCISES = (
-    "01-normal",
-    "01-area",
-    "01-reversed",
-    "04-dot-value",
-    "05-scale-area",
-)
+SLIP_EXERCISES = ("01-normal", "01-area", "01-reversed", "04-dot-value", "05-scale-area")
 #: The students who make them: the k-th makes each exercise's k-th listed slip.
 SLIP_STUDENTS = ("Ben Okafor", "Cleo Diaz", "Dara Novak")
 #: 05-down-acb's answers: right, and the three slips its checker knows (one per slip student).

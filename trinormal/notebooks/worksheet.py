@@ -29,6 +29,7 @@ from trinormal.core import triangle_normal
 from trinormal.display import exact_text, format_number, radical_text
 from trinormal.exercises import Exercise, point_text
 from trinormal.exercises.variants import TEMPLATES, assign, group_of, student_code
+from trinormal.notebooks.class_report import _page
 from trinormal.steps import steps, working
 
 __all__ = ["answer_text", "notebook_line", "read_roster", "worked_steps", "worksheets"]
@@ -165,15 +166,6 @@ def _task_html(ex: Exercise) -> str:
     )
 
 
-def _page(title: str, body: str) -> str:
-    return (
-        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
-        '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f"<title>{html.escape(title)}</title><style>{_CSS}</style></head>"
-        f"<body><main>{body}</main></body></html>\n"
-    )
-
-
 def worksheets(
     roster: Sequence[str], names: Sequence[str], seed: int = 0
 ) -> tuple[dict[str, str], str]:
@@ -219,7 +211,7 @@ def worksheets(
         file = f"{_slug(student)}.html"
         while file in pages:
             file = file.removesuffix(".html") + "-2.html"
-        pages[file] = _page(f"Worksheet: {student}", body)
+        pages[file] = _page(f"Worksheet: {student}", _CSS, body)
         key.append(f'<section class="student"><h2>{html.escape(student)}</h2>')
         key.append(f"<p>Code <code>{html.escape(code)}</code></p>")
         for ex, numbers in items:
@@ -233,4 +225,4 @@ def worksheets(
                 f"<p>{html.escape(ex.prompt)}</p><table>{rows}</table></section>"
             )
         key.append("</section>")
-    return pages, _page("Answer key", "".join(key))
+    return pages, _page("Answer key", _CSS, "".join(key))

@@ -284,15 +284,14 @@ def build(u: Any, v: Any, names: str, size: float, marks: str) -> PrintModel:
         else:
             words = PRINT_MESSAGES["too_thin"].format(size=_num(size), reason=exc, fits=_num(fits))
         raise PrintModelError(words) from None
-    corners = layout.corners
     solid = F.solid(layout, size, marks, names)
-    length = F.ARROW_LENGTH * size
+    top = _snap(THICKNESS + F.ARROW_LENGTH * size)
     return PrintModel(
         vertices=tuple(solid.vertices),
         faces=tuple(solid.faces),
-        corners=tuple((p[0], p[1], THICKNESS) for p in corners),
+        corners=tuple((p[0], p[1], THICKNESS) for p in layout.corners),
         names=names,
-        tip=(_snap(layout.centroid[0]), _snap(layout.centroid[1]), _snap(THICKNESS + length)),
+        tip=(_snap(layout.centroid[0]), _snap(layout.centroid[1]), top),
         size=size,
         marks=marks,
     )

@@ -7,6 +7,7 @@ when even the smallest do not fit; `solid` builds the one closed surface.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -193,8 +194,8 @@ class Builder:
         self.flat(outer, holes, z1)
 
 
-def _ring(center: Point, radius: float, shape: tuple[Point, ...] = OCTAGON) -> Ring:
-    return [(_snap(center[0] + radius * x), _snap(center[1] + radius * y)) for x, y in shape]
+def _ring(center: Point, radius: float) -> Ring:
+    return [(_snap(center[0] + radius * x), _snap(center[1] + radius * y)) for x, y in OCTAGON]
 
 
 def _shifted(points: tuple[tuple[float, float], ...], center: Point, scale: float) -> Ring:
@@ -348,11 +349,9 @@ def _check_clearance(plan: Layout, radius: float, min_gap: float, names: str) ->
     for name, (s, base, tip) in zip("UV", plan.ridges, strict=True):
         parts.append((words["ridge_name"].format(name=name), s, base, width / 2))
         parts.append((words["ridge_name"].format(name=name), base, tip, width))
-    for i in range(len(parts)):
-        for j in range(i + 1, len(parts)):
-            a, b = parts[i], parts[j]
-            if a[0] != b[0] and segment_segment(a[1], a[2], b[1], b[2]) < a[3] + b[3] + min_gap:
-                raise Unfit(words["touch"].format(first=a[0], second=b[0]))
+    for a, b in itertools.combinations(parts, 2):
+        if a[0] != b[0] and segment_segment(a[1], a[2], b[1], b[2]) < a[3] + b[3] + min_gap:
+            raise Unfit(words["touch"].format(first=a[0], second=b[0]))
     c = plan.corners
     for name, s, e, reach in parts:
         for k in range(3):
@@ -413,13 +412,10 @@ def on_tabs(corners: tuple[Point, Point, Point], marks: str, names: str) -> Layo
 
 def _check_tabs(tabs: list[Ring], min_gap: float) -> None:
     """Raise `Unfit` when a tab comes nearer another than ``min_gap``."""
-    for i in range(len(tabs)):
-        for j in range(i + 1, len(tabs)):
-            for m in range(4):
-                for n in range(4):
-                    a, b = tabs[i], tabs[j]
-                    if segment_segment(a[m], a[(m + 1) % 4], b[n], b[(n + 1) % 4]) < min_gap:
-                        raise Unfit(PRINT_MESSAGES["marks"])
+    for a, b in itertools.combinations(tabs, 2):
+        for m, n in itertools.product(range(4), repeat=2):
+            if segment_segment(a[m], a[(m + 1) % 4], b[n], b[(n + 1) % 4]) < min_gap:
+                raise Unfit(PRINT_MESSAGES["marks"])
 
 
 def fitted(u: Any, v: Any, size: float, marks: str, names: str) -> Layout:
@@ -437,6 +433,14 @@ def fitted(u: Any, v: Any, size: float, marks: str, names: str) -> Layout:
     return on_tabs(corners, marks, names)
 
 
+def _fits(u: Any, v: Any, size: float, marks: str, names: str) -> bool:
+    try:
+        fitted(u, v, size, marks, names)
+    except Unfit:
+        return False
+    return True
+
+
 def smallest_size(u: Any, v: Any, size: float, marks: str, names: str) -> float | None:
     """Find the smallest whole size in mm above ``size`` at which the features fit, or None.
 
@@ -448,21 +452,16 @@ def smallest_size(u: Any, v: Any, size: float, marks: str, names: str) -> float 
         if low >= high:
             return None
         above = min(high, float(math.floor(low * 1.25) + 1))
-        try:
-            fitted(u, v, above, marks, names)
-        except Unfit:
-            low = above
-            continue
-        break
+        if _fits(u, v, above, marks, names):
+            break
+        low = above
     low = float(math.floor(low))
     while above - low > 1:  # above fits; low does not (or is the size asked for)
         mid = float(math.floor((low + above) / 2))
-        try:
-            fitted(u, v, mid, marks, names)
-        except Unfit:
+        if _fits(u, v, mid, marks, names):
+            above = mid
+        else:
             low = mid
-            continue
-        above = mid
     return above
 
 
@@ -474,13 +473,12 @@ def _ridge_outline(start: Point, base: Point, tip: Point, width: float) -> Ring:
     e = _unit(start, tip)
     n = (-e[1], e[0])
     half = width / 2
-    wide = width
     ring = [
         (start[0] - n[0] * half, start[1] - n[1] * half),
         (base[0] - n[0] * half, base[1] - n[1] * half),
-        (base[0] - n[0] * wide, base[1] - n[1] * wide),
+        (base[0] - n[0] * width, base[1] - n[1] * width),
         tip,
-        (base[0] + n[0] * wide, base[1] + n[1] * wide),
+        (base[0] + n[0] * width, base[1] + n[1] * width),
         (base[0] + n[0] * half, base[1] + n[1] * half),
         (start[0] + n[0] * half, start[1] + n[1] * half),
     ]

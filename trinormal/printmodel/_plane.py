@@ -74,10 +74,7 @@ def bridge(
     (``others``); vertices already at the end of a cut are passed over, so each
     vertex of ``poly`` sits in one corner of the polygon.
     """
-    m_at = 0
-    for i in range(1, len(hole)):
-        if pts[hole[i]][0] > pts[hole[m_at]][0]:
-            m_at = i
+    m_at = max(range(len(hole)), key=lambda i: pts[hole[i]][0])  # the first of the rightmost
     m = hole[m_at]
     rings = [poly, hole, *others]
     edges = [(r[i], r[(i + 1) % len(r)]) for r in rings for i in range(len(r))]

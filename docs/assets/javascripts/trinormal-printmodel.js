@@ -84,12 +84,6 @@
 
   // ------------------------------------------------------------------------- triangulation
 
-  function count(list, x) {
-    var n = 0;
-    for (var i = 0; i < list.length; i++) if (list[i] === x) n++;
-    return n;
-  }
-
   function bridge(pts, poly, hole, others) {
     var mAt = 0;
     for (var i = 1; i < hole.length; i++) if (pts[hole[i]][0] > pts[hole[mAt]][0]) mAt = i;
@@ -105,7 +99,7 @@
     for (var n = 0; n < order.length; n++) {
       var k = order[n];
       var p = poly[k];
-      if (count(poly, p) > 1) continue;
+      if (poly.indexOf(p) !== poly.lastIndexOf(p)) continue;
       var clear = edges.every(function (e) {
         return e[0] === p || e[1] === p || e[0] === m || e[1] === m || !segmentsMeet(pts[m], pts[p], pts[e[0]], pts[e[1]]);
       });
@@ -121,9 +115,7 @@
     var pts = outer.slice();
     var rings = [];
     holes.forEach(function (hole) {
-      var ring = [];
-      for (var i = 0; i < hole.length; i++) ring.push(pts.length + i);
-      rings.push(ring);
+      rings.push(hole.map(function (_, i) { return pts.length + i; }));
       pts = pts.concat(hole);
     });
     var poly = outer.map(function (_, i) { return i; });
@@ -206,8 +198,8 @@
     this.flat(outer, holes, z1);
   };
 
-  function ring(center, radius, shape) {
-    return (shape || OCTAGON).map(function (q) {
+  function ring(center, radius) {
+    return OCTAGON.map(function (q) {
       return [snap(center[0] + radius * q[0]), snap(center[1] + radius * q[1])];
     });
   }
@@ -445,13 +437,12 @@
     var e = unit(start, tip);
     var n = [-e[1], e[0]];
     var half = width / 2;
-    var wide = width;
     return [
       [start[0] - n[0] * half, start[1] - n[1] * half],
       [base[0] - n[0] * half, base[1] - n[1] * half],
-      [base[0] - n[0] * wide, base[1] - n[1] * wide],
+      [base[0] - n[0] * width, base[1] - n[1] * width],
       tip,
-      [base[0] + n[0] * wide, base[1] + n[1] * wide],
+      [base[0] + n[0] * width, base[1] + n[1] * width],
       [base[0] + n[0] * half, base[1] + n[1] * half],
       [start[0] + n[0] * half, start[1] + n[1] * half],
     ].map(function (q) { return [snap(q[0]), snap(q[1])]; });
@@ -571,12 +562,11 @@
       }
       throw new PrintModelError(fill(K.messages.too_thin, { size: num(size), reason: err.reason, fits: num(least) }));
     }
-    var corners = lay.corners;
     var s = solid(lay, size, marks, names);
     return {
       vertices: s.vertices,
       faces: s.faces,
-      corners: corners.map(function (p) { return [p[0], p[1], K.thickness]; }),
+      corners: lay.corners.map(function (p) { return [p[0], p[1], K.thickness]; }),
       names: names,
       tip: [snap(lay.centroid[0]), snap(lay.centroid[1]), snap(K.thickness + K.arrow_length * size)],
       size: size,

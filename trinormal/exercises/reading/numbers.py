@@ -92,11 +92,7 @@ def _number(x: Any, degrees: bool, depth: int) -> Number:
     if x is Ellipsis:
         raise AnswerError("... is not a number: replace it with your answer")
     t = type(x)
-    if (
-        t is bool
-        or t.__name__ in ("bool_", "bool")
-        or t.__name__ in ("BooleanTrue", "BooleanFalse")
-    ):
+    if t.__name__ in ("bool", "bool_", "BooleanTrue", "BooleanFalse"):
         raise AnswerError(f"{x} is a truth value, not a number")
     if t is float:
         return _finite_float(x)
@@ -164,8 +160,6 @@ def _numpy_number(x: Any, degrees: bool, depth: int) -> Number:
         if x.size == 0:
             raise AnswerError("an empty array is not a number")
         raise AnswerError(f"expected one number, got an array of shape {x.shape}")
-    if isinstance(x, np.bool_):
-        raise AnswerError(f"{x} is a truth value, not a number")
     if isinstance(x, np.integer):
         return _exact(int(x))
     if isinstance(x, np.floating):
@@ -186,7 +180,9 @@ def _numpy_number(x: Any, degrees: bool, depth: int) -> Number:
 
 
 def _sympy_number(x: Any, degrees: bool, depth: int) -> Number:
-    if _is_sympy_array(x):
+    import sympy as sp
+
+    if isinstance(x, sp.NDimArray):
         items = list(leaves(x.tolist()))
         if len(items) == 1:
             return _number(items[0], degrees, depth + 1)
@@ -203,13 +199,6 @@ def _sympy_number(x: Any, degrees: bool, depth: int) -> Number:
         return _finite_float(float(x)) if x.is_finite else _finite_float(float("nan"))
     _refuse_symbols(x, x, "still has")
     return _sympy_value(x)
-
-
-def _is_sympy_array(x: Any) -> bool:
-    """Tell whether ``x`` is a sympy ``Array`` (an N-dimensional array, not a ``Matrix``)."""
-    import sympy as sp
-
-    return isinstance(x, sp.NDimArray)
 
 
 def leaves(items: Any) -> Any:

@@ -25,10 +25,6 @@ __all__ = ["FACES", "POINTS", "Items", "read_points", "read_vector"]
 AXIS_NAMES = ("x", "y", "z")
 
 
-def _sized(kind: str, size: int) -> str:
-    return f"{size} numbers (x, y, z)" if size == 3 else f"{size} numbers"
-
-
 def _items(x: Any, size: int, what: str) -> list[Any]:
     """Return the elements of a vector-like answer, before each is read as a number."""
     if x is None:
@@ -71,8 +67,7 @@ def _items(x: Any, size: int, what: str) -> list[Any]:
         raise AnswerError(f"expected {what}, got one number")
     if not isinstance(x, Iterable) and not hasattr(x, "__getitem__"):
         raise AnswerError(f"expected {what}, got {describe(x)}")
-    items = list(itertools.islice(iter(x), size + 1))  # a generator may never end
-    return items
+    return list(itertools.islice(iter(x), size + 1))  # a generator may never end
 
 
 _BRACKETS = "()[]{}⟨⟩"
@@ -184,7 +179,7 @@ def read_vector(x: Any, size: int = 3, *, degrees: bool = False) -> list[Number]
     ...
     trinormal.exercises.reading.errors.AnswerError: expected 3 numbers (x, y, z), got 2
     """
-    what = _sized("vector", size)
+    what = f"{size} numbers (x, y, z)" if size == 3 else f"{size} numbers"
     items = guarded(lambda: _vector_items(x, size, what), x, what)
     check_count(items, size, f"expected {what}")
     out = []
