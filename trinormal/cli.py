@@ -332,15 +332,19 @@ def _render(r: TriangleNormal, args: argparse.Namespace, points: list[str], prec
 # --------------------------------------------------------------------------- trinormal mesh
 
 
+_MESH_HELP = (
+    "Check a mesh file (OBJ, STL or PLY): degenerate and duplicate faces, holes, non-manifold "
+    "edges and vertices, pieces, winding and outward normals; then the report for printing: "
+    "holes, surface area, volume, size (with a units hint) and a verdict."
+)
+_MESH_EPILOG = (
+    "Exit status: 0 nothing wrong, 1 a problem found (holes, winding, ...), 2 the file cannot "
+    "be read. Example: trinormal mesh model.stl --fix fixed.stl"
+)
+
+
 def _mesh_parser() -> argparse.ArgumentParser:
-    p = _Parser(
-        prog="trinormal mesh",
-        description="Check a mesh file (OBJ, STL or PLY): degenerate and duplicate faces, holes, "
-        "non-manifold edges and vertices, pieces, winding and outward normals; then the report "
-        "for printing: holes, surface area, volume, size (with a units hint) and a verdict.",
-        epilog="Exit status: 0 nothing wrong, 1 a problem found (holes, winding, ...), "
-        "2 the file cannot be read. Example: trinormal mesh model.stl --fix fixed.stl",
-    )
+    p = _Parser(prog="trinormal mesh", description=_MESH_HELP, epilog=_MESH_EPILOG)
     p.add_argument("file", metavar="FILE", help="the mesh: .obj, .stl or .ply")
     p.add_argument(
         "--fix",
@@ -439,16 +443,18 @@ def _run_mesh(args_in: list[str]) -> int:
 # --------------------------------------------------------------------------- trinormal print-model
 
 
+_PRINT_HELP = (
+    "Write a model of the triangle ABC for a 3D printer: the triangle as a plate, its normal as "
+    "an arrow standing on the front face (the side from which the corners turn "
+    "counter-clockwise), U and V as ridges from A, the corners marked."
+)
+_PRINT_EPILOG = "Example: trinormal print-model 0,0,0 4,0,0 0,3,0 triangle.stl --size 100"
+
+
 def _print_parser() -> argparse.ArgumentParser:
     from trinormal.printmodel import DEFAULT_SIZE, SIZE_RANGE
 
-    p = _Parser(
-        prog="trinormal print-model",
-        description="Write a model of the triangle ABC for a 3D printer: the triangle as a plate, "
-        "its normal as an arrow standing on the front face (the side from which the corners turn "
-        "counter-clockwise), U and V as ridges from A, the corners marked.",
-        epilog="Example: trinormal print-model 0,0,0 4,0,0 0,3,0 triangle.stl --size 100",
-    )
+    p = _Parser(prog="trinormal print-model", description=_PRINT_HELP, epilog=_PRINT_EPILOG)
     p.add_argument("out", metavar="OUT", help="the file to write: .stl (binary) or .3mf")
     p.add_argument(
         "--size",

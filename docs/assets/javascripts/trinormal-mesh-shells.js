@@ -295,13 +295,6 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
   }
 
   return {
-    internal: Object.assign({}, I, {
-      frexpExp: frexpExp,
-      pow2: pow2,
-      powerOfTwoBelow: powerOfTwoBelow,
-      sub: sub,
-      cross: cross,
-      pieceReports: pieceReports,
-    }),
+    internal: Object.assign({}, I, { frexpExp, pow2, powerOfTwoBelow, sub, cross, pieceReports }),
   };
 });

@@ -176,15 +176,9 @@ self.TrinormalMesh.part("weld", "read", function (base) {
 
   return {
     internal: Object.assign({}, I, {
-      WELD: WELD,
-      bounds: bounds,
-      modelSize: modelSize,
-      exactRepresentatives: exactRepresentatives,
-      mergeClose: mergeClose,
-      nearestLargest: nearestLargest,
-      roundDistance: roundDistance,
+      WELD, bounds, modelSize, exactRepresentatives, mergeClose, nearestLargest, roundDistance,
       weldMapped: mapped,
-      replaced: replaced,
+      replaced,
     }),
   };
 });
