@@ -46,9 +46,9 @@ __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vert
 #: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 
-#: Faces per block: a block's working arrays (24 numbers a face, 1.5 MB) stay in the CPU's
-#: caches from one step of the kernel to the next, while the Python work per block (a few
-#: dozen numpy calls) stays small beside the arithmetic.
+#: Faces per block: a block's working arrays (24 numbers a face) stay in the CPU's caches
+#: from one step of the kernel to the next, while the Python work per block (a few dozen
+#: numpy calls) stays small beside the arithmetic.
 _BLOCK = 8192
 
 #: One vertex as a single 24-byte record, so that one take gathers x, y and z of a corner.

@@ -222,7 +222,7 @@ def _volume_terms(
         blk = idx[lo : lo + _VOLUME_BLOCK]
         piece = comp[blk]
         c = scale[piece][:, None]
-        r = np.take(ref, piece, axis=0) / c  # rows by np.take: several times faster than v[i]
+        r = np.take(ref, piece, axis=0) / c  # rows by np.take, which copies whole rows at once
         p = np.take(v, f[blk, 0], axis=0) / c - r
         q = np.take(v, f[blk, 1], axis=0) / c - r
         s = np.take(v, f[blk, 2], axis=0) / c - r
