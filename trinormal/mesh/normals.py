@@ -39,6 +39,7 @@ from trinormal.mesh._arrays import (
     _prepare,
     _raise_range_error,
 )
+from trinormal.mesh.topology import _distinct_corners
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vertex_normals"]
@@ -548,7 +549,7 @@ def _cancel_reversed_pairs(
         return
     near = np.flatnonzero(suspect[f].any(axis=1))  # faces touching those vertices
     g = f[near]
-    distinct = (g[:, 0] != g[:, 1]) & (g[:, 1] != g[:, 2]) & (g[:, 2] != g[:, 0])
+    distinct = _distinct_corners(g)
     near, g = near[distinct], g[distinct]
     s = np.sort(g, axis=1)
     even = ((g[:, 0] < g[:, 1]).astype(np.int8) + (g[:, 1] < g[:, 2]) + (g[:, 2] < g[:, 0])) == 2

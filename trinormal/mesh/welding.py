@@ -194,13 +194,8 @@ def _cell_hash(cell: IntArray) -> Any:
 
 
 def _boundary_vertices(he: _HalfEdges) -> IntArray:
-    h = he.order[he.starts[he.counts == 1]]
-    out: IntArray = np.unique(np.concatenate([he.start(h), he.end(h)]))
+    out: IntArray = np.unique(np.concatenate([he.start(he.boundary), he.end(he.boundary)]))
     return out
-
-
-def _n_boundary(he: _HalfEdges) -> int:
-    return int(np.count_nonzero(he.counts == 1))
 
 
 def _merge_close(
@@ -298,14 +293,14 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
     rep = np.arange(v.shape[0], dtype=np.intp) if exact is None else exact
     wf = f if exact is None else rep[f]
     he = _HalfEdges.of(wf)
-    if _n_boundary(he) and dist > 0:
+    if he.boundary.size and dist > 0:
         rep, changed = _merge_close(v, rep, he, dist)
         if changed:
             wf = rep[f]
             he = _HalfEdges.of(wf)
     near_edges, near_dist = 0, None
     near_range = WELD_NEAR * size
-    if _n_boundary(he) and near_range > dist:
+    if he.boundary.size and near_range > dist:
         b = _boundary_vertices(he)
         i, j, d = _close_pairs(v[b], near_range)
         if i.size:
@@ -315,7 +310,7 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
             suggest, _ = round_distance(float(nearest[np.isfinite(nearest)].max()))
             rep2, _ = _merge_close(v, rep, he, suggest)
             he2 = _HalfEdges.of(rep2[f])
-            closed = _n_boundary(he) - _n_boundary(he2)
+            closed = he.boundary.size - he2.boundary.size
             if closed > 0:
                 near_edges, near_dist = closed, suggest
                 if distance is True:
