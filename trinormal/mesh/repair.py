@@ -226,11 +226,7 @@ def _volume_terms(
         p = np.take(v, f[blk, 0], axis=0) / c - r
         q = np.take(v, f[blk, 1], axis=0) / c - r
         s = np.take(v, f[blk, 2], axis=0) / c - r
-        det[lo : lo + blk.size] = (
-            p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
-            + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])
-            + p[:, 2] * (q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0])
-        )
+        det[lo : lo + blk.size] = shells._det_rows(p, q, s)
         size[lo : lo + blk.size] = (
             shells._norm_rows(p) * shells._norm_rows(q) * shells._norm_rows(s)
         )

@@ -35,18 +35,6 @@ __all__ = ["CAP_FRACTION"]
 CAP_FRACTION: float = 0.4
 
 
-def _cross_rows(p: FloatArray, q: FloatArray) -> FloatArray:
-    out: FloatArray = np.stack(
-        [
-            p[:, 1] * q[:, 2] - p[:, 2] * q[:, 1],
-            p[:, 2] * q[:, 0] - p[:, 0] * q[:, 2],
-            p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0],
-        ],
-        axis=1,
-    )
-    return out
-
-
 def _norm_rows(p: FloatArray) -> FloatArray:
     out: FloatArray = np.sqrt(p[:, 0] * p[:, 0] + p[:, 1] * p[:, 1] + p[:, 2] * p[:, 2])
     return out
@@ -167,7 +155,7 @@ def _capped(
     det = _det_rows(p, q, t)
     sign = np.where(flip[faces], -1.0, 1.0)
     size = _norm_rows(p) * _norm_rows(q) * _norm_rows(t)
-    area = _norm_rows(_cross_rows(q - p, t - p))
+    area = _norm_rows(np.cross(q - p, t - p))
 
     # each loop's centre: the mean of its corners (every loop's; the candidates' are used)
     ns = scale[rims.node_piece][:, None]
@@ -187,7 +175,7 @@ def _capped(
     cap = _det_rows(m, pb, pa)  # the cap triangle (centre, b, a) walks the rim edge back
     cap_sign = np.where(flip[h // 3], -1.0, 1.0)
     cap_size = _norm_rows(m) * _norm_rows(pb) * _norm_rows(pa)
-    cap_area = _norm_rows(_cross_rows(pb - m, pa - m))
+    cap_area = _norm_rows(np.cross(pb - m, pa - m))
 
     def total(at: IntArray, x: FloatArray) -> FloatArray:
         return np.bincount(at, weights=x, minlength=nc)[:nc].astype(np.float64)
