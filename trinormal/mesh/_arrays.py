@@ -25,8 +25,7 @@ _MAX_INDEX = int(np.iinfo(np.intp).max)
 
 def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]:
     """Return the vertices as float64 (V, 3) and the dtype results come back in."""
-    arr64, out_dtype, _ = _checked_vertices(vertices)
-    return arr64, out_dtype
+    return _checked_vertices(vertices)[:2]
 
 
 def _checked_vertices(

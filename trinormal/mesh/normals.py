@@ -166,7 +166,7 @@ def _normalize_rows(s: FloatArray) -> FloatArray:
     """Return the unit rows of ``s`` (n, 3), scaled by a power of two first; zero rows stay zero."""
     e = np.frexp(np.abs(s).max(axis=1))[1]
     s = np.ldexp(s, -e[:, None])
-    r = np.sqrt(np.einsum("ij,ij->i", s, s))
+    r = np.sqrt(_rowdot(s, s))
     r[r == 0.0] = 1.0
     out: FloatArray = s / r[:, None]
     return out

@@ -312,11 +312,8 @@ def _convex_quads(vertices: FloatArray, quads: IntArray) -> BoolArray:
             ok &= sign * turn > 0
         dots = q[:, :, 0] * nx[:, None] + q[:, :, 1] * ny[:, None] + q[:, :, 2] * nz[:, None]
         e = q[:, [1, 2, 3, 0]] - q
-        longest = np.zeros(quads.shape[0])
-        for i in range(4):
-            longest = np.maximum(
-                longest, e[:, i, 0] * e[:, i, 0] + e[:, i, 1] * e[:, i, 1] + e[:, i, 2] * e[:, i, 2]
-            )
+        e *= e
+        longest = (e[:, :, 0] + e[:, :, 1] + e[:, :, 2]).max(axis=1)
         norm = np.sqrt(nx * nx + ny * ny + nz * nz)
         spread = dots.max(axis=1) - dots.min(axis=1)
         ok &= ~(spread > PLANAR_TOL * np.sqrt(longest) * norm)

@@ -9,7 +9,7 @@ points, is every piece wound one way, and does every closed piece face out?
 from __future__ import annotations
 
 import textwrap
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from functools import partial
 from typing import Any
 
@@ -82,17 +82,7 @@ class ComponentReport:
 
     def to_dict(self) -> dict[str, Any]:
         """Return the fields as a JSON-ready dictionary."""
-        return {
-            "faces": self.faces,
-            "closed": self.closed,
-            "consistent": self.consistent,
-            "orientable": self.orientable,
-            "outward": self.outward,
-            "volume": self.volume,
-            "faces_to_flip": self.faces_to_flip,
-            "cavity": self.cavity,
-            "judged_by": self.judged_by,
-        }
+        return asdict(self)
 
 
 @dataclass(frozen=True)

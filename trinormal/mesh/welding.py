@@ -40,6 +40,7 @@ array([[0, 1, 2],
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -161,22 +162,20 @@ def _close_pairs(p: FloatArray, dist: float) -> tuple[IntArray, IntArray, FloatA
     order = np.argsort(key, kind="stable")
     sorted_key = key[order]
     found_i, found_j = [], []
-    for dx in (-1, 0, 1):
-        for dy in (-1, 0, 1):
-            for dz in (-1, 0, 1):
-                k = _cell_hash(cell + np.array([dx, dy, dz], dtype=np.int64))
-                lo = np.searchsorted(sorted_key, k, "left")
-                hi = np.searchsorted(sorted_key, k, "right")
-                count = hi - lo
-                if not count.any():
-                    continue
-                i = np.repeat(np.arange(p.shape[0]), count)
-                offsets = np.repeat(lo - np.cumsum(np.append(0, count[:-1])), count)
-                j = order[np.arange(i.size) + offsets]
-                # j's cell is i's moved by the offset (not another cell of the same hash)
-                keep = (i < j) & (cell[j] == cell[i] + [dx, dy, dz]).all(axis=1)
-                found_i.append(i[keep])
-                found_j.append(j[keep])
+    for step in itertools.product((-1, 0, 1), repeat=3):
+        k = _cell_hash(cell + np.array(step, dtype=np.int64))
+        lo = np.searchsorted(sorted_key, k, "left")
+        hi = np.searchsorted(sorted_key, k, "right")
+        count = hi - lo
+        if not count.any():
+            continue
+        i = np.repeat(np.arange(p.shape[0]), count)
+        offsets = np.repeat(lo - np.cumsum(np.append(0, count[:-1])), count)
+        j = order[np.arange(i.size) + offsets]
+        # j's cell is i's moved by the step (not another cell of the same hash)
+        keep = (i < j) & (cell[j] == cell[i] + step).all(axis=1)
+        found_i.append(i[keep])
+        found_j.append(j[keep])
     if not found_i:
         return empty, empty, np.empty(0)
     i, j = np.concatenate(found_i), np.concatenate(found_j)
