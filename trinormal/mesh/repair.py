@@ -68,18 +68,6 @@ class _Winding:
         """Return the enclosed volume of one piece, in the coordinates' unit cubed."""
         return _unscaled(float(self.volume[piece]) / 6.0, float(self.scale[piece]))
 
-    def outward(self) -> list[bool | None]:
-        """Whether each piece faces away from its material where that is certain, else None.
-
-        A solid piece faces out when its volume is positive, or negative for a cavity.
-        """
-        return [
-            None if abs(vol) <= err else bool(vol > 0) != cav
-            for vol, err, cav in zip(
-                self.volume.tolist(), self.volume_error.tolist(), self.cavity.tolist(), strict=True
-            )
-        ]
-
 
 def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     f = he.faces

@@ -588,22 +588,24 @@ def _component_reports(w: _Winding) -> tuple[ComponentReport, ...]:
     nc = w.n_components
     sizes = np.bincount(w.component[w.component >= 0], minlength=nc)[:nc]
     flips = np.bincount(w.component[w.flip], minlength=nc)[:nc]
-    outward = w.outward()
     comps = []
     for i in range(nc):
         consistent = bool(w.inconsistent[i] == 0)
         measurable = bool(w.closed[i]) and consistent
         judged_by = "volume" if w.solid[i] else "volume_over_holes" if w.encloses[i] else None
-        outward_i = outward[i] if measurable else None
+        outward: bool | None = None
+        if measurable:  # out of the material: a positive volume, or a negative one for a cavity
+            volume, error = float(w.volume[i]), float(w.volume_error[i])
+            outward = None if abs(volume) <= error else (volume > 0) != bool(w.cavity[i])
         if w.encloses[i] and consistent:
-            outward_i = bool(w.capped_volume[i] > 0)
+            outward = bool(w.capped_volume[i] > 0)
         comps.append(
             ComponentReport(
                 faces=int(sizes[i]),
                 closed=bool(w.closed[i]),
                 consistent=consistent,
                 orientable=bool(w.orientable[i]),
-                outward=outward_i,
+                outward=outward,
                 volume=w.enclosed_volume(i) if measurable else None,
                 faces_to_flip=int(flips[i]),
                 cavity=bool(w.cavity[i]),

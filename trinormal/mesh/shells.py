@@ -76,11 +76,9 @@ def _cavities(
     consistent winding turns over, ``scale`` (C,) each piece's power of two.
     """
     nc = solid.size
-    depth = np.zeros(nc, dtype=np.intp)
     which = np.flatnonzero(solid)
     if which.size < 2:
-        none: BoolArray = np.zeros(nc, dtype=bool)
-        return none
+        return np.zeros(nc, dtype=bool)
     kept = np.flatnonzero(comp >= 0)
     by_piece = np.argsort(comp[kept], kind="stable")
     bounds = np.searchsorted(comp[kept][by_piece], np.arange(nc + 1))
@@ -93,6 +91,7 @@ def _cavities(
         corners = np.take(v, f[order, k], axis=0)
         lo = np.minimum(lo, np.minimum.reduceat(corners, bounds[:-1], axis=0))
         hi = np.maximum(hi, np.maximum.reduceat(corners, bounds[:-1], axis=0))
+    depth = np.zeros(nc, dtype=np.intp)
     for a in which.tolist():
         # the pieces whose boxes hold a's box: the only ones a can lie inside
         holds = (lo[which] <= lo[a]).all(axis=1) & (hi[a] <= hi[which]).all(axis=1)
