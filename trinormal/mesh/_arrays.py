@@ -25,8 +25,7 @@ _MAX_INDEX = int(np.iinfo(np.intp).max)
 
 def _check_vertices(vertices: npt.ArrayLike) -> tuple[FloatArray, np.dtype[Any]]:
     """Return the vertices as float64 (V, 3) and the dtype results come back in."""
-    arr64, out_dtype, _ = _checked_vertices(vertices)
-    return arr64, out_dtype
+    return _checked_vertices(vertices)[:2]
 
 
 def _checked_vertices(
@@ -71,10 +70,10 @@ _BOX_ROW = 512
 def _box(v: FloatArray) -> FloatArray:
     """Return the smallest and the largest x, y and z of the contiguous (V, 3) ``v``: (2, 3).
 
-    A reduction along the first axis of a (V, 3) array runs an inner loop of
-    three numbers per row, about 20 times slower than this: the coordinates
-    are read 512 vertices to a row (the last, shorter row folded into the
-    first), so the loop runs along 1 536 numbers, then 512 vertices remain.
+    A reduction along the first axis of a (V, 3) array runs an inner loop of only
+    three numbers per row; here the coordinates are read `_BOX_ROW` vertices to a
+    row (the last, shorter row folded into the first), so the loop runs along the
+    wide rows, then `_BOX_ROW` vertices remain.
     """
     if v.shape[0] == 0:
         return np.zeros((2, 3))
@@ -170,8 +169,8 @@ def _packed_sort(key: npt.NDArray[Any], top: int) -> tuple[IntArray, npt.NDArray
     """Sort the keys ``0 <= key < top``, ties by index: the order and the sorted keys.
 
     Each key and its index are packed in one 64-bit number, the key above the index,
-    and the numbers sorted: a plain sort of numbers is several times faster than
-    sorting indices by key (``argsort``). None when the two need more than 64 bits.
+    and the numbers sorted: a plain sort of numbers, not of indices by key
+    (``argsort``). None when the two need more than 64 bits.
     """
     n = key.shape[0]
     shift = max(1, (n - 1).bit_length())

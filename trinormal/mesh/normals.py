@@ -39,6 +39,7 @@ from trinormal.mesh._arrays import (
     _prepare,
     _raise_range_error,
 )
+from trinormal.mesh.topology import _distinct_corners
 from trinormal.tolerances import DEFAULT_TOL
 
 __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vertex_normals"]
@@ -46,9 +47,9 @@ __all__ = ["WEIGHTINGS", "degenerate_faces", "face_areas", "face_normals", "vert
 #: The vertex-normal weightings `vertex_normals` accepts.
 WEIGHTINGS: tuple[str, ...] = ("angle", "area", "uniform")
 
-#: Faces per block: a block's working arrays (24 numbers a face, 1.5 MB) stay in the CPU's
-#: caches from one step of the kernel to the next, while the Python work per block (a few
-#: dozen numpy calls) stays small beside the arithmetic.
+#: Faces per block: a block's working arrays (24 numbers a face) stay in the CPU's caches
+#: from one step of the kernel to the next, while the Python work per block (a few dozen
+#: numpy calls) stays small beside the arithmetic.
 _BLOCK = 8192
 
 #: One vertex as a single 24-byte record, so that one take gathers x, y and z of a corner.
@@ -165,7 +166,7 @@ def _normalize_rows(s: FloatArray) -> FloatArray:
     """Return the unit rows of ``s`` (n, 3), scaled by a power of two first; zero rows stay zero."""
     e = np.frexp(np.abs(s).max(axis=1))[1]
     s = np.ldexp(s, -e[:, None])
-    r = np.sqrt(np.einsum("ij,ij->i", s, s))
+    r = np.sqrt(_rowdot(s, s))
     r[r == 0.0] = 1.0
     out: FloatArray = s / r[:, None]
     return out
@@ -548,7 +549,7 @@ def _cancel_reversed_pairs(
         return
     near = np.flatnonzero(suspect[f].any(axis=1))  # faces touching those vertices
     g = f[near]
-    distinct = (g[:, 0] != g[:, 1]) & (g[:, 1] != g[:, 2]) & (g[:, 2] != g[:, 0])
+    distinct = _distinct_corners(g)
     near, g = near[distinct], g[distinct]
     s = np.sort(g, axis=1)
     even = ((g[:, 0] < g[:, 1]).astype(np.int8) + (g[:, 1] < g[:, 2]) + (g[:, 2] < g[:, 0])) == 2

@@ -127,13 +127,7 @@ def split_polygon(
         u, v, s = 1, 2, nx
     if s == 0:  # no area: a fan; it crosses itself if it does in its flattest projection
         spread = [max(p[k] for p in q) - min(p[k] for p in q) for k in range(3)]
-        w = (
-            2
-            if spread[2] <= spread[1] and spread[2] <= spread[0]
-            else 1
-            if spread[1] <= spread[0]
-            else 0
-        )
+        w = min((2, 1, 0), key=lambda k: spread[k])  # the flattest axis; ties: z, then y
         xs = [p[(w + 1) % 3] for p in q]
         ys = [p[(w + 2) % 3] for p in q]
         return fan, False, _crossing(xs, ys)
@@ -259,7 +253,8 @@ def split_polygons(vertices: FloatArray, corners: IntArray, sizes: IntArray) -> 
     n_tri = sizes - 2
     source = np.repeat(np.arange(p, dtype=np.intp), n_tri)
     start = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.intp)
-    k = np.arange(source.size) - np.repeat(np.cumsum(n_tri) - n_tri, n_tri)  # 0 .. n-3
+    row = np.concatenate([[0], np.cumsum(n_tri)[:-1]]).astype(np.intp)  # first triangles
+    k = np.arange(source.size) - row[source]  # 0 .. n-3
     first = start[source]
     faces = np.stack([corners[first], corners[first + k + 1], corners[first + k + 2]], axis=1)
     faces = faces.astype(np.intp).reshape(-1, 3)
@@ -267,10 +262,8 @@ def split_polygons(vertices: FloatArray, corners: IntArray, sizes: IntArray) -> 
         return Split(faces, source, nonplanar, crossing)
     quads = np.flatnonzero(sizes == 4)
     fine = _convex_quads(vertices, corners[start[quads, None] + np.arange(4)])
-    alone = np.ones(p, dtype=bool)
-    alone[sizes == 3] = False
+    alone = sizes != 3
     alone[quads[fine]] = False
-    row = np.concatenate([[0], np.cumsum(n_tri)[:-1]]).astype(np.intp)
     for poly in np.flatnonzero(alone).tolist():
         idx = corners[start[poly] : start[poly] + sizes[poly]]
         tris, nonplanar[poly], crossing[poly] = split_polygon(
@@ -319,11 +312,8 @@ def _convex_quads(vertices: FloatArray, quads: IntArray) -> BoolArray:
             ok &= sign * turn > 0
         dots = q[:, :, 0] * nx[:, None] + q[:, :, 1] * ny[:, None] + q[:, :, 2] * nz[:, None]
         e = q[:, [1, 2, 3, 0]] - q
-        longest = np.zeros(quads.shape[0])
-        for i in range(4):
-            longest = np.maximum(
-                longest, e[:, i, 0] * e[:, i, 0] + e[:, i, 1] * e[:, i, 1] + e[:, i, 2] * e[:, i, 2]
-            )
+        e *= e
+        longest = (e[:, :, 0] + e[:, :, 1] + e[:, :, 2]).max(axis=1)
         norm = np.sqrt(nx * nx + ny * ny + nz * nz)
         spread = dots.max(axis=1) - dots.min(axis=1)
         ok &= ~(spread > PLANAR_TOL * np.sqrt(longest) * norm)

@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import partial, reduce
+from operator import add
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -116,11 +118,17 @@ PRINTING: dict[str, str | tuple[str, str]] = {
 _AREA_BLOCK = 1 << 16
 
 
-def _say(key: str, n: int | None = None, **values: str | int) -> str:
-    template = PRINTING[key]
+def _fill(
+    templates: dict[str, str | tuple[str, str]], key: str, n: int | None = None, **values: str | int
+) -> str:
+    """Fill ``templates[key]``: a (one, many) pair is chosen by the count ``n``."""
+    template = templates[key]
     if isinstance(template, tuple):
         template = template[0] if n == 1 else template[1]
     return template.format(n=n, **values)
+
+
+_say = partial(_fill, PRINTING)
 
 
 def shown(x: float) -> str:
@@ -223,12 +231,6 @@ class Measures:
     size: Size | None
 
 
-def _power_of_two_below(x: float) -> float:
-    """Return the largest power of two not above ``x`` (0.5 for 0), as `repair._piece_scales`."""
-    _, exponent = math.frexp(x)
-    return math.ldexp(1.0, exponent - 1)
-
-
 def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
     """Measure the surface area and the bounding box of a checked mesh.
 
@@ -261,12 +263,15 @@ def measure(vertices: FloatArray, faces: IntArray, used: BoolArray) -> Measures:
     # `+ 0.0` writes a zero corner as 0.0, never -0.0, whichever of the two min() meets first
     lo = np.min(vertices, axis=0, where=used[:, None], initial=inf) + 0.0
     hi = np.max(vertices, axis=0, where=used[:, None], initial=-inf) + 0.0
-    scale = _power_of_two_below(float(max(np.abs(lo).max(), np.abs(hi).max())))
+    # the largest power of two not above the largest |coordinate| (0.5 for 0), as
+    # `repair._piece_scales` finds it: dividing by it is exact
+    _, exponent = math.frexp(float(max(np.abs(lo).max(), np.abs(hi).max())))
+    scale = math.ldexp(1.0, exponent - 1)
     total = 0.0
     for start in range(0, faces.shape[0], _AREA_BLOCK):
         blk = faces[start : start + _AREA_BLOCK]
         # corners over the scale (exact), edges q = B − A and s = C − A, in place (rows
-        # gathered by np.take: several times faster than vertices[i])
+        # gathered by np.take, which copies whole rows at once)
         p = np.take(vertices, blk[:, 0], axis=0)
         p /= scale
         q = np.take(vertices, blk[:, 1], axis=0)
@@ -389,15 +394,6 @@ def _counted(n: int, noun: str) -> str:
     return _n(n, noun)
 
 
-def _total_volume(volumes: tuple[float | None, ...]) -> float | None:
-    """Add the pieces' known volumes in piece order; None if none is known."""
-    total = None
-    for v in volumes:
-        if v is not None:
-            total = v if total is None else total + v
-    return total
-
-
 def _winding(r: MeshReport) -> str:
     """Return the verdict's word on the winding.
 
@@ -418,7 +414,7 @@ def _winding(r: MeshReport) -> str:
     return "wound_consistently"
 
 
-def _verdict(r: MeshReport, n_holes: int) -> str:
+def _verdict(r: MeshReport) -> str:
     pieces = r.components
     closed_consistent = [c for c in pieces if c.closed and c.consistent]
     winding = _winding(r)
@@ -426,7 +422,7 @@ def _verdict(r: MeshReport, n_holes: int) -> str:
         conclusion = _say("ready")
     else:
         found = (
-            ("obstacle_holes", n_holes),
+            ("obstacle_holes", len(r.holes)),
             ("obstacle_fins", len(r.non_manifold_edges)),
             ("obstacle_pinches", len(r.non_manifold_vertices)),
             ("obstacle_degenerate", len(r.degenerate_faces)),
@@ -464,15 +460,15 @@ def print_report(r: MeshReport) -> PrintReport:
     >>> print_report(check(v * 0.01, f[:-2, ::-1])).to_dict()["verdict"]
     'not watertight, 1 piece, inside out: not ready for a slicer (1 hole, 10 faces to turn over)'
     """
-    holes = r.holes
     volumes = tuple(c.volume for c in r.components)
+    known = [v for v in volumes if v is not None]  # added in piece order
     return PrintReport(
-        holes=holes,
+        holes=r.holes,
         surface_area=r.measures.surface_area,
-        volume=_total_volume(volumes),
+        volume=reduce(add, known) if known else None,
         piece_volumes=volumes,
         size=r.measures.size,
-        verdict=_verdict(r, len(holes)),
+        verdict=_verdict(r),
     )
 
 

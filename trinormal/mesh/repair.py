@@ -68,18 +68,6 @@ class _Winding:
         """Return the enclosed volume of one piece, in the coordinates' unit cubed."""
         return _unscaled(float(self.volume[piece]) / 6.0, float(self.scale[piece]))
 
-    def outward(self, volume: FloatArray) -> list[bool | None]:
-        """Whether each piece faces away from its material where that is certain, else None.
-
-        A solid piece faces out when its volume is positive, or negative for a cavity.
-        """
-        return [
-            None if abs(vol) <= err else bool(vol > 0) != cav
-            for vol, err, cav in zip(
-                volume.tolist(), self.volume_error.tolist(), self.cavity.tolist(), strict=True
-            )
-        ]
-
 
 def _winding(v: FloatArray, he: _HalfEdges) -> _Winding:
     f = he.faces
@@ -222,15 +210,11 @@ def _volume_terms(
         blk = idx[lo : lo + _VOLUME_BLOCK]
         piece = comp[blk]
         c = scale[piece][:, None]
-        r = np.take(ref, piece, axis=0) / c  # rows by np.take: several times faster than v[i]
+        r = np.take(ref, piece, axis=0) / c  # rows by np.take, which copies whole rows at once
         p = np.take(v, f[blk, 0], axis=0) / c - r
         q = np.take(v, f[blk, 1], axis=0) / c - r
         s = np.take(v, f[blk, 2], axis=0) / c - r
-        det[lo : lo + blk.size] = (
-            p[:, 0] * (q[:, 1] * s[:, 2] - q[:, 2] * s[:, 1])
-            + p[:, 1] * (q[:, 2] * s[:, 0] - q[:, 0] * s[:, 2])
-            + p[:, 2] * (q[:, 0] * s[:, 1] - q[:, 1] * s[:, 0])
-        )
+        det[lo : lo + blk.size] = shells._det_rows(p, q, s)
         size[lo : lo + blk.size] = (
             shells._norm_rows(p) * shells._norm_rows(q) * shells._norm_rows(s)
         )

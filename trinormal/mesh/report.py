@@ -9,7 +9,8 @@ points, is every piece wound one way, and does every closed piece face out?
 from __future__ import annotations
 
 import textwrap
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -17,7 +18,7 @@ import numpy.typing as npt
 
 from trinormal.mesh._arrays import IntArray, _check_faces, _check_tol, _check_vertices
 from trinormal.mesh.normals import degenerate_faces
-from trinormal.mesh.printing import Measures, PrintReport, _holes, measure, print_report
+from trinormal.mesh.printing import Measures, PrintReport, _fill, _holes, measure, print_report
 from trinormal.mesh.repair import _Winding, _winding
 from trinormal.mesh.topology import (
     _boundary_edges,
@@ -81,22 +82,7 @@ class ComponentReport:
 
     def to_dict(self) -> dict[str, Any]:
         """Return the fields as a JSON-ready dictionary."""
-        return {
-            "faces": self.faces,
-            "closed": self.closed,
-            "consistent": self.consistent,
-            "orientable": self.orientable,
-            "outward": self.outward,
-            "volume": self.volume,
-            "faces_to_flip": self.faces_to_flip,
-            "cavity": self.cavity,
-            "judged_by": self.judged_by,
-        }
-
-
-def _pairs(a: IntArray) -> list[list[int]]:
-    out: list[list[int]] = a.tolist()
-    return out
+        return asdict(self)
 
 
 @dataclass(frozen=True)
@@ -248,10 +234,10 @@ class MeshReport:
             "collinear_faces": self.collinear_faces.tolist(),
             "duplicate_faces": self.duplicate_faces.tolist(),
             "reversed_duplicate_faces": self.reversed_duplicate_faces.tolist(),
-            "boundary_edges": _pairs(self.boundary_edges),
-            "non_manifold_edges": _pairs(self.non_manifold_edges),
+            "boundary_edges": self.boundary_edges.tolist(),
+            "non_manifold_edges": self.non_manifold_edges.tolist(),
             "non_manifold_vertices": self.non_manifold_vertices.tolist(),
-            "inconsistent_edges": _pairs(self.inconsistent_edges),
+            "inconsistent_edges": self.inconsistent_edges.tolist(),
             "components": [c.to_dict() for c in self.components],
             "faces_to_flip": self.faces_to_flip.tolist(),
             "weld_distance": self.weld_distance,
@@ -408,16 +394,12 @@ SUMMARY: dict[str, str | tuple[str, str]] = {
 }
 
 
+_say = partial(_fill, SUMMARY)
+
+
 def _n(count: int, noun: str) -> str:
     one, many = NOUNS[noun]
     return f"{count} {one if count == 1 else many}"
-
-
-def _say(key: str, n: int | None = None, **values: str | int) -> str:
-    template = SUMMARY[key]
-    if isinstance(template, tuple):
-        template = template[0] if n == 1 else template[1]
-    return template.format(n=n, **values)
 
 
 def _summary_lines(r: MeshReport) -> list[str]:
@@ -430,19 +412,15 @@ def _summary_lines(r: MeshReport) -> list[str]:
         )
     ]
     if r.welded_vertices:
-        distance = _distance(r.weld_distance)
+        distance = round_distance(r.weld_distance, above=False)[1]
         lines.append(_say("welded", n=r.welded_vertices, distance=distance))
     if r.ok:
         lines.append(_say("ok"))
         return lines + _piece_lines(r)
-    nd = len(r.degenerate_faces)
-    if nd:
-        parts = []
-        if len(r.coincident_faces):
-            parts.append(_say("coincident", n=len(r.coincident_faces)))
-        if len(r.collinear_faces):
-            parts.append(_say("collinear", n=len(r.collinear_faces)))
-        lines.append(_say("degenerate", n=nd, parts=", ".join(parts)))
+    if len(r.degenerate_faces):
+        kinds = (("coincident", r.coincident_faces), ("collinear", r.collinear_faces))
+        parts = ", ".join(_say(key, n=len(found)) for key, found in kinds if len(found))
+        lines.append(_say("degenerate", n=len(r.degenerate_faces), parts=parts))
     for key, found in (
         ("duplicate", r.duplicate_faces),
         ("reversed_duplicate", r.reversed_duplicate_faces),
@@ -454,32 +432,24 @@ def _summary_lines(r: MeshReport) -> list[str]:
         if len(found):
             lines.append(_say(key, n=len(found)))
     if r.near_miss_distance is not None:
-        distance = _distance(r.near_miss_distance)
+        distance = round_distance(r.near_miss_distance, above=False)[1]
         lines.append(_say("near_miss", n=r.near_miss_edges, distance=distance))
     lines += _piece_lines(r)
     n_flip = len(r.faces_to_flip)
-    if n_flip:
-        judged = any(c.closed or c.judged_by is not None for c in r.components)
-        end = _say("flip_end_closed" if judged else "flip_end_open")
+    if n_flip:  # "and outward" when some piece has an inside
+        end = _say("flip_end_open" if r.outward is None else "flip_end_closed")
         lines.append(_say("flip", n=n_flip, end=end))
     return lines
-
-
-def _distance(x: float) -> str:
-    """Write a distance as the summary does: rounded up to 1, 2 or 5 times a power of ten."""
-    return round_distance(x, above=False)[1]
 
 
 def _piece_lines(r: MeshReport) -> list[str]:
     """Say what can be said of each piece's winding, and why; right open pieces counted."""
     lines = []
     many = len(r.components) > 1
-    names = []
     sheets: list[str] = []
     enclosing: list[str] = []
     for i, c in enumerate(r.components):
         name = _say("piece", i=i + 1, faces=_n(c.faces, "face")) if many else _say("whole")
-        names.append(name)
         if not c.orientable:
             lines.append(_say("not_orientable", name=name))
         elif not c.consistent:
@@ -618,22 +588,24 @@ def _component_reports(w: _Winding) -> tuple[ComponentReport, ...]:
     nc = w.n_components
     sizes = np.bincount(w.component[w.component >= 0], minlength=nc)[:nc]
     flips = np.bincount(w.component[w.flip], minlength=nc)[:nc]
-    outward = w.outward(w.volume)
     comps = []
     for i in range(nc):
         consistent = bool(w.inconsistent[i] == 0)
         measurable = bool(w.closed[i]) and consistent
         judged_by = "volume" if w.solid[i] else "volume_over_holes" if w.encloses[i] else None
-        outward_i = outward[i] if measurable else None
+        outward: bool | None = None
+        if measurable:  # out of the material: a positive volume, or a negative one for a cavity
+            volume, error = float(w.volume[i]), float(w.volume_error[i])
+            outward = None if abs(volume) <= error else (volume > 0) != bool(w.cavity[i])
         if w.encloses[i] and consistent:
-            outward_i = bool(w.capped_volume[i] > 0)
+            outward = bool(w.capped_volume[i] > 0)
         comps.append(
             ComponentReport(
                 faces=int(sizes[i]),
                 closed=bool(w.closed[i]),
                 consistent=consistent,
                 orientable=bool(w.orientable[i]),
-                outward=outward_i,
+                outward=outward,
                 volume=w.enclosed_volume(i) if measurable else None,
                 faces_to_flip=int(flips[i]),
                 cavity=bool(w.cavity[i]),

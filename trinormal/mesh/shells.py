@@ -35,18 +35,6 @@ __all__ = ["CAP_FRACTION"]
 CAP_FRACTION: float = 0.4
 
 
-def _cross_rows(p: FloatArray, q: FloatArray) -> FloatArray:
-    out: FloatArray = np.stack(
-        [
-            p[:, 1] * q[:, 2] - p[:, 2] * q[:, 1],
-            p[:, 2] * q[:, 0] - p[:, 0] * q[:, 2],
-            p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0],
-        ],
-        axis=1,
-    )
-    return out
-
-
 def _norm_rows(p: FloatArray) -> FloatArray:
     out: FloatArray = np.sqrt(p[:, 0] * p[:, 0] + p[:, 1] * p[:, 1] + p[:, 2] * p[:, 2])
     return out
@@ -88,11 +76,9 @@ def _cavities(
     consistent winding turns over, ``scale`` (C,) each piece's power of two.
     """
     nc = solid.size
-    depth = np.zeros(nc, dtype=np.intp)
     which = np.flatnonzero(solid)
     if which.size < 2:
-        none: BoolArray = np.zeros(nc, dtype=bool)
-        return none
+        return np.zeros(nc, dtype=bool)
     kept = np.flatnonzero(comp >= 0)
     by_piece = np.argsort(comp[kept], kind="stable")
     bounds = np.searchsorted(comp[kept][by_piece], np.arange(nc + 1))
@@ -105,6 +91,7 @@ def _cavities(
         corners = np.take(v, f[order, k], axis=0)
         lo = np.minimum(lo, np.minimum.reduceat(corners, bounds[:-1], axis=0))
         hi = np.maximum(hi, np.maximum.reduceat(corners, bounds[:-1], axis=0))
+    depth = np.zeros(nc, dtype=np.intp)
     for a in which.tolist():
         # the pieces whose boxes hold a's box: the only ones a can lie inside
         holds = (lo[which] <= lo[a]).all(axis=1) & (hi[a] <= hi[which]).all(axis=1)
@@ -167,7 +154,7 @@ def _capped(
     det = _det_rows(p, q, t)
     sign = np.where(flip[faces], -1.0, 1.0)
     size = _norm_rows(p) * _norm_rows(q) * _norm_rows(t)
-    area = _norm_rows(_cross_rows(q - p, t - p))
+    area = _norm_rows(np.cross(q - p, t - p))
 
     # each loop's centre: the mean of its corners (every loop's; the candidates' are used)
     ns = scale[rims.node_piece][:, None]
@@ -187,7 +174,7 @@ def _capped(
     cap = _det_rows(m, pb, pa)  # the cap triangle (centre, b, a) walks the rim edge back
     cap_sign = np.where(flip[h // 3], -1.0, 1.0)
     cap_size = _norm_rows(m) * _norm_rows(pb) * _norm_rows(pa)
-    cap_area = _norm_rows(_cross_rows(pb - m, pa - m))
+    cap_area = _norm_rows(np.cross(pb - m, pa - m))
 
     def total(at: IntArray, x: FloatArray) -> FloatArray:
         return np.bincount(at, weights=x, minlength=nc)[:nc].astype(np.float64)

@@ -113,18 +113,10 @@ def _distinct_corners(f: IntArray) -> BoolArray:
 def _next_corner(h: IntArray) -> IntArray:
     """Return the next corner of the same face: half-edge ``h`` arrives at its vertex."""
     # h + 1, less 3 where h + 1 starts the next face: there (h + 1) // 3 is one more than
-    # h // 3 (division by a constant is fast in numpy, the remainder and a masked update
-    # are not)
+    # h // 3 (a division by a constant, not a remainder and a masked update)
     up = h + 1
     out: IntArray = up - 3 * (up // 3 - h // 3)
     return out
-
-
-def _renumber(kept: IntArray, n: int) -> IntArray:
-    """Give the ``kept`` items of ``0..n-1`` the numbers 0, 1, 2, …, and the others -1."""
-    index = np.full(n, -1, dtype=np.intp)
-    index[kept] = np.arange(kept.size)
-    return index
 
 
 @dataclass(frozen=True)
@@ -195,18 +187,11 @@ class _HalfEdges:
         out: IntArray = np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1).reshape(-1, 2)
         return out
 
-    def edge_vertices(self, groups: IntArray) -> IntArray:
-        """Return the edges of the given groups as sorted vertex pairs, shape (k, 2)."""
-        return self.undirected(self.order[self.starts[groups]])
-
-    def pairs(self, groups: IntArray) -> tuple[IntArray, IntArray]:
-        """Neighbouring half-edges within each given group: each joins the next in its group."""
-        first = self.starts[groups]
-        size = self.counts[groups]
-        # position of every half-edge but the last in its group, and its successor
-        offsets = np.repeat(first - np.cumsum(np.append(0, size[:-1] - 1)), size - 1)
-        pos = np.arange(offsets.size) + offsets
-        return self.order[pos], self.order[pos + 1]
+    @cached_property
+    def boundary(self) -> IntArray:
+        """The half-edges of the edges one face walks (the boundary), in edge order."""
+        out: IntArray = self.order[self.starts[self.counts == 1]]
+        return out
 
     @cached_property
     def manifold_pairs(self) -> tuple[IntArray, IntArray]:
@@ -216,8 +201,13 @@ class _HalfEdges:
 
     @cached_property
     def shared_pairs(self) -> tuple[IntArray, IntArray]:
-        """Neighbouring half-edges of every edge shared by two faces or more (`pairs`)."""
-        return self.pairs(np.flatnonzero(self.counts >= 2))
+        """Neighbouring half-edges of every edge shared by two faces or more: each and the next."""
+        groups = np.flatnonzero(self.counts >= 2)
+        first, size = self.starts[groups], self.counts[groups]
+        # position of every half-edge but the last in its group, and its successor
+        offsets = np.repeat(first - np.cumsum(np.append(0, size[:-1] - 1)), size - 1)
+        pos = np.arange(offsets.size) + offsets
+        return self.order[pos], self.order[pos + 1]
 
     @cached_property
     def face_components(self) -> IntArray:
@@ -226,7 +216,8 @@ class _HalfEdges:
         h1, h2 = self.shared_pairs
         label = np.full(nf, -1, dtype=np.intp)
         kept = np.flatnonzero(self.clean)
-        index = _renumber(kept, nf)
+        index = np.full(nf, -1, dtype=np.intp)  # the kept faces numbered 0, 1, 2, …
+        index[kept] = np.arange(kept.size)
         label[kept] = _components(kept.size, index[h1 // 3], index[h2 // 3])
         return label
 
@@ -253,7 +244,7 @@ class _Rims:
 
 def _rims(he: _HalfEdges) -> _Rims:
     """Join the boundary half-edges of ``he`` into loops, piece by piece (`_Rims`)."""
-    h = np.sort(he.order[he.starts[he.counts == 1]].astype(np.intp))
+    h = np.sort(he.boundary.astype(np.intp))
     piece = he.face_components[h // 3]
     a, b = he.start(h), he.end(h)
     nv = int(max(a.max(), b.max())) + 1 if h.size else 1
@@ -295,8 +286,7 @@ def boundary_edges(faces: npt.ArrayLike) -> IntArray:
 
 
 def _boundary_edges(he: _HalfEdges) -> IntArray:
-    h = he.order[he.starts[he.counts == 1]]
-    a, b = he.start(h), he.end(h)
+    a, b = he.start(he.boundary), he.end(he.boundary)
     order = np.lexsort((b, a))
     out: IntArray = np.stack([a[order], b[order]], axis=1).reshape(-1, 2)
     return out
@@ -326,7 +316,7 @@ def non_manifold_edges(faces: npt.ArrayLike) -> IntArray:
 
 
 def _non_manifold_edges(he: _HalfEdges) -> IntArray:
-    return he.edge_vertices(np.flatnonzero(he.counts >= 3))
+    return he.undirected(he.order[he.starts[he.counts >= 3]])
 
 
 def _fans(he: _HalfEdges) -> IntArray:
@@ -507,14 +497,11 @@ def inconsistent_edges(faces: npt.ArrayLike) -> IntArray:
     array([[2, 0]])
     """
     f = _check_faces(faces, None)
-    if f.shape[0] == 0:
-        return np.empty((0, 2), dtype=np.intp)
-    # directed edges as (start, end) rows, sorted; no packing into one integer, which
-    # would wrap around for indices above 2**31
+    # directed edges as (start, end) rows, compared as rows: no packing into one integer,
+    # which would wrap around for indices above 2**31
     edges = np.stack([f.ravel(), f[:, [1, 2, 0]].ravel()], axis=1)
-    edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
-    same = (edges[1:] == edges[:-1]).all(axis=1)
-    dup: IntArray = np.unique(edges[1:][same], axis=0).reshape(-1, 2).astype(np.intp)
+    rows, count = np.unique(edges, axis=0, return_counts=True)
+    dup: IntArray = rows[count >= 2]
     return dup
 
 

@@ -40,6 +40,7 @@ array([[0, 1, 2],
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -161,22 +162,20 @@ def _close_pairs(p: FloatArray, dist: float) -> tuple[IntArray, IntArray, FloatA
     order = np.argsort(key, kind="stable")
     sorted_key = key[order]
     found_i, found_j = [], []
-    for dx in (-1, 0, 1):
-        for dy in (-1, 0, 1):
-            for dz in (-1, 0, 1):
-                k = _cell_hash(cell + np.array([dx, dy, dz], dtype=np.int64))
-                lo = np.searchsorted(sorted_key, k, "left")
-                hi = np.searchsorted(sorted_key, k, "right")
-                count = hi - lo
-                if not count.any():
-                    continue
-                i = np.repeat(np.arange(p.shape[0]), count)
-                offsets = np.repeat(lo - np.cumsum(np.append(0, count[:-1])), count)
-                j = order[np.arange(i.size) + offsets]
-                # j's cell is i's moved by the offset (not another cell of the same hash)
-                keep = (i < j) & (cell[j] == cell[i] + [dx, dy, dz]).all(axis=1)
-                found_i.append(i[keep])
-                found_j.append(j[keep])
+    for step in itertools.product((-1, 0, 1), repeat=3):
+        k = _cell_hash(cell + np.array(step, dtype=np.int64))
+        lo = np.searchsorted(sorted_key, k, "left")
+        hi = np.searchsorted(sorted_key, k, "right")
+        count = hi - lo
+        if not count.any():
+            continue
+        i = np.repeat(np.arange(p.shape[0]), count)
+        offsets = np.repeat(lo - np.cumsum(np.append(0, count[:-1])), count)
+        j = order[np.arange(i.size) + offsets]
+        # j's cell is i's moved by the step (not another cell of the same hash)
+        keep = (i < j) & (cell[j] == cell[i] + step).all(axis=1)
+        found_i.append(i[keep])
+        found_j.append(j[keep])
     if not found_i:
         return empty, empty, np.empty(0)
     i, j = np.concatenate(found_i), np.concatenate(found_j)
@@ -194,13 +193,8 @@ def _cell_hash(cell: IntArray) -> Any:
 
 
 def _boundary_vertices(he: _HalfEdges) -> IntArray:
-    h = he.order[he.starts[he.counts == 1]]
-    out: IntArray = np.unique(np.concatenate([he.start(h), he.end(h)]))
+    out: IntArray = np.unique(np.concatenate([he.start(he.boundary), he.end(he.boundary)]))
     return out
-
-
-def _n_boundary(he: _HalfEdges) -> int:
-    return int(np.count_nonzero(he.counts == 1))
 
 
 def _merge_close(
@@ -298,14 +292,14 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
     rep = np.arange(v.shape[0], dtype=np.intp) if exact is None else exact
     wf = f if exact is None else rep[f]
     he = _HalfEdges.of(wf)
-    if _n_boundary(he) and dist > 0:
+    if he.boundary.size and dist > 0:
         rep, changed = _merge_close(v, rep, he, dist)
         if changed:
             wf = rep[f]
             he = _HalfEdges.of(wf)
     near_edges, near_dist = 0, None
     near_range = WELD_NEAR * size
-    if _n_boundary(he) and near_range > dist:
+    if he.boundary.size and near_range > dist:
         b = _boundary_vertices(he)
         i, j, d = _close_pairs(v[b], near_range)
         if i.size:
@@ -315,7 +309,7 @@ def weld(vertices: FloatArray, faces: IntArray, distance: float | bool = False) 
             suggest, _ = round_distance(float(nearest[np.isfinite(nearest)].max()))
             rep2, _ = _merge_close(v, rep, he, suggest)
             he2 = _HalfEdges.of(rep2[f])
-            closed = _n_boundary(he) - _n_boundary(he2)
+            closed = he.boundary.size - he2.boundary.size
             if closed > 0:
                 near_edges, near_dist = closed, suggest
                 if distance is True:
