@@ -210,6 +210,31 @@ def test_a_full_device_is_one_line_and_status_1(mode, tmp_path):
     ]
 
 
+def test_print_model_says_why_when_its_report_line_cannot_be_written(tmp_path):
+    # the model is written; the line saying so goes to a full device
+    out = tmp_path / "t.stl"
+    with open("/dev/full", "w") as full:
+        p = subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "trinormal",
+                "print-model",
+                "0,0,0",
+                "40,0,0",
+                "0,30,0",
+                str(out),
+            ],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=60,
+        )
+    assert p.returncode == 1
+    assert p.stderr == "trinormal: error: cannot write the output: No space left on device\n"
+    assert out.stat().st_size > 0
+
+
 def test_what_readers_paste_is_read_and_long_input_is_not_echoed():
     p = run("\u22121,0,0", " 1 ,\u00a00 ,0", "0,1,0")
     assert p.returncode == 0, p.stderr

@@ -496,14 +496,7 @@ def _run_print(args_in: list[str]) -> int:
         f"{model.names[2]}, longest side {model.size:g} mm, marked in {marks}; "
         f"{len(model.faces)} triangles, one closed solid."
     )
-    try:
-        _write(sys.stdout, text + "\n")
-    except BrokenPipeError:
-        _silence_stdout()
-    except (OSError, ValueError):
-        _silence_stdout()
-        return 1
-    return 0
+    return _print(text)
 
 
 if __name__ == "__main__":  # pragma: no cover
