@@ -321,7 +321,7 @@ def result_dict(r: TriangleNormal) -> dict[str, Any]:
 
 
 def result_repr(r: TriangleNormal) -> str:
-    """Write the inputs and N of a result exactly, as Python literals: ``repr(TriangleNormal)``.
+    """Write a result's inputs and N exactly as Python literals: a `TriangleNormal`'s ``repr``.
 
     Examples
     --------
