@@ -1,8 +1,9 @@
 """The API reference shows public names only, and links every mention of one.
 
 * :class:`PublicOnly`, a griffe extension (mkdocs.yml, mkdocstrings' ``extensions``): a
-  default written with a private name (``expected=_MISSING``) is shown as its ``repr``,
-  as ``help()`` shows it; such a value is not shown at all.
+  default written with a private name (``expected=_MISSING``) is shown as its ``repr``, as
+  ``help()`` shows it; an attribute's value written with one (``self._compute(...)``) is
+  not shown at all.
 * :func:`link_public_names` (the hook's ``on_env``, before autorefs resolves the links):
   inline code naming a public name (```FIELDS```, ```TriangleNormal.format(4)```) links to
   where autorefs knows it is documented, without a cross-reference in the docstring.
