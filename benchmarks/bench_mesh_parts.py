@@ -2,14 +2,16 @@
 
 Issue 31 asks that joining corners by position (``trinormal/mesh/welding.py``) and telling
 cavities and open pieces (``trinormal/mesh/shells.py``) change the speed figures of
-``bench_mesh_cli.py`` by at most 20 %. This script checks two models and prints, for each,
+``bench_mesh_cli.py`` by at most 20 %. This script checks three models and prints, for each,
 the time of ``mesh.check`` (best of a few rounds) beside the time spent in those two parts,
 taken from one profiled run (``cProfile``: the parts' share of the profiled check):
 
 * the damaged torus of ``bench_mesh_repair.py`` (1M faces, one piece, inside out, 10 %
   flipped), as the command-line benchmark reads it;
 * a hollow model of many pieces: 200 balls in a row, each a closed outer shell around an
-  inner shell facing into its cavity (2 048 000 faces), where containment has work.
+  inner shell facing into its cavity (2 048 000 faces), where containment has work;
+* a voxel model: 20 000 separate cubes on a grid (240 000 faces), where containment has
+  many pieces to compare and none inside another.
 
 Run: ``python benchmarks/bench_mesh_parts.py`` (``--small`` for smaller models).
 """
@@ -45,6 +47,18 @@ def hollow_balls(n: int, subdivisions: int) -> tuple[np.ndarray, np.ndarray]:
     return np.vstack(vs), np.vstack(fs)
 
 
+def voxels(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """`n` unit cubes, each a closed piece, two units apart on a cubic grid."""
+    corners = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], float)
+    box = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4], [2, 6, 3]])
+    box = np.vstack([box, [[3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]])
+    side = int(np.ceil(n ** (1 / 3)))
+    grid = np.stack(np.meshgrid(*[np.arange(side)] * 3, indexing="ij"), -1).reshape(-1, 3)[:n]
+    v = (corners[None] + 2.0 * grid[:, None]).reshape(-1, 3)
+    f = (box[None] + 8 * np.arange(n)[:, None, None]).reshape(-1, 3)
+    return v, f
+
+
 def best_time(v: np.ndarray, f: np.ndarray) -> float:
     times = []
     for _ in range(ROUNDS):
@@ -77,6 +91,7 @@ def main() -> None:
     models = {
         "damaged torus": torus[:2],
         "hollow balls": hollow_balls(20 if small else 200, 3 if small else 4),
+        "voxels": voxels(2000 if small else 20000),
     }
     for name, (v, f) in models.items():
         report = mesh.check(v, f)

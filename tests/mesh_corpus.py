@@ -317,6 +317,21 @@ def last_bits(model: Model, seed: int = 4) -> Model:
     return out, polys
 
 
+def hollow_plate(n: int = 160, subdivisions: int = 0) -> Model:
+    """``n`` hollow balls in a row, of radius 1 and 2 in turn, each inner shell facing its hollow.
+
+    More pieces than one block of the cavity search's box comparison, side by side and
+    nested, a small ball's box inside a big ball's in x alone.
+    """
+    v, f = icosphere(subdivisions)
+    models = []
+    for k in range(n):
+        big = 1.0 + (k % 2)
+        models.append(tri(v * big + (5.0 * k, 0.0, 0.0), f))
+        models.append(tri(v * 0.6 * big + (5.0 * k, 0.0, 0.0), f[:, ::-1]))
+    return joined(*models)
+
+
 def shells_and_open_pieces() -> Iterator[tuple[str, Model]]:
     """Welded seams, soups, near misses, hollow models, cups, sheets (issue 31)."""
     ball = tri(*icosphere(2))
@@ -817,6 +832,7 @@ def corpus() -> list[tuple[str, bytes]]:
     files += lenient()
     for name, model in shells_and_open_pieces():  # after the random edits: they pick the same
         files += every_encoding(name, model)
+    files.append(("hollow-plate.stl", stl_binary(*hollow_plate())))
     names = [n for n, _ in files]
     assert len(set(names)) == len(names), "two corpus files share a name"
     return files

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from mesh_corpus import last_bits, obj, seamed, soup, stl_binary, tri
+from mesh_corpus import hollow_plate, last_bits, obj, seamed, soup, stl_binary, tri
 
 from trinormal import mesh
 from trinormal.mesh import icosphere, terrain, uv_sphere
@@ -158,6 +158,31 @@ def test_an_inside_out_hollow_ball_turns_both_shells_over():
     v, f = hollow(True)
     fixed, flipped = mesh.fix_winding(v, f[:, ::-1])
     assert len(flipped) == 640 and mesh.check(v, fixed).ok
+
+
+def test_every_inner_shell_of_a_plate_of_hollow_balls_is_a_cavity():
+    v, polys = hollow_plate(subdivisions=1)
+    r = mesh.check(v, np.array(polys))
+    assert r.ok and len(r.components) == 320
+    assert [c.cavity for c in r.components] == [False, True] * 160
+
+
+def test_the_box_holders_are_every_pair_whose_box_holds_the_other():
+    from trinormal.mesh.shells import _box_holders
+
+    rng = np.random.default_rng(7)
+    n = 700  # boxes on a coarse grid, so that many share a face or are equal
+    lo = rng.integers(0, 6, size=(n, 3)).astype(float)
+    hi = lo + rng.integers(0, 4, size=(n, 3))
+    which = np.flatnonzero(rng.random(n) < 0.9)
+    expected = {
+        (a, b)
+        for a in which.tolist()
+        for b in which.tolist()
+        if a != b and (lo[b] <= lo[a]).all() and (hi[a] <= hi[b]).all()
+    }
+    got = _box_holders(which, lo, hi)
+    assert len(got) == len(set(got)) and set(got) == expected and len(expected) > 1000
 
 
 # --------------------------------------------------------------------------- open pieces

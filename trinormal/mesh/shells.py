@@ -67,6 +67,35 @@ def _inside(point: FloatArray, corners: FloatArray) -> bool:
     return bool(abs(float(turns.sum()) / (4.0 * np.pi)) > 0.5)
 
 
+#: Pieces compared at once against the boxes that may hold them (`_box_holders`).
+_HOLDER_BLOCK = 256
+
+
+def _box_holders(which: IntArray, lo: FloatArray, hi: FloatArray) -> list[tuple[int, int]]:
+    """Every pair ``(a, b)`` of pieces in ``which`` whose boxes hold: ``b``'s box holds ``a``'s.
+
+    Pieces are taken in blocks in the order of their boxes' lowest x. The boxes that may
+    hold a block's start at or before its last piece's lowest x and end at or after its
+    first piece's highest x, so a block is compared with those alone: pieces side by side
+    (a plate of parts, a voxel model) are never compared with the whole model.
+    """
+    order = which[np.argsort(lo[which, 0], kind="stable")]
+    starts = lo[order, 0]
+    pairs: list[tuple[int, int]] = []
+    for i in range(0, order.size, _HOLDER_BLOCK):
+        block = order[i : i + _HOLDER_BLOCK]
+        reach = order[: np.searchsorted(starts, lo[block, 0].max(), side="right")]
+        reach = reach[hi[reach, 0] >= hi[block, 0].min()]
+        holds = np.ones((block.size, reach.size), dtype=bool)
+        for k in range(3):
+            holds &= lo[reach, k] <= lo[block, k, None]
+            holds &= hi[block, k, None] <= hi[reach, k]
+        ka, kb = np.nonzero(holds)
+        a, b = block[ka], reach[kb]
+        pairs += [(x, y) for x, y in zip(a.tolist(), b.tolist(), strict=True) if x != y]
+    return pairs
+
+
 def _cavities(
     v: FloatArray, f: IntArray, comp: IntArray, flip: BoolArray, solid: BoolArray, scale: FloatArray
 ) -> BoolArray:
@@ -92,21 +121,16 @@ def _cavities(
         lo = np.minimum(lo, np.minimum.reduceat(corners, bounds[:-1], axis=0))
         hi = np.maximum(hi, np.maximum.reduceat(corners, bounds[:-1], axis=0))
     depth = np.zeros(nc, dtype=np.intp)
-    for a in which.tolist():
-        # the pieces whose boxes hold a's box: the only ones a can lie inside
-        holds = (lo[which] <= lo[a]).all(axis=1) & (hi[a] <= hi[which]).all(axis=1)
-        for b in which[holds].tolist():
-            if a == b:
-                continue
-            s = max(float(scale[a]), float(scale[b]))
-            corner = v[f[first[a]]] / s
-            point = (corner[0] + corner[1] + corner[2]) / 3.0
-            faces = kept[by_piece[bounds[b] : bounds[b + 1]]]
-            fb = f[faces].copy()
-            turn = flip[faces]
-            fb[turn, 1], fb[turn, 2] = f[faces[turn], 2], f[faces[turn], 1]
-            if _inside(point, v[fb] / s):
-                depth[a] += 1
+    for a, b in _box_holders(which, lo, hi):
+        s = max(float(scale[a]), float(scale[b]))
+        corner = v[f[first[a]]] / s
+        point = (corner[0] + corner[1] + corner[2]) / 3.0
+        faces = kept[by_piece[bounds[b] : bounds[b + 1]]]
+        fb = f[faces].copy()
+        turn = flip[faces]
+        fb[turn, 1], fb[turn, 2] = f[faces[turn], 2], f[faces[turn], 1]
+        if _inside(point, v[fb] / s):
+            depth[a] += 1
     out: BoolArray = depth % 2 == 1
     return out
 

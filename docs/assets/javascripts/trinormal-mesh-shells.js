@@ -10,6 +10,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
   var I = base.internal, WELD = I.WELD;
   var EPS = Math.pow(2, -52);
   var VOLUME_ROUNDING = 8;
+  var HOLDER_BLOCK = 256; // shells.py's _HOLDER_BLOCK: it sets the speed, never the pairs found
 
   var f64 = new Float64Array(1);
   var u32 = new Uint32Array(f64.buffer);
@@ -134,6 +135,33 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
   }
 
   /** Which pieces lie inside an odd number of the `solid` pieces (shells.py's cavities). */
+  /**
+   * Every pair [a, b] of pieces in `which` where b's box (box[b] = [lo, hi]) holds a's, as
+   * shells.py's _box_holders finds them: blocks of pieces in the order of their lowest x, each
+   * compared with the boxes that start at or before its last piece and end at or after its first.
+   */
+  function boxHolders(which, box) {
+    var order = which.slice().sort(function (a, b) { return box[a][0][0] - box[b][0][0] || a - b; });
+    var pairs = [];
+    for (var i = 0; i < order.length; i += HOLDER_BLOCK) {
+      var block = order.slice(i, i + HOLDER_BLOCK);
+      var last = Math.max.apply(null, block.map(function (a) { return box[a][0][0]; }));
+      var first = Math.min.apply(null, block.map(function (a) { return box[a][1][0]; }));
+      var reach = [];
+      for (var j = 0; j < order.length && box[order[j]][0][0] <= last; j++) {
+        if (box[order[j]][1][0] >= first) reach.push(order[j]);
+      }
+      block.forEach(function (a) {
+        reach.forEach(function (b) {
+          if (a === b) return;
+          for (var k = 0; k < 3; k++) if (!(box[b][0][k] <= box[a][0][k] && box[a][1][k] <= box[b][1][k])) return;
+          pairs.push([a, b]);
+        });
+      });
+    }
+    return pairs;
+  }
+
   function cavities(V, faces, comp, nComp, flip, solid, scale) {
     var depth = new Int32Array(nComp);
     var which = [];
@@ -151,17 +179,13 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
       corners[c].push(faces[3 * f], faces[3 * f + 1], faces[3 * f + 2]);
     }
     var box = corners.map(function (list) { return I.bounds(V, list); });
-    which.forEach(function (pa) {
-      which.forEach(function (pb) {
-        if (pa === pb) return;
-        var lo = box[pb][0], hi = box[pb][1];
-        for (var a = 0; a < 3; a++) if (!(lo[a] <= box[pa][0][a] && box[pa][1][a] <= hi[a])) return;
-        var s = Math.max(scale[pa], scale[pb]), z = [0, 0, 0];
-        var f0 = lists[pa][0];
-        var p0 = scaled(V, faces[3 * f0], s, z), p1 = scaled(V, faces[3 * f0 + 1], s, z), p2 = scaled(V, faces[3 * f0 + 2], s, z);
-        var point = [(p0[0] + p1[0] + p2[0]) / 3.0, (p0[1] + p1[1] + p2[1]) / 3.0, (p0[2] + p1[2] + p2[2]) / 3.0];
-        if (inside(V, faces, lists[pb], flip, s, point)) depth[pa]++;
-      });
+    boxHolders(which, box).forEach(function (pair) {
+      var pa = pair[0], pb = pair[1];
+      var s = Math.max(scale[pa], scale[pb]), z = [0, 0, 0];
+      var f0 = lists[pa][0];
+      var p0 = scaled(V, faces[3 * f0], s, z), p1 = scaled(V, faces[3 * f0 + 1], s, z), p2 = scaled(V, faces[3 * f0 + 2], s, z);
+      var point = [(p0[0] + p1[0] + p2[0]) / 3.0, (p0[1] + p1[1] + p2[1]) / 3.0, (p0[2] + p1[2] + p2[2]) / 3.0];
+      if (inside(V, faces, lists[pb], flip, s, point)) depth[pa]++;
     });
     for (c = 0; c < nComp; c++) depth[c] = depth[c] % 2;
     return depth;
