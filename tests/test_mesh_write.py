@@ -116,6 +116,45 @@ def test_ear_clipping_covers_random_star_shaped_polygons_exactly():
     assert concave > 100  # most of them a fan from the first corner would have got wrong
 
 
+def _hard_polygons(rng: np.random.Generator) -> list[list[tuple[float, float, float]]]:
+    """Big polygons of every kind: star-shaped, self-crossing, with repeated corners and
+    straight runs, some on a coarse grid so that corners fall on other corners' triangles."""
+    polys = []
+    for k in range(60):
+        n = int(rng.integers(49, 160))
+        angles = 2 * math.pi * (np.arange(n) + rng.uniform(0, 0.9, n)) / n
+        r = rng.uniform(0.2, 1.0, n)
+        if k % 4 == 1:  # a self-crossing one: corners in a shuffled order
+            angles = rng.permutation(angles)
+        if k % 8 == 4:  # the last two corners swapped: the last side crosses one side only
+            angles[[-1, -2]] = angles[[-2, -1]]
+        xy = np.stack([r * np.cos(angles), r * np.sin(angles)], axis=1)
+        if k % 4 == 2:  # on a grid: corners on other corners' sides, repeated corners
+            xy = np.round(xy * 4) / 4
+        if k % 4 == 3:  # a straight run of corners, and one corner twice
+            xy[5:12, 1] = xy[5, 1]
+            xy[20] = xy[19]
+        pts = np.column_stack([xy, 0.1 * xy[:, 0] if k % 2 else np.zeros(n)])
+        polys.append([tuple(p) for p in pts.tolist()])
+    return polys
+
+
+def test_big_polygons_are_split_with_arrays_exactly_as_in_a_loop(monkeypatch):
+    """Over `polygons._MANY` corners the search uses numpy: the same triangles and flags."""
+    from trinormal.mesh import polygons
+
+    cases = _hard_polygons(np.random.default_rng(5))
+    with_arrays = [split_polygon(p) for p in cases]
+    monkeypatch.setattr(polygons, "_MANY", 10**9)
+    in_a_loop = [split_polygon(p) for p in cases]
+    assert with_arrays == in_a_loop
+    assert sum(crossing for _, _, crossing in in_a_loop) >= 15
+    assert (
+        sum(tris != [(0, k, k + 1) for k in range(1, len(tris) + 1)] for tris, _, _ in in_a_loop)
+        > 30
+    )
+
+
 def test_the_concave_cap_is_not_reported_degenerate_or_flipped():
     v, polys = l_prism()
     data = "".join(f"v {x} {y} {z}\n" for x, y, z in v.tolist())

@@ -143,6 +143,12 @@ def split_polygon(
     return _clip(xs, ys, sign), nonplanar, crossing
 
 
+#: A polygon with more corners than this is searched with numpy arrays, with the same
+#: arithmetic in the same order: a loop in Python over a cap of thousands of corners (a
+#: finely divided cylinder, a lettering outline) is quadratic in the corners, in Python.
+_MANY = 48
+
+
 def _orient(xs: list[float], ys: list[float], a: int, b: int, c: int) -> float:
     """Twice the signed area of the projected triangle (a, b, c)."""
     return (xs[b] - xs[a]) * (ys[c] - ys[a]) - (ys[b] - ys[a]) * (xs[c] - xs[a])
@@ -164,6 +170,8 @@ def _nonplanar(q: list[tuple[float, float, float]], nx: float, ny: float, nz: fl
 def _crossing(xs: list[float], ys: list[float]) -> bool:
     """Whether two sides that share no corner cross properly (each strictly splits the other)."""
     n = len(xs)
+    if n > _MANY:
+        return _crossing_arrays(np.array(xs), np.array(ys))
     for i in range(n - 2):
         for j in range(i + 2, n):
             if i == 0 and j == n - 1:
@@ -178,9 +186,50 @@ def _crossing(xs: list[float], ys: list[float]) -> bool:
     return False
 
 
+def _crossing_arrays(x: FloatArray, y: FloatArray) -> bool:
+    """`_crossing` on arrays: each side against every later side that shares no corner."""
+    n = x.size
+    after = np.roll(np.arange(n), -1)
+    for i in range(n - 2):
+        c = np.arange(i + 2, n - 1 if i == 0 else n)
+        d = after[c]
+        ax, ay, bx, by = x[i], y[i], x[i + 1], y[i + 1]
+        o1 = (bx - ax) * (y[c] - ay) - (by - ay) * (x[c] - ax)
+        o2 = (bx - ax) * (y[d] - ay) - (by - ay) * (x[d] - ax)
+        ex, ey = x[d] - x[c], y[d] - y[c]
+        o3 = ex * (ay - y[c]) - ey * (ax - x[c])
+        o4 = ex * (by - y[c]) - ey * (bx - x[c])
+        split = ((o1 > 0) & (o2 < 0)) | ((o1 < 0) & (o2 > 0))
+        if (split & (((o3 > 0) & (o4 < 0)) | ((o3 < 0) & (o4 > 0)))).any():
+            return True
+    return False
+
+
+class _Corners:
+    """A big polygon's projected corners as arrays: an ear test looks at all of them at once."""
+
+    def __init__(self, xs: list[float], ys: list[float]) -> None:
+        self.x, self.y = np.array(xs), np.array(ys)
+        self.alive = np.ones(len(xs), dtype=bool)
+
+    def ear(self, sign: float, a: int, b: int, c: int) -> bool:
+        """`_is_ear` on arrays, over the corners not yet cut off."""
+        x, y = self.x, self.y
+        xa, ya, xb, yb, xc, yc = x[a], y[a], x[b], y[b], x[c], y[c]
+        if sign * ((xb - xa) * (yc - ya) - (yb - ya) * (xc - xa)) <= 0:
+            return False
+        near = ((x == xa) & (y == ya)) | ((x == xb) & (y == yb)) | ((x == xc) & (y == yc))
+        inside = self.alive & ~near
+        inside &= sign * ((xb - xa) * (y - ya) - (yb - ya) * (x - xa)) >= 0
+        inside &= sign * ((xc - xb) * (y - yb) - (yc - yb) * (x - xb)) >= 0
+        inside &= sign * ((xa - xc) * (y - yc) - (ya - yc) * (x - xc)) >= 0
+        return not inside.any()
+
+
 def _clip(xs: list[float], ys: list[float], sign: float) -> list[tuple[int, int, int]]:
     """Ear clipping of the projected polygon turning the way of ``sign``."""
     rest = list(range(len(xs)))
+    big = _Corners(xs, ys) if len(xs) > _MANY else None
     out: list[tuple[int, int, int]] = []
     at = 1
     while len(rest) > 3:
@@ -188,13 +237,15 @@ def _clip(xs: list[float], ys: list[float], sign: float) -> list[tuple[int, int,
         for t in range(k):
             pos = (at + t) % k
             a, b, c = rest[(pos + k - 1) % k], rest[pos], rest[(pos + 1) % k]
-            if _is_ear(xs, ys, sign, rest, a, b, c):
+            if big.ear(sign, a, b, c) if big else _is_ear(xs, ys, sign, rest, a, b, c):
                 break
         else:  # no ear: the rest crosses itself or has no area; a fan from its first corner
             out += [(rest[0], rest[j], rest[j + 1]) for j in range(1, k - 1)]
             return out
         out.append((a, b, c))
         del rest[pos]
+        if big:
+            big.alive[b] = False
         at = pos if pos < len(rest) else 0
     out.append((rest[0], rest[1], rest[2]))
     return out
