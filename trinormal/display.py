@@ -240,16 +240,18 @@ def plane_equation(parts: tuple[str, str, str], offset: str) -> str:
 # --------------------------------------------------------------------------- exact text
 
 
-def exact_text(q: Fraction | int) -> str:
+def exact_text(q: Fraction | int, max_places: int = 20) -> str:
     """Write an exact rational the way a person would: ``3``, ``-0.15`` or ``1/3``.
 
-    A value with a short terminating decimal expansion is written as a decimal,
-    any other as a fraction.
+    A value whose decimal expansion ends within ``max_places`` places is written
+    as a decimal, any other as a fraction.
 
     Examples
     --------
     >>> exact_text(Fraction(3, 20)), exact_text(Fraction(-1, 3)), exact_text(6)
     ('0.15', '-1/3', '6')
+    >>> exact_text(Fraction(1, 2**30)), exact_text(Fraction(1, 2**30), max_places=40)
+    ('1/1073741824', '0.000000000931322574615478515625')
     """
     q = Fraction(q)
     n, d = q.numerator, q.denominator
@@ -261,7 +263,7 @@ def exact_text(q: Fraction | int) -> str:
         rest //= 5
         fives += 1
     places = max(twos, fives)
-    if rest == 1 and places <= 20:
+    if rest == 1 and places <= max_places:
         digits = str(abs(n) * 10**places // d).rjust(places + 1, "0")
         return ("-" if n < 0 else "") + f"{digits[:-places]}.{digits[-places:]}"
     return f"{n}/{d}"

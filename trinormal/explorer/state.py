@@ -26,6 +26,7 @@ from fractions import Fraction
 from typing import Any
 
 from trinormal.core import TriangleNormal, parse_coordinate
+from trinormal.display import exact_text
 from trinormal.explorer.readout import announcement, readout_rows
 
 __all__ = [
@@ -53,21 +54,6 @@ def exact_value(text: str, name: str = "value") -> Fraction:
     """
     n, d = parse_coordinate(text, name)
     return Fraction(n, d)
-
-
-def _exact_text(value: Fraction) -> str:
-    """Write a rational exactly: an integer, a terminating decimal, or ``p/q``."""
-    if value.denominator == 1:
-        return str(value.numerator)
-    d = value.denominator
-    # the fewest decimal places that write it exactly (10**places is a multiple of d), at most 40
-    places = next((k for k in range(1, 41) if 10**k % d == 0), None)
-    if places is None:
-        return f"{value.numerator}/{value.denominator}"
-    digits = value.numerator * 10**places // d
-    sign = "-" if digits < 0 else ""
-    text = str(abs(digits)).rjust(places + 1, "0")
-    return f"{sign}{text[:-places]}.{text[-places:]}"
 
 
 def coordinate_text(x: Any, name: str = "value") -> str:
@@ -112,7 +98,7 @@ def coordinate_text(x: Any, name: str = "value") -> str:
         parse_coordinate(value, name)  # NaN and infinities are refused here
         return repr(value)
     n, d = parse_coordinate(x, name)
-    return _exact_text(Fraction(n, d))
+    return exact_text(Fraction(n, d), max_places=40)
 
 
 def step_decimals(step: str) -> int:
