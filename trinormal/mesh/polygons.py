@@ -189,16 +189,16 @@ def _crossing(xs: list[float], ys: list[float]) -> bool:
 def _crossing_arrays(x: FloatArray, y: FloatArray) -> bool:
     """`_crossing` on arrays: each side against every later side that shares no corner."""
     n = x.size
-    after = np.roll(np.arange(n), -1)
+    x_next, y_next = np.roll(x, -1), np.roll(y, -1)  # each side's end
     for i in range(n - 2):
-        c = np.arange(i + 2, n - 1 if i == 0 else n)
-        d = after[c]
+        later = slice(i + 2, n - 1 if i == 0 else n)  # the sides from corner i + 2 on
+        xc, yc, xd, yd = x[later], y[later], x_next[later], y_next[later]
         ax, ay, bx, by = x[i], y[i], x[i + 1], y[i + 1]
-        o1 = (bx - ax) * (y[c] - ay) - (by - ay) * (x[c] - ax)
-        o2 = (bx - ax) * (y[d] - ay) - (by - ay) * (x[d] - ax)
-        ex, ey = x[d] - x[c], y[d] - y[c]
-        o3 = ex * (ay - y[c]) - ey * (ax - x[c])
-        o4 = ex * (by - y[c]) - ey * (bx - x[c])
+        o1 = (bx - ax) * (yc - ay) - (by - ay) * (xc - ax)
+        o2 = (bx - ax) * (yd - ay) - (by - ay) * (xd - ax)
+        ex, ey = xd - xc, yd - yc
+        o3 = ex * (ay - yc) - ey * (ax - xc)
+        o4 = ex * (by - yc) - ey * (bx - xc)
         split = ((o1 > 0) & (o2 < 0)) | ((o1 < 0) & (o2 > 0))
         if (split & (((o3 > 0) & (o4 < 0)) | ((o3 < 0) & (o4 > 0)))).any():
             return True

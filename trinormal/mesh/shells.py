@@ -109,10 +109,9 @@ def _cavities(
     if which.size < 2:
         return np.zeros(nc, dtype=bool)
     kept = np.flatnonzero(comp >= 0)
-    by_piece = np.argsort(comp[kept], kind="stable")
-    bounds = np.searchsorted(comp[kept][by_piece], np.arange(nc + 1))
     # every piece has a face: its faces are one run of the sorted order, lowest index first
-    order = kept[by_piece]
+    order = kept[np.argsort(comp[kept], kind="stable")]
+    bounds = np.searchsorted(comp[order], np.arange(nc + 1))
     first = order[bounds[:-1]]
     lo = np.full((nc, 3), np.inf)
     hi = np.full((nc, 3), -np.inf)
@@ -125,7 +124,7 @@ def _cavities(
         s = max(float(scale[a]), float(scale[b]))
         corner = v[f[first[a]]] / s
         point = (corner[0] + corner[1] + corner[2]) / 3.0
-        faces = kept[by_piece[bounds[b] : bounds[b + 1]]]
+        faces = order[bounds[b] : bounds[b + 1]]
         fb = f[faces].copy()
         turn = flip[faces]
         fb[turn, 1], fb[turn, 2] = f[faces[turn], 2], f[faces[turn], 1]
