@@ -128,7 +128,7 @@ def picture_output(out: dict[str, Any]) -> dict[str, Any]:
         f'<img src="data:image/png;base64,{png.strip()}" alt="{html.escape(alt)}"{size} '
         'style="max-width:100%;height:auto">'
     )
-    return {"output_type": "display_data", "metadata": {}, "data": {"text/html": img}}
+    return html_output(img)
 
 
 def html_output(text: str) -> dict[str, Any]:

@@ -126,6 +126,41 @@ self.TrinormalMesh = (function (root, constants) {
     return this.data.slice(0, this.length);
   };
 
+  // ------------------------------------------------------------------ numbers and vectors
+
+  var f64 = new Float64Array(1);
+  var u32 = new Uint32Array(f64.buffer);
+
+  /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
+  function frexpExp(x) {
+    if (x === 0 || !Number.isFinite(x)) return 0;
+    f64[0] = x;
+    var e = (u32[1] >>> 20) & 0x7ff;
+    if (e === 0) {
+      f64[0] = x * 18446744073709551616; // 2**64: a subnormal made normal, exactly
+      e = ((u32[1] >>> 20) & 0x7ff) - 64;
+    }
+    return e - 1022;
+  }
+
+  /** 2**e for -1074 <= e <= 1023, built from its bits (exact). */
+  function pow2(e) {
+    u32[0] = 0;
+    u32[1] = 0;
+    if (e >= -1022) u32[1] = (e + 1023) << 20;
+    else if (e >= -1042) u32[1] = 1 << (e + 1074 - 32);
+    else u32[0] = 1 << (e + 1074);
+    return f64[0];
+  }
+
+  function sub(p, q) {
+    return [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
+  }
+
+  function cross(p, q) {
+    return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
+  }
+
   // ------------------------------------------------------------------ union-find
 
   /** 0, 1, ..., n - 1: every element its own set, for `find` and `union`. */
@@ -343,6 +378,10 @@ self.TrinormalMesh = (function (root, constants) {
       fileError: fileError,
       plural: plural,
       Growable: Growable,
+      frexpExp: frexpExp,
+      pow2: pow2,
+      sub: sub,
+      cross: cross,
       identity: identity,
       find: find,
       union: union,

@@ -8,34 +8,10 @@
 self.TrinormalMesh.part("shells", "weld", function (base) {
   "use strict";
   var I = base.internal, WELD = I.WELD;
+  var frexpExp = I.frexpExp, pow2 = I.pow2, sub = I.sub, cross = I.cross;
   var EPS = Math.pow(2, -52);
   var VOLUME_ROUNDING = 8;
   var HOLDER_BLOCK = 256; // shells.py's _HOLDER_BLOCK: it sets the speed, never the pairs found
-
-  var f64 = new Float64Array(1);
-  var u32 = new Uint32Array(f64.buffer);
-
-  /** The exponent e with |x| = m * 2**e, m in [0.5, 1) (numpy.frexp's), 0 for x == 0. */
-  function frexpExp(x) {
-    if (x === 0 || !Number.isFinite(x)) return 0;
-    f64[0] = x;
-    var e = (u32[1] >>> 20) & 0x7ff;
-    if (e === 0) {
-      f64[0] = x * 18446744073709551616; // 2**64: a subnormal made normal, exactly
-      e = ((u32[1] >>> 20) & 0x7ff) - 64;
-    }
-    return e - 1022;
-  }
-
-  /** 2**e for -1074 <= e <= 1023, built from its bits (exact). */
-  function pow2(e) {
-    u32[0] = 0;
-    u32[1] = 0;
-    if (e >= -1022) u32[1] = (e + 1023) << 20;
-    else if (e >= -1042) u32[1] = 1 << (e + 1074 - 32);
-    else u32[0] = 1 << (e + 1074);
-    return f64[0];
-  }
 
   /** 2 ** (frexp(x)[1] - 1) in Python: the largest power of two <= x >= 0 (0.5 for 0). */
   function powerOfTwoBelow(x) {
@@ -97,14 +73,6 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
   }
 
-  function sub(p, q) {
-    return [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
-  }
-
-  function cross(p, q) {
-    return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
-  }
-
   function dot(p, q) {
     return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
   }
@@ -134,7 +102,6 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return Math.abs(turns / (4.0 * Math.PI)) > 0.5;
   }
 
-  /** Which pieces lie inside an odd number of the `solid` pieces (shells.py's cavities). */
   /**
    * Every pair [a, b] of pieces in `which` where b's box (box[b] = [lo, hi]) holds a's, as
    * shells.py's _box_holders finds them: blocks of pieces in the order of their lowest x, each
@@ -162,6 +129,7 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
     return pairs;
   }
 
+  /** Which pieces lie inside an odd number of the `solid` pieces (shells.py's cavities). */
   function cavities(V, faces, comp, nComp, flip, solid, scale) {
     var depth = new Int32Array(nComp);
     var which = [];
@@ -319,6 +287,6 @@ self.TrinormalMesh.part("shells", "weld", function (base) {
   }
 
   return {
-    internal: Object.assign({}, I, { frexpExp, pow2, powerOfTwoBelow, sub, cross, pieceReports }),
+    internal: Object.assign({}, I, { powerOfTwoBelow, pieceReports }),
   };
 });
