@@ -7,7 +7,7 @@
  */
 import { Vector3 } from "three";
 import { niceCeil, powerOfTen } from "./numbers.js";
-import { DEFAULT_DIRECTION, boundingSphere } from "./scene.js";
+import { DEFAULT_DIRECTION } from "./scene.js";
 import { drawnAt } from "./scaling.js";
 
 // the views the camera may start from when the usual one is poor: 8 azimuths at 3 elevations
@@ -110,7 +110,7 @@ export function toDisplay(p, { S, offset }) {
 /**
  * The frame of the points `pts` (data floats) drawn in `winding`, with the unit normal when
  * `showUnit`; `degenerate` when the host calls the triangle degenerate (it is then drawn as
- * points on a line): { S, offset, includeOrigin, radius, center, box, L, t, start, normal,
+ * points on a line): { S, offset, includeOrigin, box, L, t, start, normal,
  * line }. `normal` is N's direction as drawn (null for a degenerate triangle), `line` the
  * direction of the line through collinear points (null otherwise, or when they coincide).
  */
@@ -151,10 +151,9 @@ export function computeFrame(pts, winding, showUnit, degenerate = false) {
     // one point: frame a tick's width around it, so the view does not zoom into a dot
     for (const sign of [-1, 1]) box.push(a.clone().addScalar((sign * t) / 2));
   }
-  const { center, radius } = boundingSphere(box);
   const normal = plane ? n.clone().normalize() : null;
   const line = plane ? null : lineOf(disp);
-  return { S, offset, includeOrigin, radius, center, box, L, t, normal, line, start: startDirection(normal, line) };
+  return { S, offset, includeOrigin, box, L, t, normal, line, start: startDirection(normal, line) };
 }
 
 /** True when two frames draw in the same units (the same S, offset and origin). */

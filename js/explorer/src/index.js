@@ -182,7 +182,7 @@ function render({ model, el }) {
     model,
     get,
     dark: isDark(),
-    frame: null, // { S, offset: Vector3, includeOrigin, radius, L, t, ... } (framing.js)
+    frame: null, // { S, offset: Vector3, includeOrigin, box, L, t, ... } (framing.js)
     dragging: false,
     dragged: null, // the vertex being dragged ("A", "B", "C"), or null
     waiting: false, // the view's edits have waited long for the host (a busy kernel)

@@ -14,6 +14,7 @@
  * sent, nor when the host does not ask for pictures (`send_pictures`: the kernel's Explorer
  * does, the site has no kernel to send them to).
  */
+import { listen } from "./dom.js";
 import { pictureOf } from "./present.js";
 
 /** The values a picture shows, as the view draws them now (the host's, with the view's edits). */
@@ -76,22 +77,21 @@ export function sendPictures(view, { settleMs, take = pictureOf }) {
     clearTimeout(timer);
     timer = setTimeout(settle, settleMs);
   }
-  const onStart = () => {
-    turning = true;
-  };
-  const onEnd = () => {
-    turning = false;
-    schedule();
-  };
-  stage.controls.addEventListener("start", onStart);
-  stage.controls.addEventListener("end", onEnd);
+  const stopTurns = listen(stage.controls, {
+    start: () => {
+      turning = true;
+    },
+    end: () => {
+      turning = false;
+      schedule();
+    },
+  });
   return {
     rendered: schedule,
     stop() {
       stopped = true;
       clearTimeout(timer);
-      stage.controls.removeEventListener("start", onStart);
-      stage.controls.removeEventListener("end", onEnd);
+      stopTurns();
     },
   };
 }
