@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import Any
 
 from trinormal.mesh.io import READ_ERRORS, READ_NOTES
-from trinormal.mesh.printing import Size, printing_constants, shown
+from trinormal.mesh.printing import NO_VOLUME, Size, printing_constants, shown
 from trinormal.mesh.report import NOUNS, SUMMARY
 from trinormal.mesh.selection import selection_constants
 from trinormal.mesh.shells import CAP_FRACTION
@@ -123,7 +123,7 @@ MESSAGES: dict[str, str] = {
     # in the tables: a value with no answer, the size, and no enclosed volume
     "no_answer": "—",
     "size_cell": "{x} × {y} × {z}",
-    "no_volume_cell": "none: only a closed, consistently wound piece has an inside to measure",
+    "no_volume_cell": "none: " + NO_VOLUME,
     # under the table of pieces
     "pieces_dash": (
         "— : no answer for that piece. Only a piece wound consistently that encloses a "

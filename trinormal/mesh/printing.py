@@ -62,6 +62,9 @@ SIGNIFICANT = 6
 #: Pieces, or holes, listed one by one in a line before the rest are written "…".
 LISTED = 8
 
+#: Why a model has no enclosed volume, in the summary line and the page's tables.
+NO_VOLUME = "only a closed, consistently wound piece has an inside to measure"
+
 #: The printing lines and the verdict's words: a template, or a (one, many) pair chosen by ``{n}``.
 PRINTING: dict[str, str | tuple[str, str]] = {
     "holes": (
@@ -86,10 +89,7 @@ PRINTING: dict[str, str | tuple[str, str]] = {
     "area_volumes": "Surface area {area}; enclosed volume {volume} in all ({pieces}).",
     "piece_volume": "piece {i}: {volume}",
     "others_none": "the other pieces, open or wound inconsistently, enclose none",
-    "area_no_volume": (
-        "Surface area {area}; no enclosed volume: only a closed, consistently wound piece has "
-        "an inside to measure."
-    ),
+    "area_no_volume": "Surface area {area}; no enclosed volume: " + NO_VOLUME + ".",
     "verdict_line": "Verdict: {verdict}.",
     "verdict": "{closure}, {pieces}, {winding}: {conclusion}",
     "watertight": "watertight",
