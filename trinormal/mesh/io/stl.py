@@ -15,10 +15,8 @@ import numpy.typing as npt
 from trinormal.mesh._arrays import FloatArray, IntArray, _grouped
 from trinormal.mesh.io.errors import READ_NOTES, MeshFileError, _number, _show, _text
 from trinormal.mesh.io.mesh_data import MeshData
-from trinormal.mesh.io.stored import _stl_dots
+from trinormal.mesh.io.stored import _STL_RECORD, _stl_dots
 from trinormal.mesh.normals import face_normals
-
-_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attr", "<u2")])
 
 
 def _read_stl(data: bytes, name: str) -> MeshData:

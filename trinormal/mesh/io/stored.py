@@ -30,7 +30,7 @@ if TYPE_CHECKING:
     from trinormal.mesh.io.mesh_data import MeshData
 
 #: A binary STL record: stored normal, three corners, attribute bytes.
-_STL_RECORD = np.dtype([("n", "<f4", (3,)), ("c", "<f4", (3, 3)), ("x", "V2")])
+_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attr", "<u2")])
 
 
 def stored_normals(m: MeshData) -> FloatArray | None:
@@ -38,7 +38,7 @@ def stored_normals(m: MeshData) -> FloatArray | None:
     if m.format == "stl" and m.encoding == "binary":
         if m.stl_records is None:
             rec = np.frombuffer(m.source, dtype=_STL_RECORD, count=m.n_polygons, offset=84)
-            out: FloatArray = rec["n"].astype(np.float64)
+            out: FloatArray = rec["normal"].astype(np.float64)
         else:
             out = m.stl_records["normal"].astype(np.float64)
         return out
@@ -89,7 +89,7 @@ def _stl_dots(data: bytes, n: int, normals: FloatArray) -> FloatArray:
     dot = np.empty(n)
     with np.errstate(over="ignore", invalid="ignore"):
         for lo in range(0, n, _BLOCK):
-            c = rec["c"][lo : lo + _BLOCK]
+            c = rec["corners"][lo : lo + _BLOCK]
             first = c[:, 0].astype(np.float64)
             u, w = c[:, 1] - first, c[:, 2] - first  # float64, as v[f] - v[f] would be
             nrm = normals[lo : lo + _BLOCK]
